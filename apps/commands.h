@@ -1,0 +1,16 @@
+// The framedyn program's subcommands. Each registers its options on the CLI
+// and runs; apps/ only parses, calls the library, prints and writes files.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace framedyn::apps {
+
+// Registers the subcommand; `run` is set to the function that executes it.
+void add_modes_command(CLI::App& app, std::function<int()>& run);
+void add_static_command(CLI::App& app, std::function<int()>& run);
+
+}  // namespace framedyn::apps

@@ -1,0 +1,37 @@
+// framedyn: the command-line program. Parses the command line, runs one
+// subcommand, and turns every error into one clear message and a non-zero
+// exit status (1 for bad input, 2 for a numerical failure, 3 for anything else).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <functional>
+
+#include "apps/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"framedyn " FRAMEDYN_VERSION ": rigid-body and beam finite-element dynamics of off-road machine frames"};
+  app.set_version_flag("--version", std::string("framedyn ") + FRAMEDYN_VERSION);
+  app.require_subcommand(1);
+  std::function<int()> run;
+  framedyn::apps::add_modes_command(app, run);
+  framedyn::apps::add_static_command(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run();
+  } catch (const framedyn::core::InputError& e) {
+    fmt::print(stderr, "framedyn: error: {}\n", e.what());
+    return 1;
+  } catch (const framedyn::core::NumericalError& e) {
+    fmt::print(stderr, "framedyn: numerical failure: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "framedyn: error: {}\n", e.what());
+    return 3;
+  }
+}

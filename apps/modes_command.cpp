@@ -1,0 +1,167 @@
+// `framedyn modes MESH.inp`: natural frequencies and mode shapes of a frame.
+// Writes DIR/summary.json, DIR/modes.csv (one row per mode), DIR/mode_shapes.csv
+// (mass-normalised shapes per node) and DIR/modes.vtu (ParaView), and prints a table.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "apps/mesh_input.h"
+#include "apps/progress.h"
+#include "core/csv_writer.h"
+#include "core/results_folder.h"
+#include "fem/modal_analysis.h"
+#include "fem/vtu_writer.h"
+
+namespace framedyn::apps {
+
+namespace {
+
+using core::Quantity;
+const char* kDirections[6] = {"x", "y", "z", "rx", "ry", "rz"};
+
+struct ModesOptions {
+  MeshInput mesh;
+  int modes = 0;  // 0: the mesh's *FREQUENCY count, else 10
+  std::string out;
+  bool lumped = false;
+  double shift_hz = 1.0;
+  bool verbose = false, quiet = false;
+};
+
+int run_modes(const ModesOptions& opt) {
+  Progress progress(opt.verbose, opt.quiet);
+  progress.stage("reading " + opt.mesh.path);
+  const fem::FrameModel model = opt.mesh.load();
+  const core::UnitSystem& u = model.units;
+
+  fem::ModalOptions mo;
+  mo.mode_count = opt.modes > 0 ? opt.modes : model.requested_modes.value_or(10);
+  mo.mass = opt.lumped ? fem::MassFormulation::lumped : fem::MassFormulation::consistent;
+  mo.shift_hz = opt.shift_hz;
+  mo.progress = progress.callback();
+  const fem::ModalResult r = fem::compute_modes(model, mo);
+
+  progress.stage("writing results");
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_modes" : opt.out;
+  core::ResultsFolder folder(out_dir);
+
+  const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
+  const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);
+  auto eff_in_units = [&](const fem::Vector6d& v, int d) { return v(d) * (d < 3 ? mass_f : rot_f); };
+
+  // summary.json
+  nlohmann::ordered_json j;
+  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "modes"}};
+  j["input"] = {{"mesh", opt.mesh.path}, {"units", u.name()}};
+  nlohmann::ordered_json frame;
+  frame["nodes"] = model.nodes.size();
+  frame["beam_elements"] = model.beams.size();
+  frame["dofs"] = model.dof_count();
+  frame["free_dofs"] = r.free_dofs;
+  frame["mass_formulation"] = opt.lumped ? "lumped" : "consistent";
+  frame["total_mass"] = {{"value", r.total_mass(0) * mass_f}, {"unit", u.label(Quantity::mass)}};
+  frame["reference_point"] = {{"value", {0.0, 0.0, 0.0}}, {"unit", u.label(Quantity::length)}};
+  frame["effective_mass_unit"] = {{"translation", u.label(Quantity::mass)}, {"rotation", u.label(Quantity::rotary_inertia)}};
+  frame["rigid_body_modes_expected"] = r.rigid_body_modes_expected;
+  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  fem::Vector6d sum = fem::Vector6d::Zero();
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const fem::Mode& m = r.modes[i];
+    nlohmann::ordered_json jm;
+    jm["mode"] = i + 1;
+    jm["frequency_hz"] = m.frequency_hz;
+    jm["rigid_body"] = m.rigid_body;
+    nlohmann::ordered_json eff, frac;
+    for (int d = 0; d < 6; ++d) {
+      eff[kDirections[d]] = eff_in_units(m.effective_mass, d);
+      frac[kDirections[d]] = r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0;
+    }
+    sum += m.effective_mass;
+    jm["effective_mass"] = eff;
+    jm["effective_mass_fraction"] = frac;
+    modes.push_back(jm);
+  }
+  frame["modes"] = modes;
+  nlohmann::ordered_json cumulative;
+  for (int d = 0; d < 6; ++d) cumulative[kDirections[d]] = r.total_mass(d) > 0 ? sum(d) / r.total_mass(d) : 0.0;
+  frame["effective_mass_fraction_sum"] = cumulative;
+  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD"}, {"shift_hz", -opt.shift_hz}, {"restarts", r.iterations},
+                     {"operator_solves", r.operator_solves}};
+  j["frame"] = frame;
+  folder.write_text("summary.json", j.dump(2) + "\n");
+
+  // modes.csv
+  std::vector<std::string> headers = {"mode", core::column("frequency", "Hz"), "rigid_body"};
+  for (int d = 0; d < 6; ++d)
+    headers.push_back(core::column(std::string("effective_mass_") + kDirections[d], d < 3 ? u.label(Quantity::mass) : u.label(Quantity::rotary_inertia)));
+  for (int d = 0; d < 6; ++d) headers.push_back(std::string("effective_mass_fraction_") + kDirections[d]);
+  core::CsvTable table(headers);
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const fem::Mode& m = r.modes[i];
+    table.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(std::string(m.rigid_body ? "yes" : "no"));
+    for (int d = 0; d < 6; ++d) table.add(eff_in_units(m.effective_mass, d));
+    for (int d = 0; d < 6; ++d) table.add(r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0);
+  }
+  folder.write_text("modes.csv", table.str());
+
+  // mode_shapes.csv: mass-normalised, in the input's units.
+  const double sqrt_m = std::sqrt(u.to_si_factor(Quantity::mass));
+  const double tr_f = sqrt_m / u.to_si_factor(Quantity::length);
+  const std::string tr_unit = u.label(Quantity::length) + "/sqrt(" + u.label(Quantity::mass) + ")";
+  const std::string rot_unit = "rad/sqrt(" + u.label(Quantity::mass) + ")";
+  core::CsvTable shapes({"mode", "node", core::column("ux", tr_unit), core::column("uy", tr_unit), core::column("uz", tr_unit),
+                         core::column("rx", rot_unit), core::column("ry", rot_unit), core::column("rz", rot_unit)});
+  std::vector<fem::VtuField> fields;
+  for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) {
+    double max_translation = 0.0;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+      max_translation = std::max(max_translation, r.shapes.col(i).segment<3>(static_cast<Eigen::Index>(6 * n)).norm());
+    fem::VtuField f{fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz), 3, {}};
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+      const auto s = r.shapes.col(i).segment<6>(static_cast<Eigen::Index>(6 * n));
+      shapes.row().add(static_cast<int>(i + 1)).add(model.nodes[n].id);
+      for (int d = 0; d < 6; ++d) shapes.add(s(d) * (d < 3 ? tr_f : sqrt_m));
+      for (int d = 0; d < 3; ++d) f.values.push_back(max_translation > 0 ? s(d) / max_translation : 0.0);
+    }
+    fields.push_back(std::move(f));
+  }
+  folder.write_text("mode_shapes.csv", shapes.str());
+  folder.write_text("modes.vtu", fem::vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), fields, {}));
+  folder.commit();
+  progress.done();
+
+  // The table.
+  fmt::print("framedyn modes: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.mesh.path, model.nodes.size(),
+             model.beams.size(), r.free_dofs, u.name());
+  fmt::print("total mass {:.6g} {}\n\n", r.total_mass(0) * mass_f, u.label(Quantity::mass));
+  fmt::print(" mode  frequency [Hz]   effective mass fraction: x      y      z      rx     ry     rz\n");
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const fem::Mode& m = r.modes[i];
+    std::string line = fmt::format("{:5d}  {:>14}", i + 1, m.rigid_body ? "0 (rigid body)" : fmt::format("{:.6g}", m.frequency_hz));
+    line += "                         ";
+    for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0);
+    fmt::print("{}\n", line);
+  }
+  fmt::print("\nresults in {}/ (summary.json, modes.csv, mode_shapes.csv, modes.vtu)\n", out_dir);
+  return 0;
+}
+
+}  // namespace
+
+void add_modes_command(CLI::App& app, std::function<int()>& run) {
+  auto opt = std::make_shared<ModesOptions>();
+  CLI::App* cmd = app.add_subcommand("modes", "Natural frequencies and mode shapes of a beam frame");
+  opt->mesh.add_options(*cmd);
+  cmd->add_option("--modes,-n", opt->modes, "Number of modes (default: the mesh's *FREQUENCY count, else 10)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_modes)");
+  cmd->add_flag("--lumped", opt->lumped, "Lumped mass instead of consistent mass");
+  cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(CLI::PositiveNumber);
+  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  cmd->callback([opt, &run]() { run = [opt]() { return run_modes(*opt); }; });
+}
+
+}  // namespace framedyn::apps

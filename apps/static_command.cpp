@@ -1,0 +1,154 @@
+// `framedyn static MESH.inp`: linear static response to the mesh's *CLOAD
+// loads and *BOUNDARY supports. Writes DIR/summary.json, displacements.csv,
+// reactions.csv, section_forces.csv (with fiber stresses) and static.vtu.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "apps/mesh_input.h"
+#include "apps/progress.h"
+#include "core/csv_writer.h"
+#include "core/error.h"
+#include "core/results_folder.h"
+#include "fem/section_forces.h"
+#include "fem/static_analysis.h"
+#include "fem/vtu_writer.h"
+
+namespace framedyn::apps {
+
+namespace {
+
+using core::Quantity;
+
+struct StaticOptions {
+  MeshInput mesh;
+  std::string out;
+  int stations = 3;
+  bool verbose = false, quiet = false;
+};
+
+int run_static(const StaticOptions& opt) {
+  Progress progress(opt.verbose, opt.quiet);
+  progress.stage("reading " + opt.mesh.path);
+  const fem::FrameModel model = opt.mesh.load();
+  const core::UnitSystem& u = model.units;
+  if (model.loads.empty())
+    throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, "at least one nodal load for a static analysis", "none");
+  const fem::StaticResult r = fem::solve_static(model, progress.callback());
+  progress.stage("recovering section forces");
+  const std::vector<fem::StationResult> stations = fem::recover_stations(model, r.displacement, opt.stations);
+
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
+  const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
+  const std::string L = u.label(Quantity::length), F = u.label(Quantity::force), M = u.label(Quantity::moment), S = u.label(Quantity::stress);
+
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_static" : opt.out;
+  core::ResultsFolder folder(out_dir);
+
+  core::CsvTable disp({"node", core::column("ux", L), core::column("uy", L), core::column("uz", L), "rx [rad]", "ry [rad]", "rz [rad]"});
+  double max_disp = 0.0;
+  int max_disp_node = 0;
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    const auto d = r.displacement.segment<6>(static_cast<Eigen::Index>(6 * n));
+    disp.row().add(model.nodes[n].id);
+    for (int k = 0; k < 6; ++k) disp.add(d(k) * (k < 3 ? lf : 1.0));
+    if (d.head<3>().norm() > max_disp) {
+      max_disp = d.head<3>().norm();
+      max_disp_node = model.nodes[n].id;
+    }
+  }
+  folder.write_text("displacements.csv", disp.str());
+
+  core::CsvTable reac({"node", core::column("fx", F), core::column("fy", F), core::column("fz", F), core::column("mx", M),
+                       core::column("my", M), core::column("mz", M)});
+  Eigen::Matrix<double, 6, 1> total = Eigen::Matrix<double, 6, 1>::Zero();
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+    const auto rn = r.reaction.segment<6>(static_cast<Eigen::Index>(6 * n));
+    bool constrained = false;
+    for (const fem::Constraint& c : model.constraints) constrained = constrained || c.node == static_cast<int>(n);
+    if (!constrained) continue;
+    reac.row().add(model.nodes[n].id);
+    for (int k = 0; k < 6; ++k) reac.add(rn(k) * (k < 3 ? ff : mf));
+    total.head<3>() += rn.head<3>();
+  }
+  folder.write_text("reactions.csv", reac.str());
+
+  core::CsvTable sec({"element", "station", core::column("x", L), core::column("X", L), core::column("Y", L), core::column("Z", L),
+                      core::column("N", F), core::column("Vy", F), core::column("Vz", F), core::column("T", M), core::column("My", M),
+                      core::column("Mz", M), core::column("fiber_stress_max", S), core::column("fiber_stress_min", S)});
+  double peak_stress = 0.0;
+  int peak_element = 0;
+  std::vector<double> cell_max(model.beams.size(), 0.0);
+  std::map<int, std::size_t> beam_pos;
+  for (std::size_t i = 0; i < model.beams.size(); ++i) beam_pos[model.beams[i].id] = i;
+  for (const fem::StationResult& s : stations) {
+    double smax = 0.0, smin = 0.0;
+    if (!s.fiber_stress.empty()) {
+      smax = *std::max_element(s.fiber_stress.begin(), s.fiber_stress.end());
+      smin = *std::min_element(s.fiber_stress.begin(), s.fiber_stress.end());
+    }
+    const double peak = std::max(std::abs(smax), std::abs(smin));
+    if (peak > peak_stress) {
+      peak_stress = peak;
+      peak_element = s.element_id;
+    }
+    double& cm = cell_max[beam_pos[s.element_id]];
+    cm = std::max(cm, peak * sf);
+    sec.row().add(s.element_id).add(s.station).add(s.x * lf).add(s.point.x() * lf).add(s.point.y() * lf).add(s.point.z() * lf);
+    sec.add(s.forces.n * ff).add(s.forces.vy * ff).add(s.forces.vz * ff).add(s.forces.t * mf).add(s.forces.my * mf).add(s.forces.mz * mf);
+    sec.add(s.fiber_stress.empty() ? 0.0 : smax * sf).add(s.fiber_stress.empty() ? 0.0 : smin * sf);
+  }
+  folder.write_text("section_forces.csv", sec.str());
+
+  fem::VtuField dfield{"displacement [" + L + "]", 3, {}}, rfield{"rotation [rad]", 3, {}};
+  for (std::size_t n = 0; n < model.nodes.size(); ++n)
+    for (int k = 0; k < 3; ++k) {
+      dfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + static_cast<std::size_t>(k))) * lf);
+      rfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + 3 + static_cast<std::size_t>(k))));
+    }
+  fem::VtuField stress_field{"max_abs_fiber_stress [" + S + "]", 1, cell_max};
+  folder.write_text("static.vtu", fem::vtu_document(model, lf, {dfield, rfield}, {stress_field}));
+
+  nlohmann::ordered_json j;
+  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "static"}};
+  j["input"] = {{"mesh", opt.mesh.path}, {"units", u.name()}};
+  Eigen::Vector3d applied = Eigen::Vector3d::Zero();
+  for (std::size_t n = 0; n < model.nodes.size(); ++n) applied += r.applied.segment<3>(static_cast<Eigen::Index>(6 * n));
+  j["frame"] = {
+      {"nodes", model.nodes.size()},
+      {"beam_elements", model.beams.size()},
+      {"max_displacement", {{"value", max_disp * lf}, {"unit", L}, {"node", max_disp_node}}},
+      {"peak_fiber_stress", {{"value", peak_stress * sf}, {"unit", S}, {"element", peak_element}}},
+      {"applied_force_sum", {{"value", {applied.x() * ff, applied.y() * ff, applied.z() * ff}}, {"unit", F}}},
+      {"reaction_force_sum", {{"value", {total.x() * ff, total.y() * ff, total.z() * ff}}, {"unit", F}}},
+      {"relative_residual", r.relative_residual}};
+  folder.write_text("summary.json", j.dump(2) + "\n");
+  folder.commit();
+  progress.done();
+
+  fmt::print("framedyn static: {} ({} nodes, {} beam elements, units {})\n", opt.mesh.path, model.nodes.size(), model.beams.size(), u.name());
+  fmt::print("max displacement {:.6g} {} at node {}\n", max_disp * lf, L, max_disp_node);
+  fmt::print("peak fiber stress {:.6g} {} in element {}\n", peak_stress * sf, S, peak_element);
+  fmt::print("applied force sum ({:.6g}, {:.6g}, {:.6g}) {}; reactions ({:.6g}, {:.6g}, {:.6g}) {}\n", applied.x() * ff, applied.y() * ff,
+             applied.z() * ff, F, total.x() * ff, total.y() * ff, total.z() * ff, F);
+  fmt::print("results in {}/ (summary.json, displacements.csv, reactions.csv, section_forces.csv, static.vtu)\n", out_dir);
+  return 0;
+}
+
+}  // namespace
+
+void add_static_command(CLI::App& app, std::function<int()>& run) {
+  auto opt = std::make_shared<StaticOptions>();
+  CLI::App* cmd = app.add_subcommand("static", "Static displacements, reactions, section forces and fiber stresses under nodal loads");
+  opt->mesh.add_options(*cmd);
+  cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_static)");
+  cmd->add_option("--stations", opt->stations, "Section-force stations per element, ends included (default 3)")->check(CLI::Range(2, 101));
+  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  cmd->callback([opt, &run]() { run = [opt]() { return run_static(*opt); }; });
+}
+
+}  // namespace framedyn::apps

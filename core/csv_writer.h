@@ -1,0 +1,32 @@
+// Plain CSV tables with a unit in every column header ("frequency [Hz]").
+// Numbers are written with 10 significant digits in a fixed locale-free
+// format, so that two runs of the same input give byte-identical files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace framedyn::core {
+
+class CsvTable {
+ public:
+  explicit CsvTable(std::vector<std::string> headers);
+  CsvTable& row();                        // start a new row
+  CsvTable& add(double value);
+  CsvTable& add(long long value);
+  CsvTable& add(int value) { return add(static_cast<long long>(value)); }
+  CsvTable& add(const std::string& text);
+  std::string str() const;                // throws std::logic_error on a ragged row
+  std::size_t rows() const { return rows_.size(); }
+
+ private:
+  std::vector<std::string> headers_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+// "name [unit]", or "name" when unit is "" or "1".
+std::string column(const std::string& name, const std::string& unit);
+// Shortest round-trip-safe text for a double used in CSV and tables.
+std::string format_number(double value);
+
+}  // namespace framedyn::core

@@ -1,0 +1,90 @@
+// Conversion factors between the supported unit systems and SI.
+#include "core/units.h"
+
+#include <stdexcept>
+
+namespace framedyn::core {
+
+namespace {
+constexpr double kInch = 0.0254;                 // m, exact
+constexpr double kPoundForce = 4.4482216152605;  // N, exact by definition of lbf
+}  // namespace
+
+std::vector<std::string> UnitSystem::known_names() { return {"in-lbf-s", "m-N-s", "SI", "mm-N-s"}; }
+
+UnitSystem UnitSystem::from_name(const std::string& name) {
+  UnitSystem u;
+  if (name == "in-lbf-s") {
+    u.name_ = name;
+    u.length_ = kInch;
+    u.force_ = kPoundForce;
+    u.length_label_ = "in";
+    u.force_label_ = "lbf";
+    u.mass_label_ = "lbf*s^2/in";
+    u.stress_label_ = "psi";
+  } else if (name == "m-N-s" || name == "SI") {
+    u.name_ = "m-N-s";
+    u.length_label_ = "m";
+    u.force_label_ = "N";
+    u.mass_label_ = "kg";
+    u.stress_label_ = "Pa";
+  } else if (name == "mm-N-s") {
+    u.name_ = name;
+    u.length_ = 1e-3;
+    u.length_label_ = "mm";
+    u.force_label_ = "N";
+    u.mass_label_ = "t";
+    u.stress_label_ = "MPa";
+  } else {
+    throw std::invalid_argument("unknown unit system '" + name + "' (known: in-lbf-s, m-N-s or SI, mm-N-s)");
+  }
+  return u;
+}
+
+double UnitSystem::to_si_factor(Quantity q) const {
+  const double L = length_, F = force_;
+  const double M = F / L;  // mass unit = force * s^2 / length
+  switch (q) {
+    case Quantity::dimensionless: return 1.0;
+    case Quantity::length: return L;
+    case Quantity::area: return L * L;
+    case Quantity::second_moment_of_area: return L * L * L * L;
+    case Quantity::force: return F;
+    case Quantity::moment: return F * L;
+    case Quantity::stress: return F / (L * L);
+    case Quantity::mass: return M;
+    case Quantity::rotary_inertia: return M * L * L;
+    case Quantity::density: return M / (L * L * L);
+    case Quantity::translational_stiffness: return F / L;
+    case Quantity::rotational_stiffness: return F * L;
+    case Quantity::angle: return 1.0;
+    case Quantity::frequency: return 1.0;
+    case Quantity::time: return 1.0;
+  }
+  return 1.0;
+}
+
+std::string UnitSystem::label(Quantity q) const {
+  const std::string& L = length_label_;
+  const std::string& F = force_label_;
+  switch (q) {
+    case Quantity::dimensionless: return "1";
+    case Quantity::length: return L;
+    case Quantity::area: return L + "^2";
+    case Quantity::second_moment_of_area: return L + "^4";
+    case Quantity::force: return F;
+    case Quantity::moment: return F + "*" + L;
+    case Quantity::stress: return stress_label_;
+    case Quantity::mass: return mass_label_;
+    case Quantity::rotary_inertia: return mass_label_ + "*" + L + "^2";
+    case Quantity::density: return mass_label_ + "/" + L + "^3";
+    case Quantity::translational_stiffness: return F + "/" + L;
+    case Quantity::rotational_stiffness: return F + "*" + L + "/rad";
+    case Quantity::angle: return "rad";
+    case Quantity::frequency: return "Hz";
+    case Quantity::time: return "s";
+  }
+  return "?";
+}
+
+}  // namespace framedyn::core

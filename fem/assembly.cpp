@@ -1,0 +1,177 @@
+// Assembly of K and M from beam elements, point masses and springs.
+#include "fem/assembly.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace framedyn::fem {
+
+DofMap make_dof_map(const FrameModel& model) {
+  DofMap map;
+  const int n = model.dof_count();
+  std::vector<char> constrained(static_cast<std::size_t>(n), 0);
+  for (const Constraint& c : model.constraints) {
+    const int g = kDofsPerNode * c.node + c.dof;
+    if (!constrained[static_cast<std::size_t>(g)]) {
+      constrained[static_cast<std::size_t>(g)] = 1;
+      map.constrained_dofs.push_back(g);
+    }
+  }
+  map.free_index.assign(static_cast<std::size_t>(n), -1);
+  map.free_dofs.reserve(static_cast<std::size_t>(n) - map.constrained_dofs.size());
+  for (int g = 0; g < n; ++g)
+    if (!constrained[static_cast<std::size_t>(g)]) {
+      map.free_index[static_cast<std::size_t>(g)] = static_cast<int>(map.free_dofs.size());
+      map.free_dofs.push_back(g);
+    }
+  return map;
+}
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double, int>>;
+
+struct ElementMatrices {
+  Matrix12d stiffness, mass;
+  std::array<int, 12> dofs;
+};
+
+BeamGeometry checked_geometry(const FrameModel& model, const BeamElement& beam) {
+  try {
+    return beam_geometry(model, beam);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("beam element {}: {}", beam.id, e.what()));
+  }
+}
+
+std::array<int, 12> element_dofs(const BeamElement& beam) {
+  std::array<int, 12> d{};
+  for (int i = 0; i < 6; ++i) {
+    d[static_cast<std::size_t>(i)] = kDofsPerNode * beam.node_a + i;
+    d[static_cast<std::size_t>(6 + i)] = kDofsPerNode * beam.node_b + i;
+  }
+  return d;
+}
+
+template <int N>
+void scatter(Triplets& out, const Eigen::Matrix<double, N, N>& m, const std::array<int, N>& global, const DofMap& dofs, Storage storage) {
+  for (int c = 0; c < N; ++c) {
+    const int fc = dofs.free_index[static_cast<std::size_t>(global[static_cast<std::size_t>(c)])];
+    if (fc < 0) continue;
+    for (int r = 0; r < N; ++r) {
+      const int fr = dofs.free_index[static_cast<std::size_t>(global[static_cast<std::size_t>(r)])];
+      if (fr < 0) continue;
+      if (storage == Storage::lower && fr < fc) continue;
+      const double v = m(r, c);
+      if (v != 0.0) out.emplace_back(fr, fc, v);
+    }
+  }
+}
+
+SparseMatrix from_triplets(int n, Triplets& t) {
+  SparseMatrix m(n, n);
+  m.setFromTriplets(t.begin(), t.end());
+  Triplets().swap(t);
+  m.makeCompressed();
+  return m;
+}
+
+}  // namespace
+
+FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options) {
+  const int n = dofs.free_count();
+  const std::size_t per_element = options.storage == Storage::lower ? 78 : 144;
+  FreeSystem sys;
+  // K and M one after the other, so only one triplet list is alive at a time.
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool stiffness = pass == 0;
+    Triplets t;
+    t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
+    for (const BeamElement& beam : model.beams) {
+      const BeamGeometry g = checked_geometry(model, beam);
+      const Matrix12d tr = beam_transformation(g.axes);
+      const Matrix12d local = stiffness ? beam_local_stiffness(g.data) : beam_local_mass(g.data, options.mass);
+      const Matrix12d global = tr.transpose() * local * tr;
+      scatter<12>(t, global, element_dofs(beam), dofs, options.storage);
+    }
+    if (stiffness) {
+      for (const Spring& s : model.springs) {
+        const int ga = kDofsPerNode * s.node_a + s.dof_a;
+        if (s.node_b < 0) {
+          scatter<1>(t, Eigen::Matrix<double, 1, 1>::Constant(s.stiffness), {ga}, dofs, options.storage);
+        } else {
+          Eigen::Matrix2d k;
+          k << s.stiffness, -s.stiffness, -s.stiffness, s.stiffness;
+          scatter<2>(t, k, {ga, kDofsPerNode * s.node_b + s.dof_b}, dofs, options.storage);
+        }
+      }
+      sys.stiffness = from_triplets(n, t);
+    } else {
+      for (const PointMass& pm : model.point_masses) {
+        Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+        m.topLeftCorner<3, 3>().diagonal().setConstant(pm.mass);
+        m.bottomRightCorner<3, 3>() = pm.rotary_inertia;
+        std::array<int, 6> d{};
+        for (int i = 0; i < 6; ++i) d[static_cast<std::size_t>(i)] = kDofsPerNode * pm.node + i;
+        scatter<6>(t, m, d, dofs, options.storage);
+      }
+      sys.mass = from_triplets(n, t);
+    }
+  }
+  return sys;
+}
+
+Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.dof_count());
+  for (const BeamElement& beam : model.beams) {
+    const BeamGeometry g = checked_geometry(model, beam);
+    const Matrix12d tr = beam_transformation(g.axes);
+    const auto d = element_dofs(beam);
+    Vector12d ue;
+    for (int i = 0; i < 12; ++i) ue(i) = u(d[static_cast<std::size_t>(i)]);
+    const Vector12d fe = tr.transpose() * (beam_local_stiffness(g.data) * (tr * ue));
+    for (int i = 0; i < 12; ++i) f(d[static_cast<std::size_t>(i)]) += fe(i);
+  }
+  for (const Spring& s : model.springs) {
+    const int ga = kDofsPerNode * s.node_a + s.dof_a;
+    if (s.node_b < 0) {
+      f(ga) += s.stiffness * u(ga);
+    } else {
+      const int gb = kDofsPerNode * s.node_b + s.dof_b;
+      const double force = s.stiffness * (u(ga) - u(gb));
+      f(ga) += force;
+      f(gb) -= force;
+    }
+  }
+  return f;
+}
+
+std::vector<int> massless_dofs(const FrameModel& model, const DofMap& dofs, const SparseMatrix& mass_ff) {
+  (void)model;
+  std::vector<int> out;
+  const Eigen::VectorXd diag = mass_ff.diagonal();
+  for (int i = 0; i < diag.size(); ++i)
+    if (!(diag(i) > 0.0)) out.push_back(dofs.free_dofs[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+Eigen::MatrixXd rigid_body_vectors(const FrameModel& model, const Eigen::Vector3d& p) {
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(model.dof_count(), 6);
+  for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+    const Eigen::Vector3d d = model.nodes[i].position - p;
+    const int o = kDofsPerNode * static_cast<int>(i);
+    for (int k = 0; k < 3; ++k) {
+      r(o + k, k) = 1.0;       // translation
+      r(o + 3 + k, 3 + k) = 1.0;  // rotation
+    }
+    // Translation of the node from a small rotation theta about p: theta x d.
+    const Eigen::Vector3d ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+    r.block<3, 1>(o, 3) = ex.cross(d);
+    r.block<3, 1>(o, 4) = ey.cross(d);
+    r.block<3, 1>(o, 5) = ez.cross(d);
+  }
+  return r;
+}
+
+}  // namespace framedyn::fem

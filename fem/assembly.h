@@ -1,0 +1,56 @@
+// Sparse assembly of the frame's stiffness K and mass M over the free DOFs
+// (fixed and prescribed DOFs eliminated), and the element-by-element
+// internal force K u used for reactions and equilibrium checks.
+#pragma once
+
+#include <Eigen/Sparse>
+
+#include <vector>
+
+#include "fem/beam_element.h"
+#include "fem/frame_model.h"
+
+namespace framedyn::fem {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// Numbering of the free DOFs: free_index[g] is the equation number of global
+// DOF g, or -1 if g is constrained.
+struct DofMap {
+  std::vector<int> free_index;
+  std::vector<int> free_dofs;         // equation number -> global DOF
+  std::vector<int> constrained_dofs;  // global DOFs with a *BOUNDARY, in order
+  int free_count() const { return static_cast<int>(free_dofs.size()); }
+};
+
+DofMap make_dof_map(const FrameModel& model);
+
+enum class Storage {
+  lower,  // lower triangle only: what CHOLMOD and Spectra read; half the memory
+  full,   // both triangles (tests, general products)
+};
+
+struct AssemblyOptions {
+  MassFormulation mass = MassFormulation::consistent;
+  Storage storage = Storage::lower;
+};
+
+// K_ff and M_ff on the free DOFs. Throws std::invalid_argument naming the
+// element for a zero-length element or a bad orientation.
+struct FreeSystem {
+  SparseMatrix stiffness;
+  SparseMatrix mass;
+};
+FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options = {});
+
+// f = K u over all DOFs (u and f of length model.dof_count()), element by element.
+Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u);
+
+// Global DOFs (constrained ones excluded) whose diagonal mass is zero.
+std::vector<int> massless_dofs(const FrameModel& model, const DofMap& dofs, const SparseMatrix& mass_ff);
+
+// Rigid-body displacement vectors of the six directions (x, y, z, rx, ry, rz
+// about `reference_point`) on all DOFs, as columns of a dof_count x 6 matrix.
+Eigen::MatrixXd rigid_body_vectors(const FrameModel& model, const Eigen::Vector3d& reference_point);
+
+}  // namespace framedyn::fem

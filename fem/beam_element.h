@@ -1,0 +1,51 @@
+// Two-node 3-D beam element: Euler-Bernoulli (B33) and Timoshenko (B31).
+//
+// Local axes (x, y, z) = (t, n1, n2): t from node a to node b, n1 the section's
+// local 1-direction made orthogonal to t, n2 = t x n1 (Abaqus convention).
+// Local DOFs per node: u, v, w, theta_x, theta_y, theta_z.
+// Stiffness: Przemieniecki (1968), with Phi = 12 E I / (G A_s L^2) for the
+// Timoshenko element and Phi = 0 for Euler-Bernoulli. Consistent mass:
+// Przemieniecki's shear-deformable beam mass (translational and rotary
+// inertia, Phi-dependent) for Timoshenko; the classical cubic-Hermite mass
+// without rotary inertia for Euler-Bernoulli; torsional inertia rho Ip in both.
+// Lumped mass: half the element's mass and section rotary inertia at each node.
+// Equations: docs/theory/fem.md, "Beam elements".
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "fem/frame_model.h"
+
+namespace framedyn::fem {
+
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+using Vector12d = Eigen::Matrix<double, 12, 1>;
+
+enum class MassFormulation { consistent, lumped };
+
+// Rotation whose rows are the local axes (t, n1, n2) in global components.
+// Throws std::invalid_argument if the element has zero length or n1 is parallel to it.
+Eigen::Matrix3d beam_local_axes(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& n1_direction);
+
+// Everything an element matrix needs, in SI.
+struct BeamElementData {
+  double length = 0.0;
+  double youngs_modulus = 0.0, shear_modulus = 0.0, density = 0.0;
+  SectionProperties section;
+  BeamTheory theory = BeamTheory::timoshenko;
+};
+
+Matrix12d beam_local_stiffness(const BeamElementData& e);
+Matrix12d beam_local_mass(const BeamElementData& e, MassFormulation formulation);
+// 12x12 block-diagonal transformation, local = T * global.
+Matrix12d beam_transformation(const Eigen::Matrix3d& local_axes);
+
+// The data and axes of element `beam` of `model` (principal axes if the
+// section has a product of inertia).
+struct BeamGeometry {
+  BeamElementData data;
+  Eigen::Matrix3d axes;  // rows t, n1, n2 (principal)
+};
+BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam);
+
+}  // namespace framedyn::fem

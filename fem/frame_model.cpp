@@ -1,0 +1,58 @@
+// Look-ups on the frame model.
+#include "fem/frame_model.h"
+
+#include <fmt/format.h>
+
+namespace framedyn::fem {
+
+const char* dof_name(int dof) {
+  static const char* names[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  return (dof >= 0 && dof < 6) ? names[dof] : "?";
+}
+
+void FrameModel::index() {
+  node_lookup_.clear();
+  sparse_node_lookup_.clear();
+  int max_id = 0;
+  for (const Node& n : nodes) max_id = std::max(max_id, n.id);
+  const bool dense = max_id <= 4 * static_cast<int>(nodes.size()) + 1024;
+  if (dense) {
+    node_lookup_.assign(static_cast<std::size_t>(max_id) + 1, -1);
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (nodes[i].id >= 0) node_lookup_[static_cast<std::size_t>(nodes[i].id)] = static_cast<int>(i);
+  } else {
+    for (std::size_t i = 0; i < nodes.size(); ++i) sparse_node_lookup_[nodes[i].id] = static_cast<int>(i);
+  }
+  beam_lookup_.clear();
+  for (std::size_t i = 0; i < beams.size(); ++i) beam_lookup_[beams[i].id] = static_cast<int>(i);
+}
+
+int FrameModel::node_index(int id) const {
+  if (!node_lookup_.empty()) {
+    if (id < 0 || id >= static_cast<int>(node_lookup_.size())) return -1;
+    return node_lookup_[static_cast<std::size_t>(id)];
+  }
+  auto it = sparse_node_lookup_.find(id);
+  if (it != sparse_node_lookup_.end()) return it->second;
+  // Not indexed yet: linear search keeps small hand-built models working.
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+int FrameModel::beam_index(int id) const {
+  auto it = beam_lookup_.find(id);
+  if (it != beam_lookup_.end()) return it->second;
+  for (std::size_t i = 0; i < beams.size(); ++i)
+    if (beams[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+std::string FrameModel::describe_dof(int global_dof) const {
+  const int node = global_dof / kDofsPerNode;
+  const int dof = global_dof % kDofsPerNode;
+  if (node < 0 || node >= static_cast<int>(nodes.size())) return fmt::format("dof {}", global_dof);
+  return fmt::format("node {} ({})", nodes[static_cast<std::size_t>(node)].id, dof_name(dof));
+}
+
+}  // namespace framedyn::fem

@@ -1,0 +1,120 @@
+// The beam model of a frame: nodes, beam elements with their sections and
+// materials, point masses, springs, supports, nodal loads and named sets.
+// All values are SI (m, N, s, kg); readers convert from the input's units.
+// The model is plain data: algorithms take it by const reference and keep
+// their results elsewhere, so many analyses can share one model.
+//
+// Degrees of freedom: node i (index into `nodes`) owns global DOFs 6i..6i+5,
+// in the order ux, uy, uz, rx, ry, rz (Abaqus DOFs 1..6), global axes.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "fem/beam_section.h"
+
+namespace framedyn::fem {
+
+constexpr int kDofsPerNode = 6;
+
+struct Node {
+  int id = 0;                    // the mesh's node number
+  Eigen::Vector3d position;      // m
+};
+
+struct Material {
+  std::string name;
+  double youngs_modulus = 0.0;   // E, Pa
+  double poisson_ratio = 0.0;    // nu (G = E / (2 (1 + nu)) unless given directly)
+  double shear_modulus = 0.0;    // G, Pa
+  double density = 0.0;          // kg/m^3
+};
+
+enum class BeamTheory {
+  euler_bernoulli,  // Abaqus B33: no shear deformation, no rotary inertia in bending
+  timoshenko,       // Abaqus B31: shear deformation (shear areas) and rotary inertia
+};
+
+// A section assignment: properties, material and the approximate local
+// 1-direction n1 (the *BEAM SECTION orientation line; Abaqus default (0,0,-1)).
+struct SectionAssignment {
+  std::string element_set;
+  SectionProperties properties;  // SI
+  Material material;             // SI; for GENERAL sections E, G, density come from the section
+  Eigen::Vector3d n1_direction{0.0, 0.0, -1.0};
+};
+
+struct BeamElement {
+  int id = 0;                    // the mesh's element number
+  int node_a = 0, node_b = 0;    // indices into FrameModel::nodes
+  int section = -1;              // index into FrameModel::sections
+  BeamTheory theory = BeamTheory::timoshenko;
+};
+
+struct PointMass {
+  int element_id = 0;
+  int node = 0;                  // index into nodes
+  double mass = 0.0;             // kg
+  Eigen::Matrix3d rotary_inertia = Eigen::Matrix3d::Zero();  // kg m^2, global axes
+};
+
+// A linear spring on one DOF to ground (node_b < 0) or between two DOFs.
+struct Spring {
+  int element_id = 0;
+  int node_a = 0, dof_a = 0;     // dof 0..5
+  int node_b = -1, dof_b = 0;
+  double stiffness = 0.0;        // N/m or N m/rad
+};
+
+// A prescribed displacement (zero for a fixed support).
+struct Constraint {
+  int node = 0;
+  int dof = 0;                   // 0..5
+  double value = 0.0;            // m or rad
+};
+
+struct NodalLoad {
+  int node = 0;
+  int dof = 0;                   // 0..5
+  double value = 0.0;            // N or N m
+};
+
+struct FrameModel {
+  std::vector<Node> nodes;
+  std::vector<BeamElement> beams;
+  std::vector<SectionAssignment> sections;
+  std::vector<PointMass> point_masses;
+  std::vector<Spring> springs;
+  std::vector<Constraint> constraints;
+  std::vector<NodalLoad> loads;
+  std::map<std::string, std::vector<int>> node_sets;     // upper-case name -> node indices
+  std::map<std::string, std::vector<int>> element_sets;  // upper-case name -> element ids (beams and others)
+  core::UnitSystem units = core::UnitSystem::si();       // the unit system the input was written in
+  std::optional<int> requested_modes;                    // from a *FREQUENCY step, if any
+
+  int dof_count() const { return kDofsPerNode * static_cast<int>(nodes.size()); }
+  // Index of the node with mesh number `id`, or -1.
+  int node_index(int id) const;
+  // Index into `beams` of the element with number `id`, or -1.
+  int beam_index(int id) const;
+  // "node 12 (uy)" for messages.
+  std::string describe_dof(int global_dof) const;
+
+  // Rebuilds the id lookups; call after changing `nodes` or `beams` by hand.
+  void index();
+
+ private:
+  std::vector<int> node_lookup_;  // id -> index (dense, ids are usually compact)
+  std::map<int, int> sparse_node_lookup_;
+  std::map<int, int> beam_lookup_;
+};
+
+// Name of a DOF 0..5: "ux", "uy", "uz", "rx", "ry", "rz".
+const char* dof_name(int dof);
+
+}  // namespace framedyn::fem

@@ -1,0 +1,887 @@
+// Abaqus/CalculiX .inp reader for beam models; see inp_reader.h.
+// Two passes: the text is split into keyword blocks (with *INCLUDE spliced
+// in and continuation lines joined), then each block is parsed into raw
+// records; the model is built at the end, when every set, material and node
+// is known, and every reference is checked.
+#include "fem/inp_reader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "fem/beam_element.h"
+
+namespace framedyn::fem {
+
+namespace {
+
+namespace fs = std::filesystem;
+using core::InputError;
+using core::InputLocation;
+using core::Quantity;
+
+// ---------------------------------------------------------------- text level
+
+struct Line {
+  std::string file;
+  int number = 0;
+  std::string text;
+};
+
+std::string trim(const std::string& s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return s.substr(a, b - a);
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::vector<std::string> split_fields(const std::string& s) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s) {
+    if (c == ',') {
+      out.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(trim(cur));
+  // A trailing comma leaves one empty field: drop it.
+  if (out.size() > 1 && out.back().empty()) out.pop_back();
+  return out;
+}
+
+bool is_comment(const std::string& t) { return t.size() >= 2 && t[0] == '*' && t[1] == '*'; }
+bool is_keyword(const std::string& t) { return !t.empty() && t[0] == '*' && !is_comment(t); }
+
+struct Keyword {
+  std::string name;                          // upper case, single spaces: "*BEAM SECTION"
+  std::map<std::string, std::string> params; // upper-case key -> value as written
+  std::vector<std::string> param_order;
+  InputLocation where;
+};
+
+struct Block {
+  Keyword keyword;
+  std::vector<Line> data;
+};
+
+Keyword parse_keyword_line(const std::string& text, const InputLocation& where) {
+  Keyword k;
+  k.where = where;
+  std::vector<std::string> fields = split_fields(text);
+  std::string name;
+  for (char c : fields[0]) {
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      if (!name.empty() && name.back() != ' ') name += ' ';
+    } else {
+      name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
+  k.name = trim(name);
+  k.where.key = k.name;
+  for (std::size_t i = 1; i < fields.size(); ++i) {
+    if (fields[i].empty()) continue;
+    const std::size_t eq = fields[i].find('=');
+    std::string key = upper(trim(fields[i].substr(0, eq)));
+    std::string value = eq == std::string::npos ? "" : trim(fields[i].substr(eq + 1));
+    if (key.empty()) throw InputError(k.where, "a parameter NAME or NAME=VALUE", "'" + fields[i] + "'");
+    if (k.params.count(key)) throw InputError(k.where, "each parameter once", "parameter " + key + " twice");
+    k.params[key] = value;
+    k.param_order.push_back(key);
+  }
+  return k;
+}
+
+struct TextSource {
+  std::vector<Line> lines;
+  std::optional<std::string> units_comment;
+  InputLocation units_where;
+};
+
+void load_lines(const std::string& text, const std::string& name, const fs::path& base_dir, TextSource& out,
+                std::vector<std::string>& include_stack);
+
+void load_file(const fs::path& path, const InputLocation& from, TextSource& out, std::vector<std::string>& include_stack) {
+  const std::string key = fs::weakly_canonical(path).string();
+  if (std::find(include_stack.begin(), include_stack.end(), key) != include_stack.end())
+    throw InputError(from, "the file " + path.string() + " includes itself (directly or through other *INCLUDE files)");
+  if (include_stack.size() > 16) throw InputError(from, "*INCLUDE nested more than 16 deep");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(from, "cannot open " + path.string() + (fs::exists(path) ? " (permission?)" : " (no such file)"));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  include_stack.push_back(key);
+  load_lines(ss.str(), path.string(), path.parent_path(), out, include_stack);
+  include_stack.pop_back();
+}
+
+void load_lines(const std::string& text, const std::string& name, const fs::path& base_dir, TextSource& out,
+                std::vector<std::string>& include_stack) {
+  std::istringstream in(text);
+  std::string raw;
+  int number = 0;
+  while (std::getline(in, raw)) {
+    ++number;
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    if (raw.find('\0') != std::string::npos)
+      throw InputError({name, number, ""}, "text", "a NUL byte (is this a binary file?)");
+    const std::string t = trim(raw);
+    if (t.empty()) continue;
+    if (is_comment(t)) {
+      // "** units: in-lbf-s" names the unit system (a framedyn convention).
+      std::string body = trim(t.substr(2));
+      std::string lower_body = body;
+      for (char& c : lower_body) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (lower_body.rfind("units:", 0) == 0) {
+        const std::string value = trim(body.substr(6));
+        if (out.units_comment && *out.units_comment != value)
+          throw InputError({name, number, "** units:"}, "the same unit system as " + core::format_location(out.units_where) + " (" + *out.units_comment + ")", value);
+        out.units_comment = value;
+        out.units_where = {name, number, "** units:"};
+      }
+      continue;
+    }
+    if (is_keyword(t) && upper(t).rfind("*INCLUDE", 0) == 0) {
+      const Keyword k = parse_keyword_line(t, {name, number, ""});
+      if (k.name != "*INCLUDE") throw InputError(k.where, "a known keyword", k.name);
+      auto it = k.params.find("INPUT");
+      if (it == k.params.end() || it->second.empty()) throw InputError(k.where, "INPUT=file name", "no INPUT parameter");
+      for (const auto& p : k.param_order)
+        if (p != "INPUT") throw InputError(k.where, "only the parameter INPUT", p);
+      std::string file = it->second;
+      if (file.size() >= 2 && file.front() == '"' && file.back() == '"') file = file.substr(1, file.size() - 2);
+      fs::path p(file);
+      if (p.is_relative()) p = base_dir / p;
+      load_file(p, k.where, out, include_stack);
+      continue;
+    }
+    out.lines.push_back({name, number, t});
+  }
+}
+
+// Keyword lines ending in a comma continue on the next line; so do data
+// lines of *ELEMENT (elements with many nodes).
+std::vector<Block> make_blocks(const std::vector<Line>& lines) {
+  std::vector<Block> blocks;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const Line& l = lines[i];
+    if (is_keyword(l.text)) {
+      std::string text = l.text;
+      while (!text.empty() && text.back() == ',' && i + 1 < lines.size() && !is_keyword(lines[i + 1].text)) {
+        text += lines[++i].text;
+      }
+      blocks.push_back({parse_keyword_line(text, {l.file, l.number, ""}), {}});
+    } else {
+      if (blocks.empty()) throw InputError({l.file, l.number, ""}, "a keyword line (starting with *) first", "'" + l.text + "'");
+      Block& b = blocks.back();
+      if (b.keyword.name == "*ELEMENT" && !b.data.empty() && !b.data.back().text.empty() && b.data.back().text.back() == ',')
+        b.data.back().text += l.text;
+      else
+        b.data.push_back(l);
+    }
+  }
+  return blocks;
+}
+
+// ---------------------------------------------------------------- values
+
+InputLocation at(const Line& l, const Keyword& k) { return {l.file, l.number, k.name}; }
+
+double parse_double(const std::string& field, const InputLocation& where, const std::string& what) {
+  std::string s = field;
+  for (char& c : s)
+    if (c == 'd' || c == 'D') c = 'e';  // Fortran exponents: 1.0D3
+  if (s.empty()) throw InputError(where, what + " (a number)", "an empty field");
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
+    throw InputError(where, what + " (a finite number)", "'" + field + "'");
+  return v;
+}
+
+long parse_int(const std::string& field, const InputLocation& where, const std::string& what) {
+  if (field.empty()) throw InputError(where, what + " (an integer)", "an empty field");
+  errno = 0;
+  char* end = nullptr;
+  const long v = std::strtol(field.c_str(), &end, 10);
+  if (end != field.c_str() + field.size() || errno == ERANGE || v > 2000000000L || v < -2000000000L)
+    throw InputError(where, what + " (an integer)", "'" + field + "'");
+  return v;
+}
+
+bool is_integer(const std::string& s) {
+  if (s.empty()) return false;
+  std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
+  if (i == s.size()) return false;
+  for (; i < s.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+  return true;
+}
+
+void check_params(const Keyword& k, std::initializer_list<const char*> allowed) {
+  for (const std::string& p : k.param_order) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || p == a;
+    if (!ok) {
+      std::string list;
+      for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      throw InputError(k.where, list.empty() ? "no parameters" : "one of the parameters " + list, "parameter " + p);
+    }
+  }
+}
+
+std::string required_param(const Keyword& k, const char* name) {
+  auto it = k.params.find(name);
+  if (it == k.params.end() || it->second.empty()) throw InputError(k.where, std::string(name) + "=...", std::string("no ") + name + " parameter");
+  return it->second;
+}
+
+std::vector<double> numbers(const Line& l, const Keyword& k, std::size_t min_count, std::size_t max_count, const std::string& what) {
+  std::vector<std::string> f = split_fields(l.text);
+  if (f.size() == 1 && f[0].empty()) f.clear();
+  if (f.size() < min_count || f.size() > max_count)
+    throw InputError(at(l, k), fmt::format("{} ({}{} values)", what, min_count, max_count == min_count ? "" : fmt::format(" to {}", max_count)),
+                     fmt::format("{} values in '{}'", f.size(), l.text));
+  std::vector<double> v;
+  for (const std::string& s : f) v.push_back(s.empty() ? 0.0 : parse_double(s, at(l, k), what));
+  return v;
+}
+
+// ---------------------------------------------------------------- raw records
+
+struct RawElement {
+  int id;
+  std::string type;  // B31, B33, MASS, ROTARYI, SPRING1, SPRING2
+  std::vector<int> node_ids;
+  InputLocation where;
+};
+
+struct RawSection {
+  std::string elset, material, shape;
+  std::vector<double> dims;
+  Eigen::Vector3d n1{0, 0, -1};
+  bool general = false;
+  double general_density = 0.0, general_e = 0.0, general_g = 0.0;
+  InputLocation where;
+};
+
+struct RawMaterial {
+  Material m;
+  bool has_elastic = false, has_density = false;
+  InputLocation where;
+};
+
+struct RawBoundary {
+  std::string target;
+  int first_dof, last_dof;
+  double value;
+  InputLocation where;
+};
+
+struct RawLoad {
+  std::string target;
+  int dof;
+  double value;
+  InputLocation where;
+};
+
+struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
+  std::string keyword, elset;
+  std::vector<double> values;
+  std::vector<int> dofs;
+  InputLocation where;
+};
+
+class Parser {
+ public:
+  explicit Parser(const TextSource& src) : src_(src) {}
+
+  FrameModel run(const InpReadOptions& options);
+
+ private:
+  const TextSource& src_;
+  std::vector<std::pair<int, Eigen::Vector3d>> nodes_;
+  std::map<int, InputLocation> node_where_;
+  std::vector<RawElement> elements_;
+  std::map<int, std::size_t> element_index_;
+  std::map<std::string, std::vector<int>> nsets_, elsets_;
+  std::vector<RawSection> sections_;
+  std::map<std::string, RawMaterial> materials_;
+  std::string current_material_;
+  std::vector<RawBoundary> boundaries_;
+  std::vector<RawLoad> loads_;
+  std::vector<RawElementProperty> properties_;
+  std::optional<int> frequency_count_;
+  bool in_step_ = false;
+  int steps_ = 0;
+
+  void node(const Block& b);
+  void element(const Block& b);
+  void set(const Block& b, bool nodes);
+  void beam_section(const Block& b);
+  void general_beam_section(const Block& b);
+  void material(const Block& b);
+  void elastic(const Block& b);
+  void density(const Block& b);
+  void boundary(const Block& b);
+  void cload(const Block& b);
+  void element_property(const Block& b);
+  void step_keyword(const Block& b);
+  FrameModel build(const core::UnitSystem& units);
+  std::vector<int> set_members(const std::string& name, bool nodes, const InputLocation& where) const;
+};
+
+void Parser::node(const Block& b) {
+  check_params(b.keyword, {"NSET"});
+  std::vector<int>* set = nullptr;
+  if (b.keyword.params.count("NSET")) set = &nsets_[upper(required_param(b.keyword, "NSET"))];
+  for (const Line& l : b.data) {
+    std::vector<std::string> f = split_fields(l.text);
+    if (f.size() < 2 || f.size() > 4) throw InputError(at(l, b.keyword), "node number, x[, y[, z]]", "'" + l.text + "'");
+    const int id = static_cast<int>(parse_int(f[0], at(l, b.keyword), "node number"));
+    if (id <= 0) throw InputError(at(l, b.keyword), "a positive node number", std::to_string(id));
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (std::size_t i = 1; i < f.size(); ++i) x(static_cast<int>(i) - 1) = f[i].empty() ? 0.0 : parse_double(f[i], at(l, b.keyword), "a coordinate");
+    auto [it, inserted] = node_where_.emplace(id, at(l, b.keyword));
+    if (!inserted) throw InputError(at(l, b.keyword), "a new node number", fmt::format("node {} again (first at {})", id, core::format_location(it->second)));
+    nodes_.emplace_back(id, x);
+    if (set) set->push_back(id);
+  }
+}
+
+void Parser::element(const Block& b) {
+  check_params(b.keyword, {"TYPE", "ELSET"});
+  const std::string type = upper(required_param(b.keyword, "TYPE"));
+  std::size_t node_count = 0;
+  if (type == "B31" || type == "B33" || type == "SPRING2") node_count = 2;
+  else if (type == "MASS" || type == "ROTARYI" || type == "SPRING1") node_count = 1;
+  else
+    throw InputError(b.keyword.where, "TYPE=B31, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
+                     "TYPE=" + type);
+  std::vector<int>* set = nullptr;
+  if (b.keyword.params.count("ELSET")) set = &elsets_[upper(required_param(b.keyword, "ELSET"))];
+  for (const Line& l : b.data) {
+    std::vector<std::string> f = split_fields(l.text);
+    if ((type == "B31" || type == "B33") && f.size() == 4)
+      throw InputError(at(l, b.keyword), "element number and 2 nodes (give the orientation on the *BEAM SECTION line)",
+                       "a third, orientation node in '" + l.text + "'");
+    if (f.size() != node_count + 1)
+      throw InputError(at(l, b.keyword), fmt::format("element number and {} node number(s) for {}", node_count, type), "'" + l.text + "'");
+    RawElement e;
+    e.id = static_cast<int>(parse_int(f[0], at(l, b.keyword), "element number"));
+    if (e.id <= 0) throw InputError(at(l, b.keyword), "a positive element number", std::to_string(e.id));
+    e.type = type;
+    e.where = at(l, b.keyword);
+    for (std::size_t i = 1; i < f.size(); ++i) e.node_ids.push_back(static_cast<int>(parse_int(f[i], at(l, b.keyword), "node number")));
+    if (node_count == 2 && e.node_ids[0] == e.node_ids[1])
+      throw InputError(at(l, b.keyword), "two different nodes", fmt::format("element {} from node {} to itself", e.id, e.node_ids[0]));
+    if (element_index_.count(e.id))
+      throw InputError(at(l, b.keyword), "a new element number",
+                       fmt::format("element {} again (first at {})", e.id, core::format_location(elements_[element_index_[e.id]].where)));
+    element_index_[e.id] = elements_.size();
+    elements_.push_back(e);
+    if (set) set->push_back(e.id);
+  }
+}
+
+std::vector<int> Parser::set_members(const std::string& name, bool nodes, const InputLocation& where) const {
+  const auto& sets = nodes ? nsets_ : elsets_;
+  auto it = sets.find(upper(name));
+  if (it == sets.end()) throw InputError(where, std::string(nodes ? "a node number or a defined *NSET" : "a defined *ELSET"), "'" + name + "'");
+  return it->second;
+}
+
+void Parser::set(const Block& b, bool nodes) {
+  const char* pname = nodes ? "NSET" : "ELSET";
+  check_params(b.keyword, {pname, "GENERATE"});
+  const std::string name = upper(required_param(b.keyword, pname));
+  const bool generate = b.keyword.params.count("GENERATE") > 0;
+  std::vector<int> members;
+  for (const Line& l : b.data) {
+    std::vector<std::string> f = split_fields(l.text);
+    if (generate) {
+      if (f.size() < 2 || f.size() > 3) throw InputError(at(l, b.keyword), "first, last[, increment] with GENERATE", "'" + l.text + "'");
+      const long first = parse_int(f[0], at(l, b.keyword), "first number");
+      const long last = parse_int(f[1], at(l, b.keyword), "last number");
+      const long inc = f.size() == 3 ? parse_int(f[2], at(l, b.keyword), "increment") : 1;
+      if (inc <= 0 || last < first) throw InputError(at(l, b.keyword), "first <= last and a positive increment", "'" + l.text + "'");
+      if ((last - first) / inc > 50000000) throw InputError(at(l, b.keyword), "a range of at most 5e7 members", "'" + l.text + "'");
+      for (long v = first; v <= last; v += inc) members.push_back(static_cast<int>(v));
+    } else {
+      for (const std::string& s : f) {
+        if (s.empty()) continue;
+        if (is_integer(s)) {
+          members.push_back(static_cast<int>(parse_int(s, at(l, b.keyword), "a number")));
+        } else {
+          const std::vector<int> sub = set_members(s, nodes, at(l, b.keyword));
+          members.insert(members.end(), sub.begin(), sub.end());
+        }
+      }
+    }
+  }
+  std::vector<int>& target = (nodes ? nsets_ : elsets_)[name];
+  target.insert(target.end(), members.begin(), members.end());
+}
+
+Eigen::Vector3d orientation_line(const Line& l, const Keyword& k) {
+  const std::vector<double> v = numbers(l, k, 3, 3, "the local 1-direction n1 (three components)");
+  const Eigen::Vector3d n(v[0], v[1], v[2]);
+  if (!(n.norm() > 0.0)) throw InputError(at(l, k), "a nonzero local 1-direction", "0, 0, 0");
+  return n;
+}
+
+void Parser::beam_section(const Block& b) {
+  check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION"});
+  RawSection s;
+  s.elset = upper(required_param(b.keyword, "ELSET"));
+  s.material = upper(required_param(b.keyword, "MATERIAL"));
+  s.shape = upper(required_param(b.keyword, "SECTION"));
+  s.where = b.keyword.where;
+  std::size_t count = 0;
+  if (s.shape == "RECT") count = 2;
+  else if (s.shape == "BOX") count = 6;
+  else if (s.shape == "PIPE") count = 2;
+  else if (s.shape == "CIRC") count = 1;
+  else if (s.shape == "I") count = 7;
+  else if (s.shape == "CHANNEL") count = 4;
+  else throw InputError(b.keyword.where, "SECTION=RECT, BOX, PIPE, CIRC, I or CHANNEL", "SECTION=" + s.shape);
+  if (b.data.empty()) throw InputError(b.keyword.where, fmt::format("a data line with the {} dimensions of {}", count, s.shape), "none");
+  if (b.data.size() > 2) throw InputError(at(b.data[2], b.keyword), "at most two data lines (dimensions, orientation)", "'" + b.data[2].text + "'");
+  s.dims = numbers(b.data[0], b.keyword, count, count, fmt::format("the {} dimensions of a {} section", count, s.shape));
+  for (double d : s.dims)
+    if (!(d > 0.0) && !(s.shape == "I" && &d == &s.dims[0]))
+      throw InputError(at(b.data[0], b.keyword), "positive section dimensions", "'" + b.data[0].text + "'");
+  if (b.data.size() == 2) s.n1 = orientation_line(b.data[1], b.keyword);
+  sections_.push_back(s);
+}
+
+void Parser::general_beam_section(const Block& b) {
+  check_params(b.keyword, {"ELSET", "SECTION", "DENSITY"});
+  RawSection s;
+  s.general = true;
+  s.shape = "GENERAL";
+  s.elset = upper(required_param(b.keyword, "ELSET"));
+  s.where = b.keyword.where;
+  const std::string kind = upper(required_param(b.keyword, "SECTION"));
+  if (kind != "GENERAL") throw InputError(b.keyword.where, "SECTION=GENERAL", "SECTION=" + kind);
+  if (b.keyword.params.count("DENSITY")) {
+    s.general_density = parse_double(b.keyword.params.at("DENSITY"), b.keyword.where, "DENSITY");
+    if (s.general_density < 0) throw InputError(b.keyword.where, "a density >= 0", b.keyword.params.at("DENSITY"));
+  }
+  if (b.data.size() != 3)
+    throw InputError(b.keyword.where, "three data lines (A, I11, I12, I22, J; the local 1-direction; E, G)", fmt::format("{} data lines", b.data.size()));
+  s.dims = numbers(b.data[0], b.keyword, 5, 5, "A, I11, I12, I22, J");
+  s.n1 = orientation_line(b.data[1], b.keyword);
+  const std::vector<double> eg = numbers(b.data[2], b.keyword, 2, 3, "E, G[, thermal expansion]");
+  s.general_e = eg[0];
+  s.general_g = eg[1];
+  if (!(s.general_e > 0) || !(s.general_g > 0)) throw InputError(at(b.data[2], b.keyword), "E > 0 and G > 0", "'" + b.data[2].text + "'");
+  sections_.push_back(s);
+}
+
+void Parser::material(const Block& b) {
+  check_params(b.keyword, {"NAME"});
+  current_material_ = upper(required_param(b.keyword, "NAME"));
+  if (materials_.count(current_material_)) throw InputError(b.keyword.where, "a new material name", current_material_ + " again");
+  if (!b.data.empty()) throw InputError(at(b.data[0], b.keyword), "no data lines", "'" + b.data[0].text + "'");
+  RawMaterial m;
+  m.m.name = current_material_;
+  m.where = b.keyword.where;
+  materials_[current_material_] = m;
+}
+
+void Parser::elastic(const Block& b) {
+  check_params(b.keyword, {"TYPE"});
+  if (b.keyword.params.count("TYPE")) {
+    const std::string t = upper(b.keyword.params.at("TYPE"));
+    if (t != "ISO" && t != "ISOTROPIC") throw InputError(b.keyword.where, "TYPE=ISOTROPIC", "TYPE=" + t);
+  }
+  if (current_material_.empty()) throw InputError(b.keyword.where, "a *MATERIAL before *ELASTIC", "none");
+  if (b.data.size() != 1) throw InputError(b.keyword.where, "one data line: E, nu", fmt::format("{} data lines", b.data.size()));
+  const std::vector<double> v = numbers(b.data[0], b.keyword, 2, 3, "E, nu[, temperature]");
+  if (!(v[0] > 0)) throw InputError(at(b.data[0], b.keyword), "Young's modulus E > 0", fmt::format("{}", v[0]));
+  if (!(v[1] > -1.0 && v[1] < 0.5)) throw InputError(at(b.data[0], b.keyword), "Poisson's ratio between -1 and 0.5", fmt::format("{}", v[1]));
+  RawMaterial& m = materials_[current_material_];
+  m.m.youngs_modulus = v[0];
+  m.m.poisson_ratio = v[1];
+  m.has_elastic = true;
+}
+
+void Parser::density(const Block& b) {
+  check_params(b.keyword, {});
+  if (current_material_.empty()) throw InputError(b.keyword.where, "a *MATERIAL before *DENSITY", "none");
+  if (b.data.size() != 1) throw InputError(b.keyword.where, "one data line: density", fmt::format("{} data lines", b.data.size()));
+  const std::vector<double> v = numbers(b.data[0], b.keyword, 1, 2, "density[, temperature]");
+  if (v[0] < 0) throw InputError(at(b.data[0], b.keyword), "a density >= 0", fmt::format("{}", v[0]));
+  RawMaterial& m = materials_[current_material_];
+  m.m.density = v[0];
+  m.has_density = true;
+}
+
+int dof_number(const std::string& s, const InputLocation& where) {
+  const long d = parse_int(s, where, "a degree of freedom 1-6");
+  if (d < 1 || d > 6) throw InputError(where, "a degree of freedom 1-6", s);
+  return static_cast<int>(d);
+}
+
+void Parser::boundary(const Block& b) {
+  check_params(b.keyword, {});
+  for (const Line& l : b.data) {
+    std::vector<std::string> f = split_fields(l.text);
+    RawBoundary r;
+    r.where = at(l, b.keyword);
+    if (f.size() < 2 || f.size() > 4) throw InputError(r.where, "node or set, first DOF[, last DOF[, value]]", "'" + l.text + "'");
+    r.target = f[0];
+    const std::string kind = upper(f[1]);
+    r.value = 0.0;
+    if (kind == "ENCASTRE" || kind == "PINNED") {
+      if (f.size() != 2) throw InputError(r.where, "node or set, " + kind, "'" + l.text + "'");
+      r.first_dof = 1;
+      r.last_dof = kind == "ENCASTRE" ? 6 : 3;
+    } else if (!is_integer(f[1])) {
+      throw InputError(r.where, "a DOF number or ENCASTRE or PINNED", "'" + f[1] + "'");
+    } else {
+      r.first_dof = dof_number(f[1], r.where);
+      r.last_dof = (f.size() >= 3 && !f[2].empty()) ? dof_number(f[2], r.where) : r.first_dof;
+      if (r.last_dof < r.first_dof) throw InputError(r.where, "last DOF >= first DOF", "'" + l.text + "'");
+      if (f.size() == 4 && !f[3].empty()) r.value = parse_double(f[3], r.where, "a prescribed displacement");
+    }
+    boundaries_.push_back(r);
+  }
+}
+
+void Parser::cload(const Block& b) {
+  check_params(b.keyword, {});
+  for (const Line& l : b.data) {
+    std::vector<std::string> f = split_fields(l.text);
+    RawLoad r;
+    r.where = at(l, b.keyword);
+    if (f.size() != 3) throw InputError(r.where, "node or set, DOF, magnitude", "'" + l.text + "'");
+    r.target = f[0];
+    r.dof = dof_number(f[1], r.where);
+    r.value = parse_double(f[2], r.where, "a load magnitude");
+    loads_.push_back(r);
+  }
+}
+
+void Parser::element_property(const Block& b) {
+  check_params(b.keyword, {"ELSET"});
+  RawElementProperty p;
+  p.keyword = b.keyword.name;
+  p.elset = upper(required_param(b.keyword, "ELSET"));
+  p.where = b.keyword.where;
+  if (p.keyword == "*MASS") {
+    if (b.data.size() != 1) throw InputError(b.keyword.where, "one data line: mass", fmt::format("{} data lines", b.data.size()));
+    p.values = numbers(b.data[0], b.keyword, 1, 1, "the mass");
+    if (!(p.values[0] > 0)) throw InputError(at(b.data[0], b.keyword), "a positive mass", b.data[0].text);
+  } else if (p.keyword == "*ROTARY INERTIA") {
+    if (b.data.size() != 1) throw InputError(b.keyword.where, "one data line: I11, I22, I33[, I12, I13, I23]", fmt::format("{} data lines", b.data.size()));
+    p.values = numbers(b.data[0], b.keyword, 3, 6, "I11, I22, I33[, I12, I13, I23]");
+    p.values.resize(6, 0.0);
+  } else {  // *SPRING
+    if (b.data.size() != 2) throw InputError(b.keyword.where, "two data lines: the DOF(s), then the stiffness", fmt::format("{} data lines", b.data.size()));
+    for (const std::string& s : split_fields(b.data[0].text))
+      if (!s.empty()) p.dofs.push_back(dof_number(s, at(b.data[0], b.keyword)));
+    if (p.dofs.empty() || p.dofs.size() > 2) throw InputError(at(b.data[0], b.keyword), "one DOF (SPRING1) or two (SPRING2)", "'" + b.data[0].text + "'");
+    p.values = numbers(b.data[1], b.keyword, 1, 1, "the spring stiffness");
+    if (!(p.values[0] > 0)) throw InputError(at(b.data[1], b.keyword), "a positive stiffness", b.data[1].text);
+  }
+  properties_.push_back(p);
+}
+
+void Parser::step_keyword(const Block& b) {
+  const std::string& k = b.keyword.name;
+  if (k == "*STEP") {
+    check_params(b.keyword, {"NAME", "PERTURBATION"});
+    if (in_step_) throw InputError(b.keyword.where, "*END STEP before the next *STEP", "*STEP");
+    if (++steps_ > 1) throw InputError(b.keyword.where, "one analysis step (framedyn reads a single step)", "a second *STEP");
+    in_step_ = true;
+  } else if (k == "*END STEP") {
+    check_params(b.keyword, {});
+    if (!in_step_) throw InputError(b.keyword.where, "a *STEP before *END STEP", "*END STEP");
+    in_step_ = false;
+  } else if (k == "*FREQUENCY") {
+    check_params(b.keyword, {"SOLVER", "STORAGE"});
+    if (!in_step_) throw InputError(b.keyword.where, "*FREQUENCY inside a *STEP", "it outside");
+    if (!b.data.empty()) {
+      const std::vector<std::string> f = split_fields(b.data[0].text);
+      const long n = parse_int(f[0], at(b.data[0], b.keyword), "the number of eigenvalues");
+      if (n < 1) throw InputError(at(b.data[0], b.keyword), "at least 1 eigenvalue", f[0]);
+      frequency_count_ = static_cast<int>(n);
+    }
+  } else if (k == "*STATIC") {
+    check_params(b.keyword, {"SOLVER"});
+    if (!in_step_) throw InputError(b.keyword.where, "*STATIC inside a *STEP", "it outside");
+  }
+  // Output requests (*NODE PRINT, *EL PRINT, ...) are CalculiX's business: skipped.
+}
+
+FrameModel Parser::run(const InpReadOptions& options) {
+  const std::vector<Block> blocks = make_blocks(src_.lines);
+  for (const Block& b : blocks) {
+    const std::string& k = b.keyword.name;
+    if (k == "*HEADING") continue;
+    if (k == "*NODE") node(b);
+    else if (k == "*ELEMENT") element(b);
+    else if (k == "*NSET") set(b, true);
+    else if (k == "*ELSET") set(b, false);
+    else if (k == "*BEAM SECTION") beam_section(b);
+    else if (k == "*BEAM GENERAL SECTION") general_beam_section(b);
+    else if (k == "*MATERIAL") material(b);
+    else if (k == "*ELASTIC") elastic(b);
+    else if (k == "*DENSITY") density(b);
+    else if (k == "*BOUNDARY") boundary(b);
+    else if (k == "*CLOAD") cload(b);
+    else if (k == "*MASS" || k == "*ROTARY INERTIA" || k == "*SPRING") element_property(b);
+    else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
+    else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
+             k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
+    else
+      throw InputError(b.keyword.where,
+                       "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
+                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *MASS, *ROTARY INERTIA, *SPRING, *INCLUDE, "
+                       "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
+                       k);
+    if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
+  }
+  if (in_step_) throw InputError({src_.lines.empty() ? "" : src_.lines.back().file, 0, "*STEP"}, "*END STEP at the end of the step", "end of file");
+
+  // Unit system: the caller's, or the file's "** units:" comment.
+  std::string units_name;
+  InputLocation units_where = src_.units_where;
+  if (options.units && src_.units_comment && core::UnitSystem::from_name(*options.units).name() != core::UnitSystem::from_name(*src_.units_comment).name())
+    throw InputError(src_.units_where, "the unit system given on the command line (" + *options.units + ")", *src_.units_comment);
+  if (options.units) {
+    units_name = *options.units;
+    units_where = {"", 0, "--units"};
+  } else if (src_.units_comment) {
+    units_name = *src_.units_comment;
+  } else {
+    throw InputError({src_.lines.empty() ? "" : src_.lines.front().file, 0, "units"},
+                     "a unit system: --units in-lbf-s|m-N-s|mm-N-s, or a line '** units: NAME' in the mesh (the .inp format has no units)",
+                     "neither");
+  }
+  core::UnitSystem units;
+  try {
+    units = core::UnitSystem::from_name(units_name);
+  } catch (const std::invalid_argument&) {
+    throw InputError(units_where, "in-lbf-s, m-N-s (or SI) or mm-N-s", "'" + units_name + "'");
+  }
+  return build(units);
+}
+
+FrameModel Parser::build(const core::UnitSystem& units) {
+  FrameModel model;
+  model.units = units;
+  model.requested_modes = frequency_count_;
+  const double L = units.to_si_factor(Quantity::length);
+  model.nodes.reserve(nodes_.size());
+  for (const auto& [id, x] : nodes_) model.nodes.push_back({id, x * L});
+  model.index();
+  auto node_of = [&](int id, const InputLocation& where) {
+    const int i = model.node_index(id);
+    if (i < 0) throw InputError(where, "a node defined by *NODE", fmt::format("node {}", id));
+    return i;
+  };
+
+  // Sets: keep names; check that members exist.
+  for (const auto& [name, ids] : nsets_) {
+    std::vector<int> idx;
+    idx.reserve(ids.size());
+    for (int id : ids) idx.push_back(node_of(id, {"", 0, "*NSET " + name}));
+    std::sort(idx.begin(), idx.end());
+    idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
+    model.node_sets[name] = idx;
+  }
+  for (const auto& [name, ids] : elsets_) {
+    for (int id : ids)
+      if (!element_index_.count(id)) throw InputError({"", 0, "*ELSET " + name}, "elements defined by *ELEMENT", fmt::format("element {}", id));
+    std::vector<int> sorted = ids;
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    model.element_sets[name] = sorted;
+  }
+
+  // Elements.
+  std::map<int, std::size_t> beam_of_element;
+  for (const RawElement& e : elements_) {
+    std::vector<int> idx;
+    for (int id : e.node_ids) idx.push_back(node_of(id, e.where));
+    if (e.type == "B31" || e.type == "B33") {
+      BeamElement b;
+      b.id = e.id;
+      b.node_a = idx[0];
+      b.node_b = idx[1];
+      b.theory = e.type == "B31" ? BeamTheory::timoshenko : BeamTheory::euler_bernoulli;
+      if ((model.nodes[static_cast<std::size_t>(idx[0])].position - model.nodes[static_cast<std::size_t>(idx[1])].position).norm() == 0.0)
+        throw InputError(e.where, "an element of nonzero length", fmt::format("element {}: nodes {} and {} at the same point", e.id, e.node_ids[0], e.node_ids[1]));
+      beam_of_element[e.id] = model.beams.size();
+      model.beams.push_back(b);
+    }
+  }
+  model.index();
+
+  // Sections.
+  for (const RawSection& s : sections_) {
+    auto set_it = elsets_.find(s.elset);
+    if (set_it == elsets_.end()) throw InputError(s.where, "ELSET naming a defined element set", s.elset);
+    SectionAssignment sa;
+    sa.element_set = s.elset;
+    sa.n1_direction = s.n1;
+    if (s.general) {
+      sa.material.name = "(general section)";
+      sa.material.youngs_modulus = units.to_si(s.general_e, Quantity::stress);
+      sa.material.shear_modulus = units.to_si(s.general_g, Quantity::stress);
+      sa.material.density = units.to_si(s.general_density, Quantity::density);
+    } else {
+      auto m = materials_.find(s.material);
+      if (m == materials_.end()) throw InputError(s.where, "MATERIAL naming a defined *MATERIAL", s.material);
+      if (!m->second.has_elastic) throw InputError(m->second.where, "an *ELASTIC definition for material " + s.material, "none");
+      sa.material = m->second.m;
+      sa.material.youngs_modulus = units.to_si(sa.material.youngs_modulus, Quantity::stress);
+      sa.material.shear_modulus = sa.material.youngs_modulus / (2.0 * (1.0 + sa.material.poisson_ratio));
+      sa.material.density = units.to_si(sa.material.density, Quantity::density);
+    }
+    try {
+      const double l = L, l2 = L * L, l4 = l2 * l2;
+      const std::vector<double>& d = s.dims;
+      const double nu = sa.material.poisson_ratio;
+      if (s.shape == "RECT") sa.properties = rectangle_section(d[0] * l, d[1] * l, nu);
+      else if (s.shape == "BOX") sa.properties = box_section(d[0] * l, d[1] * l, d[2] * l, d[3] * l, d[4] * l, d[5] * l);
+      else if (s.shape == "PIPE") sa.properties = pipe_section(d[0] * l, d[1] * l, nu);
+      else if (s.shape == "CIRC") sa.properties = circle_section(d[0] * l, nu);
+      else if (s.shape == "I") sa.properties = i_section(d[1] * l, d[2] * l, d[3] * l, d[4] * l, d[5] * l, d[6] * l);
+      else if (s.shape == "CHANNEL") sa.properties = channel_section(d[0] * l, d[1] * l, d[2] * l, d[3] * l);
+      else sa.properties = fem::general_section(d[0] * l2, d[1] * l4, d[2] * l4, d[3] * l4, d[4] * l4);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(s.where, "a valid " + s.shape + " section", e.what());
+    }
+    const int index = static_cast<int>(model.sections.size());
+    model.sections.push_back(sa);
+    for (int id : set_it->second) {
+      auto b = beam_of_element.find(id);
+      if (b == beam_of_element.end())
+        throw InputError(s.where, "beam elements (B31, B33) in ELSET " + s.elset, fmt::format("element {} of type {}", id, elements_[element_index_[id]].type));
+      BeamElement& beam = model.beams[b->second];
+      if (beam.section >= 0 && beam.section != index)
+        throw InputError(s.where, fmt::format("one section per element"), fmt::format("element {} already has the section of ELSET {}", id, model.sections[static_cast<std::size_t>(beam.section)].element_set));
+      beam.section = index;
+    }
+  }
+  for (const BeamElement& b : model.beams) {
+    if (b.section < 0)
+      throw InputError(elements_[element_index_[b.id]].where, "a *BEAM SECTION for every beam element", fmt::format("element {} has none", b.id));
+    try {
+      beam_geometry(model, b);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(elements_[element_index_[b.id]].where, "a valid beam orientation", fmt::format("element {}: {}", b.id, e.what()));
+    }
+  }
+
+  // Point masses, rotary inertia, springs.
+  std::map<int, std::size_t> point_mass_of_node;
+  auto point_mass_at = [&](int node, int element_id) -> PointMass& {
+    auto it = point_mass_of_node.find(node);
+    if (it != point_mass_of_node.end()) return model.point_masses[it->second];
+    PointMass pm;
+    pm.node = node;
+    pm.element_id = element_id;
+    point_mass_of_node[node] = model.point_masses.size();
+    model.point_masses.push_back(pm);
+    return model.point_masses.back();
+  };
+  std::set<int> has_property;
+  for (const RawElementProperty& p : properties_) {
+    auto set_it = elsets_.find(p.elset);
+    if (set_it == elsets_.end()) throw InputError(p.where, "ELSET naming a defined element set", p.elset);
+    const std::string want = p.keyword == "*MASS" ? "MASS" : p.keyword == "*ROTARY INERTIA" ? "ROTARYI" : "SPRING";
+    for (int id : set_it->second) {
+      const RawElement& e = elements_[element_index_[id]];
+      if (e.type.rfind(want, 0) != 0)
+        throw InputError(p.where, want + " elements in ELSET " + p.elset, fmt::format("element {} of type {}", id, e.type));
+      if (!has_property.insert(id).second) throw InputError(p.where, "one property per element", fmt::format("element {} twice", id));
+      const int n0 = model.node_index(e.node_ids[0]);
+      if (p.keyword == "*MASS") {
+        point_mass_at(n0, id).mass += units.to_si(p.values[0], Quantity::mass);
+      } else if (p.keyword == "*ROTARY INERTIA") {
+        const double f = units.to_si_factor(Quantity::rotary_inertia);
+        Eigen::Matrix3d j;
+        j << p.values[0], p.values[3], p.values[4], p.values[3], p.values[1], p.values[5], p.values[4], p.values[5], p.values[2];
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(j);
+        if (es.eigenvalues().minCoeff() < 0) throw InputError(p.where, "a positive semi-definite rotary inertia", "a negative principal value");
+        point_mass_at(n0, id).rotary_inertia += j * f;
+      } else {
+        Spring s;
+        s.element_id = id;
+        s.node_a = n0;
+        s.dof_a = p.dofs[0] - 1;
+        if (e.type == "SPRING2") {
+          if (p.dofs.size() != 2) throw InputError(p.where, "two DOFs for SPRING2 elements", fmt::format("{}", p.dofs.size()));
+          s.node_b = model.node_index(e.node_ids[1]);
+          s.dof_b = p.dofs[1] - 1;
+          if ((s.dof_a < 3) != (s.dof_b < 3)) throw InputError(p.where, "two translations or two rotations", "a translation and a rotation");
+        } else if (p.dofs.size() != 1) {
+          throw InputError(p.where, "one DOF for SPRING1 elements", fmt::format("{}", p.dofs.size()));
+        }
+        s.stiffness = units.to_si(p.values[0], s.dof_a < 3 ? Quantity::translational_stiffness : Quantity::rotational_stiffness);
+        model.springs.push_back(s);
+      }
+    }
+  }
+  for (const RawElement& e : elements_)
+    if (e.type != "B31" && e.type != "B33" && !has_property.count(e.id))
+      throw InputError(e.where, "a *MASS, *ROTARY INERTIA or *SPRING for element " + std::to_string(e.id) + " of type " + e.type, "none");
+
+  // Supports and loads.
+  auto targets = [&](const std::string& t, const InputLocation& where) {
+    if (is_integer(t)) return std::vector<int>{node_of(static_cast<int>(parse_int(t, where, "node")), where)};
+    auto it = model.node_sets.find(upper(t));
+    if (it == model.node_sets.end()) throw InputError(where, "a node number or a defined *NSET", "'" + t + "'");
+    return it->second;
+  };
+  for (const RawBoundary& b : boundaries_)
+    for (int n : targets(b.target, b.where))
+      for (int d = b.first_dof; d <= b.last_dof; ++d)
+        model.constraints.push_back({n, d - 1, units.to_si(b.value, d <= 3 ? Quantity::length : Quantity::angle)});
+  for (const RawLoad& l : loads_)
+    for (int n : targets(l.target, l.where))
+      model.loads.push_back({n, l.dof - 1, units.to_si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment)});
+  if (model.beams.empty() && model.nodes.empty())
+    throw InputError({src_.lines.empty() ? "" : src_.lines.front().file, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
+  return model;
+}
+
+}  // namespace
+
+FrameModel read_inp_text(const std::string& text, const std::string& name, const fs::path& base_dir, const InpReadOptions& options) {
+  TextSource src;
+  std::vector<std::string> stack;
+  load_lines(text, name, base_dir, src, stack);
+  return Parser(src).run(options);
+}
+
+FrameModel read_inp(const fs::path& path, const InpReadOptions& options) {
+  TextSource src;
+  std::vector<std::string> stack;
+  load_file(path, {path.string(), 0, ""}, src, stack);
+  return Parser(src).run(options);
+}
+
+}  // namespace framedyn::fem

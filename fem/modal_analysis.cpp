@@ -1,0 +1,212 @@
+// Shift-invert Lanczos (Spectra) on a CHOLMOD factorisation; see modal_analysis.h.
+#include "fem/modal_analysis.h"
+
+#include <Eigen/SparseCholesky>
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymGEigsShiftSolver.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.h"
+#include "fem/sparse_cholesky.h"
+
+namespace framedyn::fem {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+bool factorize(SparseCholesky& s, const SparseMatrix& a) { return s.factorize(a); }
+bool factorize(Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const SparseMatrix& a) {
+  s.compute(a);
+  return s.info() == Eigen::Success;
+}
+Eigen::VectorXd solve(const SparseCholesky& s, const Eigen::Map<const Eigen::VectorXd>& b) { return s.solve(b); }
+Eigen::VectorXd solve(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::Map<const Eigen::VectorXd>& b) {
+  return s.solve(b);
+}
+
+// y = (K - sigma M)^{-1} x, the operator Spectra iterates with.
+template <class Solver>
+class ShiftInvertOperator {
+ public:
+  using Scalar = double;
+  ShiftInvertOperator(const SparseMatrix& k, const SparseMatrix& m, Solver& solver)
+      : k_(k), m_(m), solver_(solver) {}
+  Eigen::Index rows() const { return k_.rows(); }
+  Eigen::Index cols() const { return k_.cols(); }
+  void set_shift(const Scalar& sigma) {
+    const SparseMatrix a = (k_ - sigma * m_).pruned();
+    if (!factorize(solver_, a))
+      throw core::NumericalError(
+          "the factorisation of K - sigma M failed: the stiffness matrix is not positive semi-definite "
+          "or the mass matrix is not positive definite (check for a massless degree of freedom, a negative "
+          "stiffness or density)");
+  }
+  void perform_op(const Scalar* x, Scalar* y) const {
+    Eigen::Map<const Eigen::VectorXd> in(x, k_.rows());
+    Eigen::Map<Eigen::VectorXd> out(y, k_.rows());
+    out = solve(solver_, in);
+    ++solves_;
+  }
+  int solves() const { return solves_; }
+
+ private:
+  const SparseMatrix& k_;
+  const SparseMatrix& m_;
+  Solver& solver_;
+  mutable int solves_ = 0;
+};
+
+template <class Solver>
+EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatrix& m, const EigenOptions& o) {
+  const Eigen::Index n = k.rows();
+  const Eigen::Index nev = std::min<Eigen::Index>(o.count, n - 1);
+  const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+  using Op = ShiftInvertOperator<Solver>;
+  using BOp = Spectra::SparseSymMatProd<double, Eigen::Lower>;
+  Op op(k, m, solver);
+  BOp bop(m);
+  if (o.progress) o.progress(fmt::format("factorising K - sigma M ({} equations)", n));
+  Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv, o.shift);
+  if (o.progress) o.progress(fmt::format("Lanczos iteration for {} modes (subspace {})", nev, ncv));
+  eigs.init();
+  const Eigen::Index converged =
+      eigs.compute(Spectra::SortRule::LargestMagn, o.max_iterations, o.tolerance, Spectra::SortRule::SmallestAlge);
+  if (eigs.info() != Spectra::CompInfo::Successful)
+    throw core::NumericalError(fmt::format(
+        "the eigensolver did not converge: {} of {} modes after {} restarts; try fewer modes, a shift "
+        "nearer the wanted frequencies (--shift), or check the model for near-duplicate frequencies",
+        converged, nev, eigs.num_iterations()));
+  EigenSolution s;
+  Eigen::VectorXd values = eigs.eigenvalues();
+  Eigen::MatrixXd vectors = eigs.eigenvectors();
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(values.size()));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return values(a) < values(b); });
+  s.eigenvalues.resize(values.size());
+  s.vectors.resize(n, values.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    s.eigenvalues(static_cast<Eigen::Index>(i)) = values(order[i]);
+    Eigen::VectorXd v = vectors.col(order[i]);
+    // Deterministic sign: the largest component positive.
+    Eigen::Index imax = 0;
+    v.cwiseAbs().maxCoeff(&imax);
+    if (v(imax) < 0) v = -v;
+    s.vectors.col(static_cast<Eigen::Index>(i)) = v;
+  }
+  s.iterations = static_cast<int>(eigs.num_iterations());
+  s.operator_solves = op.solves();
+  return s;
+}
+
+}  // namespace
+
+EigenSolution lowest_eigenpairs(const SparseMatrix& k, const SparseMatrix& m, const EigenOptions& o) {
+  if (!(o.shift < 0.0)) throw std::invalid_argument("the shift must be negative");
+  if (k.rows() < 2) throw std::invalid_argument("the model has fewer than two free degrees of freedom");
+  if (o.factorization == Factorization::cholmod) {
+    // sigma < 0 and M > 0 make K - sigma M positive definite: supernodal LL^T is safe.
+    SparseCholesky solver;
+    return solve_with(solver, k, m, o);
+  }
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> solver;
+  return solve_with(solver, k, m, o);
+}
+
+namespace {
+
+// Largest K_ii / M_ii: the scale of the model's highest element frequencies,
+// against which "zero" eigenvalues are judged.
+double eigenvalue_scale(const SparseMatrix& k, const SparseMatrix& m) {
+  const Eigen::VectorXd kd = k.diagonal(), md = m.diagonal();
+  double s = 0.0;
+  for (Eigen::Index i = 0; i < kd.size(); ++i)
+    if (md(i) > 0.0) s = std::max(s, kd(i) / md(i));
+  return s;
+}
+
+std::string largest_motion_nodes(const FrameModel& model, const DofMap& dofs, const Eigen::VectorXd& shape) {
+  std::vector<std::pair<double, int>> amp(model.nodes.size(), {0.0, 0});
+  for (std::size_t i = 0; i < model.nodes.size(); ++i) amp[i].second = model.nodes[i].id;
+  for (int e = 0; e < dofs.free_count(); ++e) {
+    const int g = dofs.free_dofs[static_cast<std::size_t>(e)];
+    amp[static_cast<std::size_t>(g / kDofsPerNode)].first += shape(e) * shape(e);
+  }
+  std::stable_sort(amp.begin(), amp.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  std::string out;
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, amp.size()); ++i) out += (i ? ", " : "") + std::to_string(amp[i].second);
+  return out;
+}
+
+}  // namespace
+
+ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) {
+  if (options.mode_count < 1) throw std::invalid_argument("the number of modes must be at least 1");
+  const DofMap dofs = make_dof_map(model);
+  if (options.progress) options.progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), dofs.free_count()));
+  FreeSystem sys = assemble(model, dofs, {options.mass, Storage::lower});
+
+  const std::vector<int> massless = massless_dofs(model, dofs, sys.mass);
+  if (!massless.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < std::min<std::size_t>(6, massless.size()); ++i) list += (i ? ", " : "") + model.describe_dof(massless[i]);
+    throw core::NumericalError(fmt::format(
+        "{} degree(s) of freedom have no mass, e.g. {}: the mass matrix is singular. Give the elements "
+        "there a density (*DENSITY) or add a point mass, or fix those DOFs", massless.size(), list));
+  }
+  if (options.mode_count >= dofs.free_count())
+    throw std::invalid_argument(fmt::format("{} modes asked for but the model has only {} free DOFs", options.mode_count, dofs.free_count()));
+
+  EigenOptions eo;
+  eo.count = options.mode_count;
+  eo.shift = -std::pow(kTwoPi * options.shift_hz, 2);
+  eo.factorization = options.factorization;
+  eo.progress = options.progress;
+  EigenSolution es = lowest_eigenpairs(sys.stiffness, sys.mass, eo);
+
+  ModalResult result;
+  result.free_dofs = dofs.free_count();
+  result.iterations = es.iterations;
+  result.operator_solves = es.operator_solves;
+  bool grounded = !model.constraints.empty();
+  for (const Spring& s : model.springs) grounded = grounded || s.node_b < 0;
+  result.rigid_body_modes_expected = grounded ? 0 : 6;
+
+  // Rigid-body vectors restricted to the free DOFs.
+  const Eigen::MatrixXd r_all = rigid_body_vectors(model, options.reference_point);
+  Eigen::MatrixXd r(dofs.free_count(), 6);
+  for (int e = 0; e < dofs.free_count(); ++e) r.row(e) = r_all.row(dofs.free_dofs[static_cast<std::size_t>(e)]);
+  const Eigen::MatrixXd mr = sys.mass.selfadjointView<Eigen::Lower>() * r;
+  result.total_mass = (r.transpose() * mr).diagonal();
+
+  const double zero_level = 1e-8 * eigenvalue_scale(sys.stiffness, sys.mass);
+  result.shapes = Eigen::MatrixXd::Zero(model.dof_count(), es.eigenvalues.size());
+  int near_zero = 0;
+  for (Eigen::Index i = 0; i < es.eigenvalues.size(); ++i) {
+    Mode mode;
+    mode.eigenvalue = es.eigenvalues(i);
+    const Eigen::VectorXd phi = es.vectors.col(i);
+    const bool zero = std::abs(mode.eigenvalue) <= zero_level;
+    if (zero) ++near_zero;
+    mode.rigid_body = zero && near_zero <= result.rigid_body_modes_expected;
+    mode.frequency_hz = mode.rigid_body ? 0.0 : std::sqrt(std::max(mode.eigenvalue, 0.0)) / kTwoPi;
+    mode.participation = mr.transpose() * phi;
+    mode.effective_mass = mode.participation.cwiseProduct(mode.participation);
+    for (int e = 0; e < dofs.free_count(); ++e) result.shapes(dofs.free_dofs[static_cast<std::size_t>(e)], i) = phi(e);
+    if (zero && !mode.rigid_body)
+      throw core::NumericalError(fmt::format(
+          "mechanism: mode {} has zero frequency ({:.3g} Hz) but is not a rigid-body motion of a {} frame; "
+          "part of the frame can move without straining. The motion is largest at nodes {}. Check the "
+          "supports (*BOUNDARY), disconnected parts and elements that share no node",
+          i + 1, std::sqrt(std::max(mode.eigenvalue, 0.0)) / kTwoPi, grounded ? "supported" : "free-free",
+          largest_motion_nodes(model, dofs, phi)));
+    result.modes.push_back(mode);
+  }
+  return result;
+}
+
+}  // namespace framedyn::fem

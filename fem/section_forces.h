@@ -1,0 +1,45 @@
+// Section forces along beam elements and fiber normal stresses.
+//
+// Section forces act on the positive face of a cut (outward normal +t) in the
+// element's local axes: N along t, Vy along n1, Vz along n2, T about t, My
+// about n1, Mz about n2 (Abaqus SF1, SF2, SF3, SM3, SM1, SM2 in other names).
+// From the element end forces f = k u (no loads between the nodes), a cut at
+// distance x from node a carries N = -Fa_x, V = -Fa, T = -Ma_x,
+// My = -Ma_y - x Fa_z, Mz = -Ma_z + x Fa_y.
+// Fiber stress at (x1, x2): sigma = N/A + My x2 / I11 - Mz x1 / I22.
+// Theory: docs/theory/fem.md, "Recovery".
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+#include "fem/beam_element.h"
+#include "fem/frame_model.h"
+
+namespace framedyn::fem {
+
+struct SectionForces {
+  double n = 0.0, vy = 0.0, vz = 0.0;  // N
+  double t = 0.0, my = 0.0, mz = 0.0;  // N m
+};
+
+// Local end forces k_local T u_e of an element: forces the nodes exert on the element.
+Vector12d element_end_forces(const BeamGeometry& geometry, const BeamElement& beam, const Eigen::VectorXd& u);
+SectionForces section_forces_at(const Vector12d& local_end_forces, double x);
+// Stress at each of the section's stress points (Pa).
+std::vector<double> fiber_stresses(const SectionProperties& section, const SectionForces& f);
+
+struct StationResult {
+  int element_id = 0;
+  int station = 0;               // 0 .. stations-1, from node a to node b
+  double x = 0.0;                // distance from node a, m
+  Eigen::Vector3d point;         // global position, m
+  SectionForces forces;
+  std::vector<double> fiber_stress;  // Pa, one per section stress point
+};
+
+// Section forces at `stations` evenly spaced points (>= 2, ends included) of every beam.
+std::vector<StationResult> recover_stations(const FrameModel& model, const Eigen::VectorXd& u, int stations);
+
+}  // namespace framedyn::fem

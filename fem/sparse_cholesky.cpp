@@ -1,0 +1,88 @@
+// CHOLMOD behind a narrow interface (see sparse_cholesky.h).
+#include "fem/sparse_cholesky.h"
+
+#include <cholmod.h>
+
+#include <cstring>
+#include <stdexcept>
+
+namespace framedyn::fem {
+
+struct SparseCholesky::Impl {
+  mutable cholmod_common common;
+  cholmod_factor* factor = nullptr;
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // CHOLMOD would print warnings on stdout
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.final_ll = 1;
+  }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+};
+
+SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::~SparseCholesky() = default;
+
+bool SparseCholesky::factorize(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower) {
+  if (!lower.isCompressed()) throw std::invalid_argument("SparseCholesky: matrix must be compressed");
+  cholmod_sparse a{};
+  a.nrow = static_cast<size_t>(lower.rows());
+  a.ncol = static_cast<size_t>(lower.cols());
+  a.nzmax = static_cast<size_t>(lower.nonZeros());
+  a.p = const_cast<int*>(lower.outerIndexPtr());
+  a.i = const_cast<int*>(lower.innerIndexPtr());
+  a.x = const_cast<double*>(lower.valuePtr());
+  a.stype = -1;  // lower triangle stored
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  cholmod_common& c = impl_->common;
+  if (impl_->factor) cholmod_free_factor(&impl_->factor, &c);
+  impl_->factor = cholmod_analyze(&a, &c);
+  if (!impl_->factor) throw std::runtime_error("CHOLMOD analysis failed (out of memory?)");
+  cholmod_factorize(&a, impl_->factor, &c);
+  size_ = lower.rows();
+  failed_equation_ = -1;
+  if (c.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n) {
+    const size_t minor = impl_->factor->minor;
+    const int* perm = static_cast<const int*>(impl_->factor->Perm);
+    failed_equation_ = (perm && minor < impl_->factor->n) ? perm[minor] : static_cast<int>(minor);
+    return false;
+  }
+  if (c.status < CHOLMOD_OK) throw std::runtime_error("CHOLMOD factorisation failed (out of memory?)");
+  return true;
+}
+
+double SparseCholesky::reciprocal_condition() const {
+  if (!impl_->factor) return 0.0;
+  return cholmod_rcond(impl_->factor, &impl_->common);
+}
+
+void SparseCholesky::solve_in_place(const double* b, double* x) const {
+  cholmod_dense rhs{};
+  rhs.nrow = static_cast<size_t>(size_);
+  rhs.ncol = 1;
+  rhs.nzmax = static_cast<size_t>(size_);
+  rhs.d = static_cast<size_t>(size_);
+  rhs.x = const_cast<double*>(b);
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* sol = cholmod_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
+  if (!sol) throw std::runtime_error("CHOLMOD solve failed");
+  std::memcpy(x, sol->x, sizeof(double) * static_cast<size_t>(size_));
+  cholmod_free_dense(&sol, &impl_->common);
+}
+
+Eigen::VectorXd SparseCholesky::solve(const Eigen::Ref<const Eigen::VectorXd>& b) const {
+  Eigen::VectorXd x(b.size());
+  Eigen::VectorXd copy = b;  // CHOLMOD needs contiguous memory it may read as non-const
+  solve_in_place(copy.data(), x.data());
+  return x;
+}
+
+}  // namespace framedyn::fem

@@ -1,0 +1,39 @@
+// Sparse Cholesky factorisation of a symmetric positive definite matrix
+// given by its lower triangle, on CHOLMOD (supernodal LL^T, fill-reducing
+// ordering). Kept behind this small class so that only one source file sees
+// CHOLMOD, and so that a failed factorisation can say which equation failed.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <memory>
+
+namespace framedyn::fem {
+
+class SparseCholesky {
+ public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  // Factorises A (lower triangle of a compressed column-major matrix).
+  // Returns false if A is not positive definite; then failed_equation()
+  // names the (original) equation at which the factorisation stopped.
+  bool factorize(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower);
+  int failed_equation() const { return failed_equation_; }
+  // min(diag L)^2 / max(diag L)^2: CHOLMOD's cheap reciprocal condition estimate.
+  double reciprocal_condition() const;
+  Eigen::VectorXd solve(const Eigen::Ref<const Eigen::VectorXd>& b) const;
+  void solve_in_place(const double* b, double* x) const;
+  Eigen::Index size() const { return size_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int failed_equation_ = -1;
+  Eigen::Index size_ = 0;
+};
+
+}  // namespace framedyn::fem

@@ -1,0 +1,100 @@
+// Static solve and reactions; mechanism diagnosis by the stiffness matrix's null space.
+#include "fem/static_analysis.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "fem/assembly.h"
+#include "fem/modal_analysis.h"
+#include "fem/sparse_cholesky.h"
+
+namespace framedyn::fem {
+
+namespace {
+
+// Names the nodes that move in the near-null space of K_ff: the lowest
+// eigenvectors of K x = lambda x (identity mass).
+std::string describe_mechanism(const FrameModel& model, const DofMap& dofs, const SparseMatrix& k) {
+  const int n = dofs.free_count();
+  SparseMatrix identity(n, n);
+  identity.setIdentity();
+  const double scale = k.diagonal().cwiseAbs().maxCoeff();
+  EigenOptions o;
+  o.count = std::min(6, n - 1);
+  o.shift = -1e-6 * scale;
+  try {
+    const EigenSolution es = lowest_eigenpairs(k, identity, o);
+    std::string out;
+    int mechanisms = 0;
+    for (Eigen::Index i = 0; i < es.eigenvalues.size(); ++i) {
+      if (es.eigenvalues(i) > 1e-9 * scale) continue;
+      ++mechanisms;
+      // The DOFs with the largest motion in this null vector.
+      const Eigen::VectorXd v = es.vectors.col(i).cwiseAbs();
+      std::vector<int> order(static_cast<std::size_t>(n));
+      for (int j = 0; j < n; ++j) order[static_cast<std::size_t>(j)] = j;
+      std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return v(a) > v(b); });
+      std::string list;
+      for (int j = 0; j < std::min(4, n); ++j)
+        list += (j ? ", " : "") + model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(order[static_cast<std::size_t>(j)])]);
+      out += fmt::format("\n  free motion {}: largest at {}", mechanisms, list);
+    }
+    if (mechanisms == 0) return "";
+    return fmt::format("{} independent free motion(s):{}", mechanisms, out);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+}  // namespace
+
+StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress) {
+  const DofMap dofs = make_dof_map(model);
+  const int ndof = model.dof_count();
+  StaticResult r;
+  r.applied = Eigen::VectorXd::Zero(ndof);
+  for (const NodalLoad& l : model.loads) r.applied(kDofsPerNode * l.node + l.dof) += l.value;
+  Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
+  for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
+
+  if (progress) progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), dofs.free_count()));
+  const SparseMatrix k = assemble(model, dofs, {MassFormulation::consistent, Storage::lower}).stiffness;
+
+  // f_f - K_fc u_c, with K u_c computed element by element.
+  const Eigen::VectorXd k_uc = internal_force(model, prescribed);
+  Eigen::VectorXd rhs(dofs.free_count());
+  for (int e = 0; e < dofs.free_count(); ++e) {
+    const int g = dofs.free_dofs[static_cast<std::size_t>(e)];
+    rhs(e) = r.applied(g) - k_uc(g);
+  }
+
+  if (progress) progress(fmt::format("factorising K ({} equations)", dofs.free_count()));
+  SparseCholesky chol;
+  const bool ok = dofs.free_count() > 0 && chol.factorize(k);
+  const double rcond = ok ? chol.reciprocal_condition() : 0.0;
+  if (!ok || rcond < 1e-12) {
+    std::string where = describe_mechanism(model, dofs, k);
+    if (where.empty() && !ok && chol.failed_equation() >= 0)
+      where = "the factorisation stopped at " + model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(chol.failed_equation())]);
+    throw core::NumericalError(fmt::format(
+        "the stiffness matrix is singular{}: the frame is a mechanism or is not supported against every "
+        "rigid-body motion. {}\nAdd supports (*BOUNDARY) or springs, or connect the parts that are loose.",
+        ok ? fmt::format(" to working precision (rcond {:.2g})", rcond) : "",
+        where.empty() ? std::string("") : where));
+  }
+  const Eigen::VectorXd uf = chol.solve(rhs);
+  const Eigen::VectorXd residual = k.selfadjointView<Eigen::Lower>() * uf - rhs;
+  r.relative_residual = rhs.norm() > 0 ? residual.norm() / rhs.norm() : residual.norm();
+
+  r.displacement = prescribed;
+  for (int e = 0; e < dofs.free_count(); ++e) r.displacement(dofs.free_dofs[static_cast<std::size_t>(e)]) = uf(e);
+  const Eigen::VectorXd ku = internal_force(model, r.displacement);
+  r.reaction = Eigen::VectorXd::Zero(ndof);
+  for (int g : dofs.constrained_dofs) r.reaction(g) = ku(g) - r.applied(g);
+  return r;
+}
+
+}  // namespace framedyn::fem

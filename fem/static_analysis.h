@@ -1,0 +1,25 @@
+// Linear static solve under nodal loads and prescribed displacements:
+// K_ff u_f = f_f - K_fc u_c on a CHOLMOD factorisation, then reactions
+// R = K u - f at the constrained DOFs. A singular stiffness (a mechanism,
+// a frame without supports) is reported with the nodes that can move freely.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <functional>
+#include <string>
+
+#include "fem/frame_model.h"
+
+namespace framedyn::fem {
+
+struct StaticResult {
+  Eigen::VectorXd displacement;  // all DOFs (m, rad)
+  Eigen::VectorXd applied;       // nodal loads on all DOFs (N, N m)
+  Eigen::VectorXd reaction;      // all DOFs; nonzero only at constrained DOFs (N, N m)
+  double relative_residual = 0.0;  // ||K_ff u_f - f_f|| / ||f_f||
+};
+
+StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace framedyn::fem
