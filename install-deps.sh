@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs everything framedyn needs from Debian 12's packages (and nothing
+# else): the compiler and CMake, the numerical libraries, the test framework,
+# and CalculiX (ccx), the peer FE code the tests compare the beam model with.
+set -euo pipefail
+packages=(
+  g++ make cmake pkg-config
+  libeigen3-dev libspectra-dev libsuitesparse-dev libsundials-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libgtest-dev libbenchmark-dev
+  calculix-ccx
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
