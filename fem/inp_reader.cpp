@@ -109,6 +109,7 @@ Keyword parse_keyword_line(const std::string& text, const InputLocation& where) 
 }
 
 struct TextSource {
+  std::string name;  // the top-level file, for messages that have no line
   std::vector<Line> lines;
   std::optional<std::string> units_comment;
   InputLocation units_where;
@@ -322,6 +323,7 @@ class Parser {
   std::vector<RawElement> elements_;
   std::map<int, std::size_t> element_index_;
   std::map<std::string, std::vector<int>> nsets_, elsets_;
+  std::map<std::string, std::vector<InputLocation>> nset_where_, elset_where_;  // parallel to nsets_, elsets_
   std::vector<RawSection> sections_;
   std::map<std::string, RawMaterial> materials_;
   std::string current_material_;
@@ -331,6 +333,7 @@ class Parser {
   std::optional<int> frequency_count_;
   bool in_step_ = false;
   int steps_ = 0;
+  InputLocation step_where_;
 
   void node(const Block& b);
   void element(const Block& b);
@@ -351,7 +354,12 @@ class Parser {
 void Parser::node(const Block& b) {
   check_params(b.keyword, {"NSET"});
   std::vector<int>* set = nullptr;
-  if (b.keyword.params.count("NSET")) set = &nsets_[upper(required_param(b.keyword, "NSET"))];
+  std::vector<InputLocation>* set_where = nullptr;
+  if (b.keyword.params.count("NSET")) {
+    const std::string name = upper(required_param(b.keyword, "NSET"));
+    set = &nsets_[name];
+    set_where = &nset_where_[name];
+  }
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     if (f.size() < 2 || f.size() > 4) throw InputError(at(l, b.keyword), "node number, x[, y[, z]]", "'" + l.text + "'");
@@ -362,7 +370,10 @@ void Parser::node(const Block& b) {
     auto [it, inserted] = node_where_.emplace(id, at(l, b.keyword));
     if (!inserted) throw InputError(at(l, b.keyword), "a new node number", fmt::format("node {} again (first at {})", id, core::format_location(it->second)));
     nodes_.emplace_back(id, x);
-    if (set) set->push_back(id);
+    if (set) {
+      set->push_back(id);
+      set_where->push_back(at(l, b.keyword));
+    }
   }
 }
 
@@ -376,7 +387,12 @@ void Parser::element(const Block& b) {
     throw InputError(b.keyword.where, "TYPE=B31, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
                      "TYPE=" + type);
   std::vector<int>* set = nullptr;
-  if (b.keyword.params.count("ELSET")) set = &elsets_[upper(required_param(b.keyword, "ELSET"))];
+  std::vector<InputLocation>* set_where = nullptr;
+  if (b.keyword.params.count("ELSET")) {
+    const std::string name = upper(required_param(b.keyword, "ELSET"));
+    set = &elsets_[name];
+    set_where = &elset_where_[name];
+  }
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     if ((type == "B31" || type == "B33") && f.size() == 4)
@@ -397,7 +413,10 @@ void Parser::element(const Block& b) {
                        fmt::format("element {} again (first at {})", e.id, core::format_location(elements_[element_index_[e.id]].where)));
     element_index_[e.id] = elements_.size();
     elements_.push_back(e);
-    if (set) set->push_back(e.id);
+    if (set) {
+      set->push_back(e.id);
+      set_where->push_back(e.where);
+    }
   }
 }
 
@@ -414,6 +433,7 @@ void Parser::set(const Block& b, bool nodes) {
   const std::string name = upper(required_param(b.keyword, pname));
   const bool generate = b.keyword.params.count("GENERATE") > 0;
   std::vector<int> members;
+  std::vector<InputLocation> members_where;
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     if (generate) {
@@ -423,21 +443,29 @@ void Parser::set(const Block& b, bool nodes) {
       const long inc = f.size() == 3 ? parse_int(f[2], at(l, b.keyword), "increment") : 1;
       if (inc <= 0 || last < first) throw InputError(at(l, b.keyword), "first <= last and a positive increment", "'" + l.text + "'");
       if ((last - first) / inc > 50000000) throw InputError(at(l, b.keyword), "a range of at most 5e7 members", "'" + l.text + "'");
-      for (long v = first; v <= last; v += inc) members.push_back(static_cast<int>(v));
+      for (long v = first; v <= last; v += inc) {
+        members.push_back(static_cast<int>(v));
+        members_where.push_back(at(l, b.keyword));
+      }
     } else {
       for (const std::string& s : f) {
         if (s.empty()) continue;
         if (is_integer(s)) {
           members.push_back(static_cast<int>(parse_int(s, at(l, b.keyword), "a number")));
+          members_where.push_back(at(l, b.keyword));
         } else {
           const std::vector<int> sub = set_members(s, nodes, at(l, b.keyword));
           members.insert(members.end(), sub.begin(), sub.end());
+          const std::vector<InputLocation>& sub_where = (nodes ? nset_where_ : elset_where_).at(upper(s));
+          members_where.insert(members_where.end(), sub_where.begin(), sub_where.end());
         }
       }
     }
   }
   std::vector<int>& target = (nodes ? nsets_ : elsets_)[name];
   target.insert(target.end(), members.begin(), members.end());
+  std::vector<InputLocation>& target_where = (nodes ? nset_where_ : elset_where_)[name];
+  target_where.insert(target_where.end(), members_where.begin(), members_where.end());
 }
 
 Eigen::Vector3d orientation_line(const Line& l, const Keyword& k) {
@@ -465,8 +493,8 @@ void Parser::beam_section(const Block& b) {
   if (b.data.empty()) throw InputError(b.keyword.where, fmt::format("a data line with the {} dimensions of {}", count, s.shape), "none");
   if (b.data.size() > 2) throw InputError(at(b.data[2], b.keyword), "at most two data lines (dimensions, orientation)", "'" + b.data[2].text + "'");
   s.dims = numbers(b.data[0], b.keyword, count, count, fmt::format("the {} dimensions of a {} section", count, s.shape));
-  for (double d : s.dims)
-    if (!(d > 0.0) && !(s.shape == "I" && &d == &s.dims[0]))
+  for (std::size_t i = 0; i < s.dims.size(); ++i)
+    if (!(s.dims[i] > 0.0) && !(s.shape == "I" && i == 0))  // I: the offset l is not used and may be 0
       throw InputError(at(b.data[0], b.keyword), "positive section dimensions", "'" + b.data[0].text + "'");
   if (b.data.size() == 2) s.n1 = orientation_line(b.data[1], b.keyword);
   sections_.push_back(s);
@@ -613,6 +641,7 @@ void Parser::step_keyword(const Block& b) {
     if (in_step_) throw InputError(b.keyword.where, "*END STEP before the next *STEP", "*STEP");
     if (++steps_ > 1) throw InputError(b.keyword.where, "one analysis step (framedyn reads a single step)", "a second *STEP");
     in_step_ = true;
+    step_where_ = b.keyword.where;
   } else if (k == "*END STEP") {
     check_params(b.keyword, {});
     if (!in_step_) throw InputError(b.keyword.where, "a *STEP before *END STEP", "*END STEP");
@@ -661,30 +690,26 @@ FrameModel Parser::run(const InpReadOptions& options) {
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
   }
-  if (in_step_) throw InputError({src_.lines.empty() ? "" : src_.lines.back().file, 0, "*STEP"}, "*END STEP at the end of the step", "end of file");
+  if (in_step_) throw InputError(step_where_, "*END STEP at the end of the step", "end of file");
 
   // Unit system: the caller's, or the file's "** units:" comment.
-  std::string units_name;
-  InputLocation units_where = src_.units_where;
-  if (options.units && src_.units_comment && core::UnitSystem::from_name(*options.units).name() != core::UnitSystem::from_name(*src_.units_comment).name())
+  auto system = [](const std::string& name, const InputLocation& where) {
+    try {
+      return core::UnitSystem::from_name(name);
+    } catch (const std::invalid_argument&) {
+      throw InputError(where, "in-lbf-s, m-N-s (or SI) or mm-N-s", "'" + name + "'");
+    }
+  };
+  std::optional<core::UnitSystem> from_option, from_comment;
+  if (options.units) from_option = system(*options.units, {src_.name, 0, "--units"});
+  if (src_.units_comment) from_comment = system(*src_.units_comment, src_.units_where);
+  if (from_option && from_comment && from_option->name() != from_comment->name())
     throw InputError(src_.units_where, "the unit system given on the command line (" + *options.units + ")", *src_.units_comment);
-  if (options.units) {
-    units_name = *options.units;
-    units_where = {"", 0, "--units"};
-  } else if (src_.units_comment) {
-    units_name = *src_.units_comment;
-  } else {
-    throw InputError({src_.lines.empty() ? "" : src_.lines.front().file, 0, "units"},
+  if (!from_option && !from_comment)
+    throw InputError({src_.name, 0, "units"},
                      "a unit system: --units in-lbf-s|m-N-s|mm-N-s, or a line '** units: NAME' in the mesh (the .inp format has no units)",
                      "neither");
-  }
-  core::UnitSystem units;
-  try {
-    units = core::UnitSystem::from_name(units_name);
-  } catch (const std::invalid_argument&) {
-    throw InputError(units_where, "in-lbf-s, m-N-s (or SI) or mm-N-s", "'" + units_name + "'");
-  }
-  return build(units);
+  return build(from_option ? *from_option : *from_comment);
 }
 
 FrameModel Parser::build(const core::UnitSystem& units) {
@@ -705,14 +730,17 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const auto& [name, ids] : nsets_) {
     std::vector<int> idx;
     idx.reserve(ids.size());
-    for (int id : ids) idx.push_back(node_of(id, {"", 0, "*NSET " + name}));
+    const std::vector<InputLocation>& where = nset_where_.at(name);
+    for (std::size_t i = 0; i < ids.size(); ++i) idx.push_back(node_of(ids[i], where[i]));
     std::sort(idx.begin(), idx.end());
     idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
     model.node_sets[name] = idx;
   }
   for (const auto& [name, ids] : elsets_) {
-    for (int id : ids)
-      if (!element_index_.count(id)) throw InputError({"", 0, "*ELSET " + name}, "elements defined by *ELEMENT", fmt::format("element {}", id));
+    const std::vector<InputLocation>& where = elset_where_.at(name);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      if (!element_index_.count(ids[i]))
+        throw InputError(where[i], "elements defined by *ELEMENT (in ELSET " + name + ")", fmt::format("element {}", ids[i]));
     std::vector<int> sorted = ids;
     std::sort(sorted.begin(), sorted.end());
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
@@ -809,8 +837,8 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   };
   std::set<int> has_property;
   for (const RawElementProperty& p : properties_) {
-    auto set_it = elsets_.find(p.elset);
-    if (set_it == elsets_.end()) throw InputError(p.where, "ELSET naming a defined element set", p.elset);
+    auto set_it = model.element_sets.find(p.elset);  // sorted, each element once
+    if (set_it == model.element_sets.end()) throw InputError(p.where, "ELSET naming a defined element set", p.elset);
     const std::string want = p.keyword == "*MASS" ? "MASS" : p.keyword == "*ROTARY INERTIA" ? "ROTARYI" : "SPRING";
     for (int id : set_it->second) {
       const RawElement& e = elements_[element_index_[id]];
@@ -864,7 +892,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     for (int n : targets(l.target, l.where))
       model.loads.push_back({n, l.dof - 1, units.to_si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment)});
   if (model.beams.empty() && model.nodes.empty())
-    throw InputError({src_.lines.empty() ? "" : src_.lines.front().file, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
+    throw InputError({src_.name, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
   return model;
 }
 
@@ -872,6 +900,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
 
 FrameModel read_inp_text(const std::string& text, const std::string& name, const fs::path& base_dir, const InpReadOptions& options) {
   TextSource src;
+  src.name = name;
   std::vector<std::string> stack;
   load_lines(text, name, base_dir, src, stack);
   return Parser(src).run(options);
@@ -879,6 +908,7 @@ FrameModel read_inp_text(const std::string& text, const std::string& name, const
 
 FrameModel read_inp(const fs::path& path, const InpReadOptions& options) {
   TextSource src;
+  src.name = path.string();
   std::vector<std::string> stack;
   load_file(path, {path.string(), 0, ""}, src, stack);
   return Parser(src).run(options);

@@ -28,6 +28,7 @@ struct EigenOptions {
   double shift = -1.0;     // sigma, rad^2/s^2; must be negative
   double tolerance = 1e-10;
   int max_iterations = 1000;
+  int subspace = 0;        // Lanczos basis size (ncv); 0 picks one from `count`
   Factorization factorization = Factorization::cholmod;
   std::function<void(const std::string&)> progress;  // optional stage messages
 };

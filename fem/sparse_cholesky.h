@@ -1,6 +1,6 @@
 // Sparse Cholesky factorisation of a symmetric positive definite matrix
-// given by its lower triangle, on CHOLMOD (supernodal LL^T, fill-reducing
-// ordering). Kept behind this small class so that only one source file sees
+// given by its lower triangle, on CHOLMOD (fill-reducing ordering; CHOLMOD chooses a simplicial LDL^T
+// or a supernodal LL^T factor by the density of the factor). Kept behind this small class so that only one source file sees
 // CHOLMOD, and so that a failed factorisation can say which equation failed.
 #pragma once
 
