@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <stdexcept>
 
 namespace framedyn::fem {
@@ -37,13 +38,45 @@ struct ElementMatrices {
   std::array<int, 12> dofs;
 };
 
-BeamGeometry checked_geometry(const FrameModel& model, const BeamElement& beam) {
-  try {
-    return beam_geometry(model, beam);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(fmt::format("beam element {}: {}", beam.id, e.what()));
+// Element data for a loop over all beams: the section part computed once
+// per (section, theory), the length and axes per element.
+class ElementGeometries {
+ public:
+  explicit ElementGeometries(const FrameModel& model) : model_(model) {}
+  const BeamGeometry& operator()(const BeamElement& beam) {
+    const std::size_t key = 2 * static_cast<std::size_t>(beam.section) + (beam.theory == BeamTheory::timoshenko ? 1 : 0);
+    if (key >= sections_.size()) sections_.resize(key + 1);
+    if (!sections_[key]) sections_[key] = section_geometry(model_, beam.section, beam.theory);
+    const SectionGeometry& s = *sections_[key];
+    try {
+      current_.axes = element_axes(model_, beam, s);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("beam element {}: {}", beam.id, e.what()));
+    }
+    return fill(s, beam);
   }
-}
+
+ private:
+  const BeamGeometry& fill(const SectionGeometry& s, const BeamElement& beam) {
+    const BeamElementData& d = s.data;
+    current_.data.youngs_modulus = d.youngs_modulus;
+    current_.data.shear_modulus = d.shear_modulus;
+    current_.data.density = d.density;
+    current_.data.theory = d.theory;
+    current_.data.section.area = d.section.area;
+    current_.data.section.i11 = d.section.i11;
+    current_.data.section.i22 = d.section.i22;
+    current_.data.section.torsion_constant = d.section.torsion_constant;
+    current_.data.section.shear_area_1 = d.section.shear_area_1;
+    current_.data.section.shear_area_2 = d.section.shear_area_2;
+    current_.data.length = (model_.nodes[static_cast<std::size_t>(beam.node_b)].position -
+                            model_.nodes[static_cast<std::size_t>(beam.node_a)].position).norm();
+    return current_;
+  }
+  const FrameModel& model_;
+  std::vector<std::optional<SectionGeometry>> sections_;
+  BeamGeometry current_;
+};
 
 std::array<int, 12> element_dofs(const BeamElement& beam) {
   std::array<int, 12> d{};
@@ -88,8 +121,9 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
     const bool stiffness = pass == 0;
     Triplets t;
     t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
+    ElementGeometries geometry(model);
     for (const BeamElement& beam : model.beams) {
-      const BeamGeometry g = checked_geometry(model, beam);
+      const BeamGeometry& g = geometry(beam);
       const Matrix12d tr = beam_transformation(g.axes);
       const Matrix12d local = stiffness ? beam_local_stiffness(g.data) : beam_local_mass(g.data, options.mass);
       const Matrix12d global = tr.transpose() * local * tr;
@@ -124,8 +158,9 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
 
 Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.dof_count());
+  ElementGeometries geometry(model);
   for (const BeamElement& beam : model.beams) {
-    const BeamGeometry g = checked_geometry(model, beam);
+    const BeamGeometry& g = geometry(beam);
     const Matrix12d tr = beam_transformation(g.axes);
     const auto d = element_dofs(beam);
     Vector12d ue;

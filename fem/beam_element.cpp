@@ -133,20 +133,16 @@ Matrix12d beam_transformation(const Eigen::Matrix3d& r) {
   return t;
 }
 
-BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam) {
-  const SectionAssignment& sa = model.sections.at(static_cast<std::size_t>(beam.section));
-  const Eigen::Vector3d& a = model.nodes.at(static_cast<std::size_t>(beam.node_a)).position;
-  const Eigen::Vector3d& b = model.nodes.at(static_cast<std::size_t>(beam.node_b)).position;
-  BeamGeometry g;
-  g.axes = beam_local_axes(a, b, sa.n1_direction);
-  g.data.length = (b - a).norm();
+SectionGeometry section_geometry(const FrameModel& model, int section, BeamTheory theory) {
+  const SectionAssignment& sa = model.sections.at(static_cast<std::size_t>(section));
+  SectionGeometry g;
   g.data.youngs_modulus = sa.material.youngs_modulus;
   g.data.shear_modulus = sa.material.shear_modulus;
   g.data.density = sa.material.density;
   g.data.section = sa.properties;
-  g.data.theory = beam.theory;
+  g.data.theory = theory;
   if (sa.properties.i12 != 0.0) {
-    // Rotate the section axes to principal axes: angle of the principal 1-axis from n1.
+    // Principal axes: the angle that makes the product of inertia vanish.
     const SectionProperties& s = sa.properties;
     const double angle = 0.5 * std::atan2(-2.0 * s.i12, s.i11 - s.i22);
     const double c = std::cos(angle), sn = std::sin(angle);
@@ -154,11 +150,33 @@ BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam) {
     g.data.section.i11 = mean + half_diff * std::cos(2 * angle) - s.i12 * std::sin(2 * angle);
     g.data.section.i22 = mean - half_diff * std::cos(2 * angle) + s.i12 * std::sin(2 * angle);
     g.data.section.i12 = 0.0;
-    const Eigen::Vector3d n1 = g.axes.row(1), n2 = g.axes.row(2);
-    g.axes.row(1) = (c * n1 + sn * n2).transpose();
-    g.axes.row(2) = (-sn * n1 + c * n2).transpose();
     for (Eigen::Vector2d& p : g.data.section.stress_points) p = Eigen::Vector2d(c * p.x() + sn * p.y(), -sn * p.x() + c * p.y());
+    g.principal_angle = angle;
   }
+  return g;
+}
+
+Eigen::Matrix3d element_axes(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section) {
+  const SectionAssignment& sa = model.sections[static_cast<std::size_t>(beam.section)];
+  const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
+  const Eigen::Vector3d& b = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
+  Eigen::Matrix3d axes = beam_local_axes(a, b, sa.n1_direction);
+  if (section.principal_angle != 0.0) {
+    const double c = std::cos(section.principal_angle), sn = std::sin(section.principal_angle);
+    const Eigen::Vector3d n1 = axes.row(1), n2 = axes.row(2);
+    axes.row(1) = (c * n1 + sn * n2).transpose();
+    axes.row(2) = (-sn * n1 + c * n2).transpose();
+  }
+  return axes;
+}
+
+BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam) {
+  const SectionGeometry s = section_geometry(model, beam.section, beam.theory);
+  BeamGeometry g;
+  g.axes = element_axes(model, beam, s);
+  g.data = s.data;
+  g.data.length = (model.nodes.at(static_cast<std::size_t>(beam.node_b)).position -
+                   model.nodes.at(static_cast<std::size_t>(beam.node_a)).position).norm();
   return g;
 }
 

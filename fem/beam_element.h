@@ -48,4 +48,14 @@ struct BeamGeometry {
 };
 BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam);
 
+// The same in two steps, for loops over many elements of few sections: the
+// section's data in principal axes (length left 0) with the angle of its
+// principal 1-axis from n1, then one element's axes.
+struct SectionGeometry {
+  BeamElementData data;
+  double principal_angle = 0.0;  // rad, about t, from n1 to the principal 1-axis
+};
+SectionGeometry section_geometry(const FrameModel& model, int section, BeamTheory theory);
+Eigen::Matrix3d element_axes(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section);
+
 }  // namespace framedyn::fem

@@ -123,6 +123,7 @@ void load_file(const fs::path& path, const InputLocation& from, TextSource& out,
   if (std::find(include_stack.begin(), include_stack.end(), key) != include_stack.end())
     throw InputError(from, "the file " + path.string() + " includes itself (directly or through other *INCLUDE files)");
   if (include_stack.size() > 16) throw InputError(from, "*INCLUDE nested more than 16 deep");
+  if (fs::is_directory(path)) throw InputError(from, "cannot open " + path.string() + " (a directory, not a mesh file)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(from, "cannot open " + path.string() + (fs::exists(path) ? " (permission?)" : " (no such file)"));
   std::stringstream ss;
