@@ -26,7 +26,7 @@ class CsvTable {
 
 // "name [unit]", or "name" when unit is "" or "1".
 std::string column(const std::string& name, const std::string& unit);
-// Shortest round-trip-safe text for a double used in CSV and tables.
+// Text of a double for CSV and tables: 10 significant digits, -0 as 0.
 std::string format_number(double value);
 
 }  // namespace framedyn::core

@@ -152,7 +152,15 @@ void load_lines(const std::string& text, const std::string& name, const fs::path
       for (char& c : lower_body) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (lower_body.rfind("units:", 0) == 0) {
         const std::string value = trim(body.substr(6));
-        if (out.units_comment && *out.units_comment != value)
+        // "SI" and "m-N-s" name one system: compare canonical names where known.
+        auto canonical = [](const std::string& n) {
+          try {
+            return core::UnitSystem::from_name(n).name();
+          } catch (const std::invalid_argument&) {
+            return n;
+          }
+        };
+        if (out.units_comment && canonical(*out.units_comment) != canonical(value))
           throw InputError({name, number, "** units:"}, "the same unit system as " + core::format_location(out.units_where) + " (" + *out.units_comment + ")", value);
         out.units_comment = value;
         out.units_where = {name, number, "** units:"};

@@ -1,0 +1,401 @@
+// Tests of the framedyn program as a user runs it: exit status, the files it
+// writes, its messages, the whole-or-absent results folder, and determinism.
+// The program is FRAMEDYN_BINARY; every run works in a fresh temp folder.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kBinary = FRAMEDYN_BINARY;
+const fs::path kFrame = fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "r100_frame.inp";
+
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    path_ = fs::temp_directory_path() / ("framedyn_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path p = path_ / name;
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    return p;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+struct RunResult {
+  int status = -1;  // exit status, -1 if the program did not exit normally
+  std::string out, err;
+};
+
+// Runs `framedyn ARGS` from `dir`, capturing stdout and stderr.
+RunResult framedyn(const TempDir& dir, const std::string& args) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd =
+      "cd " + quote(dir.path().string()) + " && " + quote(kBinary) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+  const int rc = std::system(cmd.c_str());
+  RunResult r;
+  r.status = (rc != -1 && WIFEXITED(rc)) ? WEXITSTATUS(rc) : -1;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  return out;
+}
+
+// A CSV file as header -> column, one map per row.
+std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
+  const std::vector<std::string> lines = split(read_file(p), '\n');
+  std::vector<std::map<std::string, std::string>> rows;
+  if (lines.empty()) return rows;
+  const std::vector<std::string> header = split(lines[0], ',');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    const std::vector<std::string> f = split(lines[i], ',');
+    EXPECT_EQ(f.size(), header.size()) << p << " line " << i + 1;
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < header.size() && k < f.size(); ++k) row[header[k]] = f[k];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Names in `dir` that contain `part`.
+std::vector<std::string> entries_containing(const fs::path& dir, const std::string& part) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(part) != std::string::npos) found.push_back(e.path().filename().string());
+  return found;
+}
+
+// Every file of a results folder, name -> content.
+std::map<std::string, std::string> folder_contents(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::directory_iterator(dir)) files[e.path().filename().string()] = read_file(e.path());
+  return files;
+}
+
+// A cantilever along x, clamped at node 1, tip loads in y and z at node 5.
+constexpr double kL = 2.0, kA = 0.05, kB = 0.1, kE = 2.1e11, kNu = 0.3, kPy = 700.0, kPz = 1000.0;
+
+std::string cantilever_deck(const std::string& type = "B31", double pz = kPz) {
+  std::ostringstream d;
+  d << "** units: m-N-s\n"
+       "*HEADING\nCantilever for the CLI test\n"
+       "*NODE, NSET=ALL\n"
+       "1, 0, 0, 0\n2, 0.5, 0, 0\n3, 1.0, 0, 0\n4, 1.5, 0, 0\n5, 2.0, 0, 0\n"
+       "*ELEMENT, TYPE="
+    << type
+    << ", ELSET=BEAM\n"
+       "1, 1, 2\n2, 2, 3\n3, 3, 4\n4, 4, 5\n"
+       "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT\n"
+       "0.05, 0.1\n"
+       "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n"
+       "*BOUNDARY\n1, ENCASTRE\n"
+       "*STEP\n*STATIC\n"
+       "*CLOAD\n5, 2, 700.\n5, 3, "
+    << pz
+    << "\n"
+       "*NODE PRINT, NSET=ALL\nU\n"
+       "*END STEP\n";
+  return d.str();
+}
+
+const std::vector<std::string> kStaticFiles = {"displacements.csv", "reactions.csv", "section_forces.csv", "static.vtu", "summary.json"};
+const std::vector<std::string> kModesFiles = {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu"};
+
+// ------------------------------------------------------------------ modes
+
+TEST(Cli, ModesOfTheShippedFrame) {
+  TempDir dir;
+  const fs::path out = dir / "r100";
+  const RunResult r = framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 10 --out " + quote(out.string()) + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // -q: no progress lines
+  for (const std::string& f : kModesFiles) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+
+  const nlohmann::json j = nlohmann::json::parse(read_file(out / "summary.json"));
+  EXPECT_EQ(j.at("framedyn").at("command"), "modes");
+  EXPECT_EQ(j.at("input").at("units"), "in-lbf-s");
+  EXPECT_EQ(j.at("frame").at("nodes"), 51);
+  EXPECT_EQ(j.at("frame").at("beam_elements"), 61);
+  const auto& modes = j.at("frame").at("modes");
+  ASSERT_EQ(modes.size(), 10u);
+  double previous = -1.0;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    SCOPED_TRACE("mode " + std::to_string(i + 1));
+    const double f = modes[i].at("frequency_hz").get<double>();
+    EXPECT_EQ(modes[i].at("mode"), i + 1);
+    if (i < 6) {
+      EXPECT_EQ(f, 0.0);  // free-free: six rigid-body modes reported at 0 Hz
+      EXPECT_TRUE(modes[i].at("rigid_body").get<bool>());
+    } else {
+      EXPECT_GT(f, 1.0);
+      EXPECT_FALSE(modes[i].at("rigid_body").get<bool>());
+      EXPECT_GE(f, previous);
+    }
+    previous = f;
+  }
+
+  const auto table = read_csv(out / "modes.csv");
+  ASSERT_EQ(table.size(), 10u);
+  for (std::size_t i = 0; i < 10; ++i) {
+    EXPECT_EQ(table[i].at("mode"), std::to_string(i + 1));
+    EXPECT_EQ(table[i].at("rigid_body"), i < 6 ? "yes" : "no");
+    EXPECT_NEAR(std::stod(table[i].at("frequency [Hz]")), modes[i].at("frequency_hz").get<double>(),
+                1e-9 * std::max(1.0, modes[i].at("frequency_hz").get<double>()));
+  }
+  EXPECT_EQ(read_csv(out / "mode_shapes.csv").size(), 10u * 51u);
+  const std::string vtu = read_file(out / "modes.vtu");
+  EXPECT_NE(vtu.find("<VTKFile"), std::string::npos);
+  EXPECT_NE(vtu.find("mode_07_"), std::string::npos);
+  EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
+}
+
+TEST(Cli, ModesTakesTheCountFromTheFrequencyStep) {
+  TempDir dir;
+  dir.write("frame.inp", "*INCLUDE, INPUT=" + kFrame.string() + "\n*STEP\n*FREQUENCY\n8\n*END STEP\n");
+  const RunResult r = framedyn(dir, "modes frame.inp -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "frame_modes" / "summary.json"));  // default folder name
+  EXPECT_EQ(j.at("frame").at("modes").size(), 8u);
+}
+
+// ------------------------------------------------------------------ static
+
+double cantilever_tip(const fs::path& out, const std::string& column) {
+  for (const auto& row : read_csv(out / "displacements.csv"))
+    if (row.at("node") == "5") return std::stod(row.at(column));
+  ADD_FAILURE() << "no row for node 5";
+  return 0.0;
+}
+
+TEST(Cli, StaticCantileverTipDeflectionB31) {
+  TempDir dir;
+  dir.write("cantilever.inp", cantilever_deck("B31"));
+  const fs::path out = dir / "results";
+  const RunResult r = framedyn(dir, "static cantilever.inp --out " + quote(out.string()) + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const std::string& f : kStaticFiles) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+
+  // Default orientation n1 = -z: a (0.05) lies along z, b (0.1) along y.
+  // Load along z bends about y: I = b a^3 / 12; load along y: I = a b^3 / 12.
+  const double G = kE / (2 * (1 + kNu));
+  const double k = 10 * (1 + kNu) / (12 + 11 * kNu);  // Cowper, rectangle
+  const double As = k * kA * kB;
+  const double Iz_bending = kB * kA * kA * kA / 12, Iy_bending = kA * kB * kB * kB / 12;
+  const double wz = kPz * kL * kL * kL / (3 * kE * Iz_bending) + kPz * kL / (G * As);
+  const double wy = kPy * kL * kL * kL / (3 * kE * Iy_bending) + kPy * kL / (G * As);
+  EXPECT_NEAR(cantilever_tip(out, "uz [m]"), wz, 1e-9 * wz);
+  EXPECT_NEAR(cantilever_tip(out, "uy [m]"), wy, 1e-9 * wy);
+  EXPECT_NEAR(cantilever_tip(out, "ux [m]"), 0.0, 1e-12);
+
+  // The support reacts with the opposite force.
+  const auto reactions = read_csv(out / "reactions.csv");
+  ASSERT_EQ(reactions.size(), 1u);
+  EXPECT_EQ(reactions[0].at("node"), "1");
+  EXPECT_NEAR(std::stod(reactions[0].at("fz [N]")), -kPz, 1e-6 * kPz);
+  EXPECT_NEAR(std::stod(reactions[0].at("fy [N]")), -kPy, 1e-6 * kPy);
+  EXPECT_NEAR(std::stod(reactions[0].at("my [N*m]")), kPz * kL, 1e-6 * kPz * kL);
+
+  EXPECT_EQ(read_csv(out / "section_forces.csv").size(), 4u * 3u);  // 4 elements, 3 stations
+  const nlohmann::json j = nlohmann::json::parse(read_file(out / "summary.json"));
+  EXPECT_EQ(j.at("framedyn").at("command"), "static");
+  EXPECT_EQ(j.at("frame").at("max_displacement").at("node"), 5);
+  EXPECT_NEAR(j.at("frame").at("applied_force_sum").at("value")[2].get<double>(), kPz, 1e-9);
+  EXPECT_NE(read_file(out / "static.vtu").find("<VTKFile"), std::string::npos);
+}
+
+TEST(Cli, StaticCantileverTipDeflectionB33) {
+  TempDir dir;
+  dir.write("cantilever.inp", cantilever_deck("B33"));
+  const RunResult r = framedyn(dir, "static cantilever.inp --out res -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double wz = kPz * kL * kL * kL / (3 * kE * (kB * kA * kA * kA / 12));
+  EXPECT_NEAR(cantilever_tip(dir / "res", "uz [m]"), wz, 1e-9 * wz);
+}
+
+TEST(Cli, StaticWithUnitsOption) {
+  TempDir dir;
+  std::string deck = cantilever_deck();
+  deck.erase(0, deck.find('\n') + 1);  // drop the "** units:" line
+  dir.write("nounits.inp", deck);
+  const RunResult missing = framedyn(dir, "static nounits.inp --out a -q");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("error:"), std::string::npos);
+  EXPECT_NE(missing.err.find("nounits.inp: units"), std::string::npos) << missing.err;
+  const RunResult given = framedyn(dir, "static nounits.inp --units SI --out b -q");
+  ASSERT_EQ(given.status, 0) << given.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "b" / "summary.json"));
+  EXPECT_EQ(j.at("input").at("units"), "m-N-s");
+}
+
+// ------------------------------------------------------------------ help
+
+TEST(Cli, HelpOfEachSubcommand) {
+  TempDir dir;
+  const std::map<std::string, std::vector<std::string>> options = {
+      {"modes", {"mesh", "--modes", "--out", "--units", "--lumped", "--shift", "--verbose", "--quiet", "--help"}},
+      {"static", {"mesh", "--out", "--stations", "--units", "--verbose", "--quiet", "--help"}},
+  };
+  for (const auto& [command, names] : options) {
+    SCOPED_TRACE(command);
+    const RunResult r = framedyn(dir, command + " --help");
+    EXPECT_EQ(r.status, 0) << r.err;
+    for (const std::string& n : names) EXPECT_NE(r.out.find(n), std::string::npos) << n << " not in:\n" << r.out;
+  }
+  const RunResult top = framedyn(dir, "--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("modes"), std::string::npos);
+  EXPECT_NE(top.out.find("static"), std::string::npos);
+  EXPECT_TRUE(fs::is_empty(dir.path()));  // --help writes nothing
+}
+
+TEST(Cli, UnknownOptionAndMissingSubcommandFail) {
+  TempDir dir;
+  EXPECT_NE(framedyn(dir, "").status, 0);
+  EXPECT_NE(framedyn(dir, "modes " + quote(kFrame.string()) + " --no-such-option").status, 0);
+  EXPECT_NE(framedyn(dir, "static").status, 0);  // mesh is required
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+// ------------------------------------------------------------------ errors and results folders
+
+TEST(Cli, BadMeshFailsWithFileAndLineAndLeavesNoFolder) {
+  TempDir dir;
+  std::string deck = cantilever_deck();
+  const std::string bad = "*ELEMENT, TYPE=C3D8\n";
+  deck += bad + "9, 1, 2, 3, 4, 5, 1, 2, 3\n";
+  dir.write("bad.inp", deck);
+  int line = 0;
+  {
+    std::istringstream in(deck);
+    std::string l;
+    for (int n = 1; std::getline(in, l); ++n)
+      if (l + "\n" == bad) line = n;
+  }
+  ASSERT_GT(line, 0);
+  for (const std::string command : {"modes", "static"}) {
+    SCOPED_TRACE(command);
+    const RunResult r = framedyn(dir, command + " bad.inp --out results -q");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bad.inp:" + std::to_string(line) + ": *ELEMENT"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("C3D8"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "results"));
+    EXPECT_FALSE(fs::exists(dir / "bad_modes"));
+    EXPECT_FALSE(fs::exists(dir / "bad_static"));
+    EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
+  }
+  // A missing mesh file too.
+  const RunResult missing = framedyn(dir, "modes nothere.inp --out results");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("nothere.inp"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(dir / "results"));
+}
+
+TEST(Cli, SameRunTwiceGivesIdenticalFiles) {
+  TempDir dir;
+  dir.write("cantilever.inp", cantilever_deck());
+  ASSERT_EQ(framedyn(dir, "static cantilever.inp --out s1 -q").status, 0);
+  ASSERT_EQ(framedyn(dir, "static cantilever.inp --out s2 -q").status, 0);
+  const auto s1 = folder_contents(dir / "s1"), s2 = folder_contents(dir / "s2");
+  EXPECT_EQ(s1.size(), kStaticFiles.size());
+  EXPECT_TRUE(s1 == s2) << "static results differ between two runs";
+
+  const std::string mesh = quote(kFrame.string());
+  ASSERT_EQ(framedyn(dir, "modes " + mesh + " --modes 10 --out m1 -q").status, 0);
+  ASSERT_EQ(framedyn(dir, "modes " + mesh + " --modes 10 --out m2 -q").status, 0);
+  const auto m1 = folder_contents(dir / "m1"), m2 = folder_contents(dir / "m2");
+  EXPECT_EQ(m1.size(), kModesFiles.size());
+  for (const auto& [name, content] : m1) {
+    ASSERT_EQ(m2.count(name), 1u) << name;
+    EXPECT_TRUE(content == m2.at(name)) << name << " differs between two runs";
+  }
+  // Rerunning into the same folder replaces it with the same bytes.
+  ASSERT_EQ(framedyn(dir, "modes " + mesh + " --modes 10 --out m1 -q").status, 0);
+  EXPECT_TRUE(folder_contents(dir / "m1") == m1);
+}
+
+TEST(Cli, FailingRunLeavesTheOldResultsUntouched) {
+  TempDir dir;
+  dir.write("good.inp", cantilever_deck());
+  ASSERT_EQ(framedyn(dir, "static good.inp --out results -q").status, 0);
+  dir.write("results/my_notes.txt", "kept only if the folder is not replaced\n");
+  const auto before = folder_contents(dir / "results");
+
+  // Bad input: exit 1.
+  dir.write("bad.inp", cantilever_deck() + "*CLOAD\n5, 9, 1.0\n");
+  const RunResult bad = framedyn(dir, "static bad.inp --out results -q");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_TRUE(folder_contents(dir / "results") == before);
+
+  // A mechanism (no supports): a numerical failure, exit 2.
+  std::string loose = cantilever_deck();
+  loose.replace(loose.find("*BOUNDARY\n1, ENCASTRE\n"), std::string("*BOUNDARY\n1, ENCASTRE\n").size(), "");
+  dir.write("loose.inp", loose);
+  const RunResult mech = framedyn(dir, "static loose.inp --out results -q");
+  EXPECT_EQ(mech.status, 2) << mech.err;
+  EXPECT_NE(mech.err.find("numerical failure"), std::string::npos) << mech.err;
+  EXPECT_TRUE(folder_contents(dir / "results") == before);
+
+  // Modes that fail on input into the same folder leave it too.
+  EXPECT_EQ(framedyn(dir, "modes bad.inp --out results -q").status, 1);
+  EXPECT_TRUE(folder_contents(dir / "results") == before);
+  EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
+
+  // A successful run replaces the whole folder.
+  dir.write("other.inp", cantilever_deck("B31", 2000.0));
+  ASSERT_EQ(framedyn(dir, "static other.inp --out results -q").status, 0);
+  const auto after = folder_contents(dir / "results");
+  EXPECT_EQ(after.count("my_notes.txt"), 0u);
+  EXPECT_EQ(after.size(), kStaticFiles.size());
+  EXPECT_NE(after.at("displacements.csv"), before.at("displacements.csv"));
+  EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
+  EXPECT_TRUE(entries_containing(dir.path(), ".old-").empty());
+}
+
+}  // namespace
