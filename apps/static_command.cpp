@@ -109,8 +109,20 @@ int run_static(const StaticOptions& opt) {
       dfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + static_cast<std::size_t>(k))) * lf);
       rfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + 3 + static_cast<std::size_t>(k))));
     }
-  fem::VtuField stress_field{"max_abs_fiber_stress [" + S + "]", 1, cell_max};
-  folder.write_text("static.vtu", fem::vtu_document(model, lf, {dfield, rfield}, {stress_field}));
+  // Section forces at both ends of every element, as cell data.
+  std::vector<fem::VtuField> cells{{"max_abs_fiber_stress [" + S + "]", 1, cell_max}};
+  const char* names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  for (int end = 0; end < 2; ++end)
+    for (int k = 0; k < 6; ++k) {
+      fem::VtuField f{fmt::format("{}_end{} [{}]", names[k], end + 1, k < 3 ? F : M), 1, {}};
+      for (std::size_t i = 0; i < model.beams.size(); ++i) {
+        const fem::SectionForces& sf = stations[i * static_cast<std::size_t>(opt.stations) + (end == 0 ? 0 : static_cast<std::size_t>(opt.stations) - 1)].forces;
+        const double v[6] = {sf.n, sf.vy, sf.vz, sf.t, sf.my, sf.mz};
+        f.values.push_back(v[k] * (k < 3 ? ff : mf));
+      }
+      cells.push_back(std::move(f));
+    }
+  folder.write_text("static.vtu", fem::vtu_document(model, lf, {dfield, rfield}, cells));
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "static"}};
