@@ -3,7 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <exception>
 #include <optional>
+#include <thread>
 #include <stdexcept>
 
 namespace framedyn::fem {
@@ -117,8 +119,10 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
   const std::size_t per_element = options.storage == Storage::lower ? 78 : 144;
   FreeSystem sys;
   // K and M one after the other, so only one triplet list is alive at a time.
-  for (int pass = 0; pass < 2; ++pass) {
-    const bool stiffness = pass == 0;
+  // K and M are independent: build them on two threads (each writes only its
+  // own matrix, so the result does not depend on scheduling). An exception in
+  // the mass thread is carried over and rethrown here.
+  auto build = [&](bool stiffness) {
     Triplets t;
     t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
     ElementGeometries geometry(model);
@@ -140,7 +144,6 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
           scatter<2>(t, k, {ga, kDofsPerNode * s.node_b + s.dof_b}, dofs, options.storage);
         }
       }
-      sys.stiffness = from_triplets(n, t);
     } else {
       for (const PointMass& pm : model.point_masses) {
         Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
@@ -150,9 +153,25 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
         for (int i = 0; i < 6; ++i) d[static_cast<std::size_t>(i)] = kDofsPerNode * pm.node + i;
         scatter<6>(t, m, d, dofs, options.storage);
       }
-      sys.mass = from_triplets(n, t);
     }
+    return from_triplets(n, t);
+  };
+  std::exception_ptr mass_error;
+  std::thread mass_thread([&] {
+    try {
+      sys.mass = build(false);
+    } catch (...) {
+      mass_error = std::current_exception();
+    }
+  });
+  try {
+    sys.stiffness = build(true);
+  } catch (...) {
+    mass_thread.join();
+    throw;
   }
+  mass_thread.join();
+  if (mass_error) std::rethrow_exception(mass_error);
   return sys;
 }
 

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/units.h"
@@ -111,7 +112,7 @@ struct FrameModel {
  private:
   std::vector<int> node_lookup_;  // id -> index (dense, ids are usually compact)
   std::map<int, int> sparse_node_lookup_;
-  std::map<int, int> beam_lookup_;
+  std::unordered_map<int, int> beam_lookup_;
 };
 
 // Name of a DOF 0..5: "ux", "uy", "uz", "rx", "ry", "rz".

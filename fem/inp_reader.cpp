@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <deque>
 #include <map>
+#include <unordered_map>
 #include <set>
 #include <sstream>
 
@@ -32,9 +34,18 @@ using core::Quantity;
 // ---------------------------------------------------------------- text level
 
 struct Line {
-  std::string file;
+  const std::string* file = nullptr;  // into TextSource::files (stable)
   int number = 0;
   std::string text;
+};
+
+// A place in the input that is cheap to keep for every node and element: it
+// becomes an InputLocation (with its strings) only when an error is raised.
+struct Where {
+  const std::string* file = nullptr;
+  int line = 0;
+  const std::string* key = nullptr;
+  operator InputLocation() const { return {file ? *file : std::string(), line, key ? *key : std::string()}; }
 };
 
 std::string trim(const std::string& s) {
@@ -110,6 +121,7 @@ Keyword parse_keyword_line(const std::string& text, const InputLocation& where) 
 
 struct TextSource {
   std::string name;  // the top-level file, for messages that have no line
+  std::deque<std::string> files;  // every file read; Line::file points here
   std::vector<Line> lines;
   std::optional<std::string> units_comment;
   InputLocation units_where;
@@ -135,6 +147,8 @@ void load_file(const fs::path& path, const InputLocation& from, TextSource& out,
 
 void load_lines(const std::string& text, const std::string& name, const fs::path& base_dir, TextSource& out,
                 std::vector<std::string>& include_stack) {
+  out.files.push_back(name);
+  const std::string* file = &out.files.back();
   std::istringstream in(text);
   std::string raw;
   int number = 0;
@@ -181,29 +195,29 @@ void load_lines(const std::string& text, const std::string& name, const fs::path
       load_file(p, k.where, out, include_stack);
       continue;
     }
-    out.lines.push_back({name, number, t});
+    out.lines.push_back({file, number, t});
   }
 }
 
 // Keyword lines ending in a comma continue on the next line; so do data
 // lines of *ELEMENT (elements with many nodes).
-std::vector<Block> make_blocks(const std::vector<Line>& lines) {
+std::vector<Block> make_blocks(std::vector<Line>& lines) {
   std::vector<Block> blocks;
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const Line& l = lines[i];
+    Line& l = lines[i];
     if (is_keyword(l.text)) {
       std::string text = l.text;
       while (!text.empty() && text.back() == ',' && i + 1 < lines.size() && !is_keyword(lines[i + 1].text)) {
         text += lines[++i].text;
       }
-      blocks.push_back({parse_keyword_line(text, {l.file, l.number, ""}), {}});
+      blocks.push_back({parse_keyword_line(text, {*l.file, l.number, ""}), {}});
     } else {
-      if (blocks.empty()) throw InputError({l.file, l.number, ""}, "a keyword line (starting with *) first", "'" + l.text + "'");
+      if (blocks.empty()) throw InputError({*l.file, l.number, ""}, "a keyword line (starting with *) first", "'" + l.text + "'");
       Block& b = blocks.back();
       if (b.keyword.name == "*ELEMENT" && !b.data.empty() && !b.data.back().text.empty() && b.data.back().text.back() == ',')
         b.data.back().text += l.text;
       else
-        b.data.push_back(l);
+        b.data.push_back(std::move(l));
     }
   }
   return blocks;
@@ -211,9 +225,10 @@ std::vector<Block> make_blocks(const std::vector<Line>& lines) {
 
 // ---------------------------------------------------------------- values
 
-InputLocation at(const Line& l, const Keyword& k) { return {l.file, l.number, k.name}; }
+Where at(const Line& l, const Keyword& k) { return {l.file, l.number, &k.name}; }
 
-double parse_double(const std::string& field, const InputLocation& where, const std::string& what) {
+template <class Location>
+double parse_double(const std::string& field, const Location& where, const std::string& what) {
   std::string s = field;
   for (char& c : s)
     if (c == 'd' || c == 'D') c = 'e';  // Fortran exponents: 1.0D3
@@ -226,7 +241,8 @@ double parse_double(const std::string& field, const InputLocation& where, const 
   return v;
 }
 
-long parse_int(const std::string& field, const InputLocation& where, const std::string& what) {
+template <class Location>
+long parse_int(const std::string& field, const Location& where, const std::string& what) {
   if (field.empty()) throw InputError(where, what + " (an integer)", "an empty field");
   errno = 0;
   char* end = nullptr;
@@ -280,7 +296,7 @@ struct RawElement {
   int id;
   std::string type;  // B31, B33, MASS, ROTARYI, SPRING1, SPRING2
   std::vector<int> node_ids;
-  InputLocation where;
+  Where where;
 };
 
 struct RawSection {
@@ -321,18 +337,18 @@ struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
 
 class Parser {
  public:
-  explicit Parser(const TextSource& src) : src_(src) {}
+  explicit Parser(TextSource& src) : src_(src) {}
 
   FrameModel run(const InpReadOptions& options);
 
  private:
-  const TextSource& src_;
+  TextSource& src_;
   std::vector<std::pair<int, Eigen::Vector3d>> nodes_;
-  std::map<int, InputLocation> node_where_;
+  std::unordered_map<int, Where> node_where_;
   std::vector<RawElement> elements_;
-  std::map<int, std::size_t> element_index_;
+  std::unordered_map<int, std::size_t> element_index_;
   std::map<std::string, std::vector<int>> nsets_, elsets_;
-  std::map<std::string, std::vector<InputLocation>> nset_where_, elset_where_;  // parallel to nsets_, elsets_
+  std::map<std::string, std::vector<Where>> nset_where_, elset_where_;  // parallel to nsets_, elsets_
   std::vector<RawSection> sections_;
   std::map<std::string, RawMaterial> materials_;
   std::string current_material_;
@@ -363,7 +379,7 @@ class Parser {
 void Parser::node(const Block& b) {
   check_params(b.keyword, {"NSET"});
   std::vector<int>* set = nullptr;
-  std::vector<InputLocation>* set_where = nullptr;
+  std::vector<Where>* set_where = nullptr;
   if (b.keyword.params.count("NSET")) {
     const std::string name = upper(required_param(b.keyword, "NSET"));
     set = &nsets_[name];
@@ -396,7 +412,7 @@ void Parser::element(const Block& b) {
     throw InputError(b.keyword.where, "TYPE=B31, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
                      "TYPE=" + type);
   std::vector<int>* set = nullptr;
-  std::vector<InputLocation>* set_where = nullptr;
+  std::vector<Where>* set_where = nullptr;
   if (b.keyword.params.count("ELSET")) {
     const std::string name = upper(required_param(b.keyword, "ELSET"));
     set = &elsets_[name];
@@ -442,7 +458,7 @@ void Parser::set(const Block& b, bool nodes) {
   const std::string name = upper(required_param(b.keyword, pname));
   const bool generate = b.keyword.params.count("GENERATE") > 0;
   std::vector<int> members;
-  std::vector<InputLocation> members_where;
+  std::vector<Where> members_where;
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     if (generate) {
@@ -465,7 +481,7 @@ void Parser::set(const Block& b, bool nodes) {
         } else {
           const std::vector<int> sub = set_members(s, nodes, at(l, b.keyword));
           members.insert(members.end(), sub.begin(), sub.end());
-          const std::vector<InputLocation>& sub_where = (nodes ? nset_where_ : elset_where_).at(upper(s));
+          const std::vector<Where>& sub_where = (nodes ? nset_where_ : elset_where_).at(upper(s));
           members_where.insert(members_where.end(), sub_where.begin(), sub_where.end());
         }
       }
@@ -473,7 +489,7 @@ void Parser::set(const Block& b, bool nodes) {
   }
   std::vector<int>& target = (nodes ? nsets_ : elsets_)[name];
   target.insert(target.end(), members.begin(), members.end());
-  std::vector<InputLocation>& target_where = (nodes ? nset_where_ : elset_where_)[name];
+  std::vector<Where>& target_where = (nodes ? nset_where_ : elset_where_)[name];
   target_where.insert(target_where.end(), members_where.begin(), members_where.end());
 }
 
@@ -572,7 +588,8 @@ void Parser::density(const Block& b) {
   m.has_density = true;
 }
 
-int dof_number(const std::string& s, const InputLocation& where) {
+template <class Location>
+int dof_number(const std::string& s, const Location& where) {
   const long d = parse_int(s, where, "a degree of freedom 1-6");
   if (d < 1 || d > 6) throw InputError(where, "a degree of freedom 1-6", s);
   return static_cast<int>(d);
@@ -729,7 +746,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   model.nodes.reserve(nodes_.size());
   for (const auto& [id, x] : nodes_) model.nodes.push_back({id, x * L});
   model.index();
-  auto node_of = [&](int id, const InputLocation& where) {
+  auto node_of = [&](int id, const auto& where) {
     const int i = model.node_index(id);
     if (i < 0) throw InputError(where, "a node defined by *NODE", fmt::format("node {}", id));
     return i;
@@ -739,14 +756,14 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const auto& [name, ids] : nsets_) {
     std::vector<int> idx;
     idx.reserve(ids.size());
-    const std::vector<InputLocation>& where = nset_where_.at(name);
+    const std::vector<Where>& where = nset_where_.at(name);
     for (std::size_t i = 0; i < ids.size(); ++i) idx.push_back(node_of(ids[i], where[i]));
     std::sort(idx.begin(), idx.end());
     idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
     model.node_sets[name] = idx;
   }
   for (const auto& [name, ids] : elsets_) {
-    const std::vector<InputLocation>& where = elset_where_.at(name);
+    const std::vector<Where>& where = elset_where_.at(name);
     for (std::size_t i = 0; i < ids.size(); ++i)
       if (!element_index_.count(ids[i]))
         throw InputError(where[i], "elements defined by *ELEMENT (in ELSET " + name + ")", fmt::format("element {}", ids[i]));
@@ -757,7 +774,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   }
 
   // Elements.
-  std::map<int, std::size_t> beam_of_element;
+  std::unordered_map<int, std::size_t> beam_of_element;
   for (const RawElement& e : elements_) {
     std::vector<int> idx;
     for (int id : e.node_ids) idx.push_back(node_of(id, e.where));
@@ -826,7 +843,8 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     if (b.section < 0)
       throw InputError(elements_[element_index_[b.id]].where, "a *BEAM SECTION for every beam element", fmt::format("element {} has none", b.id));
     try {
-      beam_geometry(model, b);
+      beam_local_axes(model.nodes[static_cast<std::size_t>(b.node_a)].position, model.nodes[static_cast<std::size_t>(b.node_b)].position,
+                      model.sections[static_cast<std::size_t>(b.section)].n1_direction);
     } catch (const std::invalid_argument& e) {
       throw InputError(elements_[element_index_[b.id]].where, "a valid beam orientation", fmt::format("element {}: {}", b.id, e.what()));
     }

@@ -2,12 +2,14 @@
 #include "fem/modal_analysis.h"
 
 #include <Eigen/SparseCholesky>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numeric>
+#include <thread>
 
 #include "core/error.h"
 #include "fem/sparse_cholesky.h"
@@ -23,62 +25,76 @@ bool factorize(Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Spars
   s.compute(a);
   return s.info() == Eigen::Success;
 }
-Eigen::VectorXd solve(const SparseCholesky& s, const Eigen::Map<const Eigen::VectorXd>& b) { return s.solve(b); }
-Eigen::VectorXd solve(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::Map<const Eigen::VectorXd>& b) {
+Eigen::VectorXd solve(const SparseCholesky& s, const Eigen::VectorXd& b) { return s.solve(b); }
+Eigen::VectorXd solve(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::VectorXd& b) {
   return s.solve(b);
 }
 
-// y = M x for Spectra's M-inner products, which it takes several times per
-// Lanczos step: both triangles stored, a plain sparse product (about twice
-// as fast as a product with the lower triangle's self-adjoint view).
-class MassProduct {
- public:
-  using Scalar = double;
-  explicit MassProduct(const SparseMatrix& lower) {
-    SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
-    full_ = full;
-  }
-  Eigen::Index rows() const { return full_.rows(); }
-  Eigen::Index cols() const { return full_.cols(); }
-  void perform_op(const Scalar* x, Scalar* y) const {
-    Eigen::Map<const Eigen::VectorXd> in(x, full_.cols());
-    Eigen::Map<Eigen::VectorXd> out(y, full_.rows());
-    out.noalias() = full_ * in;
-  }
-
- private:
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> full_;
+// The mass matrix as M = S S^T, S = P^T L (L lower triangular, P a
+// permutation with (P v)_i = v_perm[i]).
+struct MassFactor {
+  SparseMatrix lower;
+  Eigen::VectorXi perm;
 };
 
-// y = (K - sigma M)^{-1} x, the operator Spectra iterates with.
+MassFactor mass_factor(const SparseMatrix& m, const SparseCholesky&) {
+  SparseCholesky chol;
+  if (!chol.factorize(m))
+    throw core::NumericalError("the mass matrix is not positive definite (a negative density or point mass?)");
+  SparseCholesky::ExplicitFactor f = chol.explicit_factor();
+  return {std::move(f.lower), std::move(f.perm)};
+}
+
+MassFactor mass_factor(const SparseMatrix& m, const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>&) {
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> llt(m);
+  if (llt.info() != Eigen::Success)
+    throw core::NumericalError("the mass matrix is not positive definite (a negative density or point mass?)");
+  MassFactor f;
+  f.lower = llt.matrixL();
+  // Eigen's P moves entry i to indices(i); ours reads perm[i] into i.
+  const Eigen::VectorXi& to = llt.permutationP().indices();
+  f.perm.resize(to.size());
+  for (Eigen::Index i = 0; i < to.size(); ++i) f.perm(to(i)) = static_cast<int>(i);
+  return f;
+}
+
+// The shift-invert operator in standard form. With M = S S^T and
+// A = K - sigma M, the generalised problem K phi = lambda M phi becomes
+//     C y = nu y,   C = S^T A^{-1} S,   nu = 1 / (lambda - sigma),   phi = S^{-T} y,
+// a symmetric standard problem: Spectra's Lanczos then needs no M-inner
+// products (which cost a sparse product each, five to eight per step).
 template <class Solver>
-class ShiftInvertOperator {
+class StandardFormOperator {
  public:
   using Scalar = double;
-  ShiftInvertOperator(const SparseMatrix& k, const SparseMatrix& m, Solver& solver)
-      : k_(k), m_(m), solver_(solver) {}
-  Eigen::Index rows() const { return k_.rows(); }
-  Eigen::Index cols() const { return k_.cols(); }
-  void set_shift(const Scalar& sigma) {
-    const SparseMatrix a = (k_ - sigma * m_).pruned();
-    if (!factorize(solver_, a))
-      throw core::NumericalError(
-          "the factorisation of K - sigma M failed: the stiffness matrix is not positive semi-definite "
-          "or the mass matrix is not positive definite (check for a massless degree of freedom, a negative "
-          "stiffness or density)");
-  }
+  StandardFormOperator(const Solver& solver, const MassFactor& mass)
+      : solver_(solver), mass_(mass), a_(mass.lower.rows()), b_(mass.lower.rows()) {}
+  Eigen::Index rows() const { return mass_.lower.rows(); }
+  Eigen::Index cols() const { return mass_.lower.rows(); }
   void perform_op(const Scalar* x, Scalar* y) const {
-    Eigen::Map<const Eigen::VectorXd> in(x, k_.rows());
-    Eigen::Map<Eigen::VectorXd> out(y, k_.rows());
-    out = solve(solver_, in);
+    const Eigen::Index n = rows();
+    Eigen::Map<const Eigen::VectorXd> in(x, n);
+    Eigen::Map<Eigen::VectorXd> out(y, n);
+    a_.noalias() = mass_.lower * in;                           // L x
+    for (Eigen::Index i = 0; i < n; ++i) b_(mass_.perm(i)) = a_(i);  // S x = P^T L x
+    a_ = solve(solver_, b_);                                     // A^{-1} S x
+    for (Eigen::Index i = 0; i < n; ++i) b_(i) = a_(mass_.perm(i));  // P ...
+    out.noalias() = mass_.lower.transpose() * b_;               // S^T ... = L^T P ...
     ++solves_;
+  }
+  // phi = S^{-T} y = P^T L^{-T} y.
+  Eigen::VectorXd back_transform(const Eigen::VectorXd& y) const {
+    const Eigen::VectorXd u = mass_.lower.transpose().triangularView<Eigen::Upper>().solve(y);
+    Eigen::VectorXd phi(u.size());
+    for (Eigen::Index i = 0; i < u.size(); ++i) phi(mass_.perm(i)) = u(i);
+    return phi;
   }
   int solves() const { return solves_; }
 
  private:
-  const SparseMatrix& k_;
-  const SparseMatrix& m_;
-  Solver& solver_;
+  const Solver& solver_;
+  const MassFactor& mass_;
+  mutable Eigen::VectorXd a_, b_;
   mutable int solves_ = 0;
 };
 
@@ -88,37 +104,51 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
   const Eigen::Index nev = std::min<Eigen::Index>(o.count, n - 1);
   const Eigen::Index ncv = std::min<Eigen::Index>(
       n, o.subspace > nev ? o.subspace : std::max<Eigen::Index>(2 * nev + 1, nev + 20));
-  using Op = ShiftInvertOperator<Solver>;
-  using BOp = MassProduct;
-  Op op(k, m, solver);
-  BOp bop(m);
-  if (o.progress) o.progress(fmt::format("factorising K - sigma M ({} equations)", n));
-  Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv, o.shift);
+  if (o.progress) o.progress(fmt::format("factorising K - sigma M and M ({} equations)", n));
+  // The two factorisations are independent: M's on a second thread.
+  MassFactor mass;
+  std::exception_ptr mass_error;
+  std::thread mass_thread([&] {
+    try {
+      mass = mass_factor(m, solver);
+    } catch (...) {
+      mass_error = std::current_exception();
+    }
+  });
+  const SparseMatrix a = (k - o.shift * m).pruned();
+  const bool factorized = factorize(solver, a);
+  mass_thread.join();
+  if (mass_error) std::rethrow_exception(mass_error);
+  if (!factorized)
+    throw core::NumericalError(
+        "the factorisation of K - sigma M failed: the stiffness matrix is not positive semi-definite "
+        "or the mass matrix is not positive definite (check for a massless degree of freedom, a negative "
+        "stiffness or density)");
+  using Op = StandardFormOperator<Solver>;
+  Op op(solver, mass);
+  Spectra::SymEigsSolver<Op> eigs(op, nev, ncv);
   if (o.progress) o.progress(fmt::format("Lanczos iteration for {} modes (subspace {})", nev, ncv));
   eigs.init();
-  const Eigen::Index converged =
-      eigs.compute(Spectra::SortRule::LargestMagn, o.max_iterations, o.tolerance, Spectra::SortRule::SmallestAlge);
+  const Eigen::Index converged = eigs.compute(Spectra::SortRule::LargestAlge, o.max_iterations, o.tolerance);
   if (eigs.info() != Spectra::CompInfo::Successful)
     throw core::NumericalError(fmt::format(
         "the eigensolver did not converge: {} of {} modes after {} restarts; try fewer modes, a shift "
         "nearer the wanted frequencies (--shift), or check the model for near-duplicate frequencies",
         converged, nev, eigs.num_iterations()));
   EigenSolution s;
-  Eigen::VectorXd values = eigs.eigenvalues();
-  Eigen::MatrixXd vectors = eigs.eigenvectors();
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(values.size()));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return values(a) < values(b); });
-  s.eigenvalues.resize(values.size());
-  s.vectors.resize(n, values.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    s.eigenvalues(static_cast<Eigen::Index>(i)) = values(order[i]);
-    Eigen::VectorXd v = vectors.col(order[i]);
+  const Eigen::VectorXd nu = eigs.eigenvalues();
+  const Eigen::MatrixXd y = eigs.eigenvectors();
+  // lambda = sigma + 1/nu: the largest nu are the lowest lambda, in order.
+  s.eigenvalues.resize(nu.size());
+  s.vectors.resize(n, nu.size());
+  for (Eigen::Index i = 0; i < nu.size(); ++i) {
+    s.eigenvalues(i) = o.shift + 1.0 / nu(i);
+    Eigen::VectorXd v = op.back_transform(y.col(i));
     // Deterministic sign: the largest component positive.
     Eigen::Index imax = 0;
     v.cwiseAbs().maxCoeff(&imax);
     if (v(imax) < 0) v = -v;
-    s.vectors.col(static_cast<Eigen::Index>(i)) = v;
+    s.vectors.col(i) = v;
   }
   s.iterations = static_cast<int>(eigs.num_iterations());
   s.operator_solves = op.solves();
@@ -189,6 +219,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   eo.factorization = options.factorization;
   eo.progress = options.progress;
   EigenSolution es = lowest_eigenpairs(sys.stiffness, sys.mass, eo);
+  if (options.progress) options.progress("participation factors and effective masses");
 
   ModalResult result;
   result.free_dofs = dofs.free_count();

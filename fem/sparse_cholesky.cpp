@@ -100,4 +100,30 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::Ref<const Eigen::VectorXd>& b
   return x;
 }
 
+SparseCholesky::ExplicitFactor SparseCholesky::explicit_factor() const {
+  if (!impl_->factor) throw std::logic_error("SparseCholesky: no factor");
+  cholmod_common& c = impl_->common;
+  cholmod_factor* copy = cholmod_copy_factor(impl_->factor, &c);
+  if (!copy) throw std::runtime_error("CHOLMOD: cannot copy the factor (out of memory?)");
+  // To a simplicial, packed, monotonic LL^T factor, then to a sparse matrix.
+  cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, copy, &c);
+  cholmod_sparse* l = cholmod_factor_to_sparse(copy, &c);
+  ExplicitFactor out;
+  const int n = static_cast<int>(impl_->factor->n);
+  out.perm.resize(n);
+  const int* perm = static_cast<const int*>(impl_->factor->Perm);
+  for (int i = 0; i < n; ++i) out.perm(i) = perm ? perm[i] : i;
+  if (!l || l->itype != CHOLMOD_INT) {
+    cholmod_free_factor(&copy, &c);
+    throw std::runtime_error("CHOLMOD: cannot convert the factor (out of memory?)");
+  }
+  const int* lp = static_cast<const int*>(l->p);
+  const int* li = static_cast<const int*>(l->i);
+  const double* lx = static_cast<const double*>(l->x);
+  out.lower = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(n, n, lp[n], lp, li, lx);
+  cholmod_free_sparse(&l, &c);
+  cholmod_free_factor(&copy, &c);
+  return out;
+}
+
 }  // namespace framedyn::fem

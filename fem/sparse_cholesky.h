@@ -29,6 +29,14 @@ class SparseCholesky {
   void solve_in_place(const double* b, double* x) const;
   Eigen::Index size() const { return size_; }
 
+  // The factor as A = P^T L L^T P: L lower triangular (a copy, in LL^T form)
+  // and the permutation (perm[i] = original index of the i-th pivot).
+  struct ExplicitFactor {
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int> lower;
+    Eigen::VectorXi perm;
+  };
+  ExplicitFactor explicit_factor() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
