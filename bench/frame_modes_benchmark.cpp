@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -118,6 +119,27 @@ double max_relative_difference(const std::vector<double>& a, const std::vector<d
   return worst;
 }
 
+// Relative difference of each of framedyn's first `count` frequencies to the
+// nearest CalculiX frequency. Finely subdivided B31 models grow spurious
+// section-distortion modes in CalculiX (docs/calculix_peer.md); matching by
+// nearest value rather than by index leaves those out of the comparison.
+std::vector<double> nearest_match_differences(const std::vector<double>& framedyn, const std::vector<double>& calculix, std::size_t count) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < std::min(framedyn.size(), count); ++i) {
+    if (!(framedyn[i] > 0.0) || calculix.empty()) continue;
+    double best = 1e300;
+    for (double c : calculix) best = std::min(best, std::abs(c - framedyn[i]) / framedyn[i]);
+    out.push_back(best);
+  }
+  return out;
+}
+
+std::string median_and_max(std::vector<double> v) {
+  if (v.empty()) return "-";
+  std::sort(v.begin(), v.end());
+  return fmt::format("{:.2f} % / {:.2f} %", 100 * v[v.size() / 2], 100 * v.back());
+}
+
 std::string cell(const Measurement& m) {
   if (!m.ok) return m.note.empty() ? "not run" : "failed";
   return fmt::format("{:.3g} s, {:.0f} MiB", m.seconds, m.peak_mib);
@@ -148,7 +170,7 @@ int main(int argc, char** argv) {
 
   std::ofstream csv(out / "frame_modes_benchmark.csv");
   csv << "target_dofs,subdivisions,modes,code,ok,wall [s],peak_memory [MiB],f1 [Hz],f_last [Hz],max_rel_diff_vs_framedyn\n";
-  fmt::print("| DOF | modes | framedyn (CHOLMOD) | Eigen SimplicialLDLT | CalculiX | LDLT / CHOLMOD time | CalculiX / framedyn time | max freq. diff. LDLT | max freq. diff. CalculiX (first 10) |\n");
+  fmt::print("| DOF | modes | framedyn (CHOLMOD) | Eigen SimplicialLDLT | CalculiX | LDLT / CHOLMOD time | CalculiX / framedyn time | max freq. diff. LDLT | CalculiX nearest-match diff., first 10 modes (median / max) |\n");
   fmt::print("|---|---|---|---|---|---|---|---|---|\n");
   for (double target : sizes) {
     const int k = testing::subdivisions_for(base, static_cast<long>(target));
@@ -167,7 +189,7 @@ int main(int argc, char** argv) {
       const std::string ld_ratio = (fd.ok && ld.ok) ? fmt::format("{:.2f}", ld.seconds / fd.seconds) : "-";
       const std::string cx_ratio = (fd.ok && cx.ok) ? fmt::format("{:.1f}", cx.seconds / fd.seconds) : "-";
       const std::string ld_diff = (fd.ok && ld.ok) ? fmt::format("{:.1e}", max_relative_difference(fd.frequencies, ld.frequencies, 1000)) : "-";
-      const std::string cx_diff = (fd.ok && cx.ok) ? fmt::format("{:.2f} %", 100 * max_relative_difference(fd.frequencies, cx.frequencies, 10)) : "-";
+      const std::string cx_diff = (fd.ok && cx.ok) ? median_and_max(nearest_match_differences(fd.frequencies, cx.frequencies, 10)) : "-";
       fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", dofs, modes, cell(fd), cell(ld), cell(cx), ld_ratio, cx_ratio, ld_diff, cx_diff);
       std::cout.flush();
       for (const auto& [name, m] : {std::pair<std::string, const Measurement*>{"framedyn_cholmod", &fd}, {"framedyn_simplicial_ldlt", &ld}, {"calculix", &cx}}) {
