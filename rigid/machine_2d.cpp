@@ -1,0 +1,354 @@
+// The 2-D machine on the multibody assembly; see machine_2d.h and
+// docs/theory/rigid.md.
+#include "rigid/machine_2d.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/error.h"
+
+namespace framedyn::rigid {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+constexpr int X = 0, Y = 1, Z = 2;
+
+Eigen::Vector3d in_3d(const Eigen::Vector2d& p) { return {p.x(), 0.0, p.y()}; }
+
+std::vector<std::string> coordinate_names(Attachment a) {
+  if (a == Attachment::plow) return {"x", "z", "theta_y", "psi", "w", "theta_v"};
+  return {"x", "z", "theta_y", "w", "theta_v"};
+}
+
+int index_of(const std::vector<std::string>& names, const std::string& n) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == n) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+FrameMassProperties frame_mass_properties(const Frame2D& frame, const Cab2D& cab) {
+  FrameMassProperties f;
+  const double tube_mass = frame.mass_per_length * frame.length;  // rho FLT (errata to Eq. C.2)
+  const double tube_x = frame.front_end + frame.length / 2.0;
+  double sum_m = tube_mass, sum_mx = tube_mass * tube_x, sum_mz = 0.0;  // the tube lies on Z = 0
+  for (const AddedMass& a : frame.added_masses) {
+    sum_m += a.mass;
+    sum_mx += a.mass * a.position.x();
+    sum_mz += a.mass * a.position.y();
+  }
+  if (!(sum_m > 0.0)) throw std::invalid_argument("the frame has no mass");
+  f.mass = sum_m;
+  f.cg = {sum_mx / sum_m, sum_mz / sum_m};
+  f.inertia = tube_mass * (frame.length * frame.length / 12.0 + std::pow(tube_x - f.cg.x(), 2) + f.cg.y() * f.cg.y());
+  for (const AddedMass& a : frame.added_masses) f.inertia += a.inertia + a.mass * (a.position - f.cg).squaredNorm();
+  // Eq. C.3: the reference height includes the cab, whose X motion the frame carries.
+  f.reference = {f.cg.x(), (sum_mz + cab.mass * cab.cg.y()) / (sum_m + cab.mass)};
+  return f;
+}
+
+Machine2D::Machine2D(const Machine2DParameters& p)
+    : p_(p), frame_(frame_mass_properties(p.frame, p.cab)), model_(coordinate_names(p.attachment)) {
+  const std::vector<std::string>& names = model_.coordinate_names();
+  const int n = model_.size();
+  const int ix = index_of(names, "x"), iz = index_of(names, "z"), ity = index_of(names, "theta_y");
+  const int iw = index_of(names, "w"), itv = index_of(names, "theta_v"), ipsi = index_of(names, "psi");
+  const Eigen::Vector3d ref = in_3d(frame_.reference);
+
+  // Frame: a point p moves by (x, z) + theta_y y x (p - ref).
+  auto frame_jacobian = [&](const Eigen::Vector3d& point) {
+    Jacobian j = Jacobian::Zero(3, n);
+    j(X, ix) = 1.0;
+    j(Z, iz) = 1.0;
+    const Eigen::Vector3d turn = Eigen::Vector3d::UnitY().cross(point - ref);
+    j.col(ity) += turn;
+    return j;
+  };
+  Body frame;
+  frame.name = "frame";
+  frame.mass = frame_.mass;
+  frame.inertia(Y, Y) = frame_.inertia;
+  frame.translation = frame_jacobian(in_3d(frame_.cg));
+  frame.rotation = Jacobian::Zero(3, n);
+  frame.rotation(Y, ity) = 1.0;
+  const int frame_body = model_.add_body(frame);
+
+  // Cab: X tied to the frame at the cab's c.g., Z = w, pitch theta_v.
+  Body cab;
+  cab.name = "cab";
+  cab.mass = p.cab.mass;
+  cab.inertia(Y, Y) = p.cab.inertia;
+  cab.translation = Jacobian::Zero(3, n);
+  cab.translation.row(X) = frame_jacobian(in_3d(p.cab.cg)).row(X);
+  cab.translation(Z, iw) = 1.0;
+  cab.rotation = Jacobian::Zero(3, n);
+  cab.rotation(Y, itv) = 1.0;
+  const int cab_body = model_.add_body(cab);
+
+  auto frame_point = [&](const std::string& name, const Eigen::Vector2d& p2) { return model_.add_point({name, frame_jacobian(in_3d(p2))}); };
+  auto cab_point = [&](const std::string& name, const Eigen::Vector2d& p2) {
+    return model_.add_body_point(name, cab_body, in_3d(p2 - p.cab.cg));
+  };
+  (void)frame_body;
+
+  const Eigen::Vector3d ground_normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));
+  const Eigen::Vector3d ground_tangent(std::cos(p.ground_slope), 0.0, -std::sin(p.ground_slope));  // rearward along the ground
+  soil_velocity_ = p.forward_speed * std::cos(p.ground_slope);
+
+  // Cab mounts (elements 12 and 14): vertical between frame and cab.
+  for (const auto& [name, mount] : {std::pair<std::string, const CabMount*>{"cab_mount_front", &p.cab.front}, {"cab_mount_rear", &p.cab.rear}}) {
+    const int a = frame_point(name + "_frame", mount->position);
+    const int b = cab_point(name + "_cab", mount->position);
+    model_.add_element({name, a, b, Eigen::Vector3d::UnitZ(), mount->vertical.stiffness, mount->vertical.damping});
+  }
+  // Tires: normal and tractive, at the contact points, to the ground.
+  for (const auto& [name, tire] : {std::pair<std::string, const Tire2D*>{"front_tire", &p.front_tire}, {"rear_tire", &p.rear_tire}}) {
+    const int c = frame_point(name + "_contact", tire->contact);
+    model_.add_element({name + "_normal", c, -1, ground_normal, tire->normal.stiffness, tire->normal.damping});
+    model_.add_element({name + "_tractive", c, -1, ground_tangent, tire->tractive.stiffness, tire->tractive.damping});
+  }
+
+  if (p.attachment == Attachment::plow) {
+    const Plow2D& pl = p.plow;
+    const Eigen::Vector2d ratios = four_bar_velocity_ratios(pl.linkage);  // (CB, lower arm)
+    const double cb = ratios(0);
+    // Upper arm: rotation psi about pin 6 (absolute). Pin 9 moves with it.
+    const Jacobian j6 = frame_jacobian(in_3d(pl.linkage.upper_pivot));
+    auto arm_point = [&](const Eigen::Vector2d& p2) {
+      Jacobian j = j6;
+      j.col(ipsi) += Eigen::Vector3d::UnitY().cross(in_3d(p2 - pl.linkage.upper_pivot));
+      return j;
+    };
+    const Jacobian j9 = arm_point(pl.linkage.upper_joint);
+    // Shank rotation phi_s = CB psi + (1 - CB) theta_y (Eq. A.10 in the +Y sense).
+    Eigen::RowVectorXd shank_rotation = Eigen::RowVectorXd::Zero(n);
+    shank_rotation(ipsi) = cb;
+    shank_rotation(ity) = 1.0 - cb;
+    auto shank_point = [&](const Eigen::Vector2d& p2) {
+      Jacobian j = j9;
+      j += Eigen::Vector3d::UnitY().cross(in_3d(p2 - pl.linkage.upper_joint)) * shank_rotation;
+      return j;
+    };
+    Body plow;
+    plow.name = "plow";
+    plow.mass = pl.mass;
+    plow.inertia(Y, Y) = pl.inertia;
+    plow.translation = shank_point(pl.cg);
+    plow.rotation = Jacobian::Zero(3, n);
+    plow.rotation.row(Y) = shank_rotation;
+    model_.add_body(plow);
+    blade_point_ = model_.add_point({"blade", shank_point(pl.blade_point)});
+    shaker_point_ = model_.add_point({"shaker", shank_point(pl.shaker_point)});
+    const int bounce = model_.add_point({"bounce_tire", shank_point(pl.bounce_tire_point)});
+    model_.add_element({"bounce_tire", bounce, -1, ground_normal, pl.bounce_tire.stiffness, pl.bounce_tire.damping});
+    const int cyl_frame = frame_point("lift_cylinder_frame", pl.cylinder_frame_point);
+    const int cyl_arm = model_.add_point({"lift_cylinder_arm", arm_point(pl.cylinder_arm_point)});
+    const Eigen::Vector2d axis = pl.cylinder_arm_point - pl.cylinder_frame_point;
+    if (!(axis.norm() > 0.0)) throw std::invalid_argument("the lift cylinder has zero length");
+    model_.add_element({"lift_cylinder", cyl_frame, cyl_arm, in_3d(axis), pl.lift_cylinder.stiffness, pl.lift_cylinder.damping});
+  } else if (p.attachment == Attachment::chain) {
+    blade_point_ = frame_point("boom", p.chain.boom_point);
+    chain_point_ = frame_point("chain_pin", p.chain.chain_pin);
+  }
+  if (blade_point_ >= 0) {
+    soil_elements_.push_back(model_.add_element({"soil_x", blade_point_, -1, Eigen::Vector3d::UnitX(), p.soil.stiffness, p.soil.damping}));
+    soil_elements_.push_back(model_.add_element({"soil_z", blade_point_, -1, Eigen::Vector3d::UnitZ(), p.soil.stiffness, p.soil.damping}));
+  }
+
+  check_definiteness(model_);
+  m_ = model_.mass_matrix();
+  k_full_ = model_.stiffness_matrix();
+  c_full_ = model_.damping_matrix();
+  // The soil's share, to switch between full and reduced values.
+  Eigen::MatrixXd k_soil = Eigen::MatrixXd::Zero(n, n), c_soil = Eigen::MatrixXd::Zero(n, n);
+  for (int e : soil_elements_) {
+    const Eigen::RowVectorXd g = model_.elongation_map(e);
+    k_soil += p.soil.stiffness * g.transpose() * g;
+    c_soil += p.soil.damping * g.transpose() * g;
+  }
+  k_cut_ = k_full_;
+  c_cut_ = c_full_;
+  k_back_ = k_full_ - (1.0 - p.soil.stiffness_reduction) * k_soil;
+  c_back_ = c_full_ - (1.0 - p.soil.damping_reduction) * c_soil;
+  m_solver_.compute(m_);
+}
+
+int Machine2D::coordinate(const std::string& name) const { return index_of(model_.coordinate_names(), name); }
+
+Eigen::VectorXd Machine2D::static_deflection() const {
+  // Gravity acts along -Z on every body: Q = sum m T^T (0, 0, -g).
+  Eigen::VectorXd q_gravity = Eigen::VectorXd::Zero(size());
+  for (const Body& b : model_.bodies()) q_gravity += b.translation.transpose() * Eigen::Vector3d(0, 0, -p_.gravity * b.mass);
+  return k_full_.ldlt().solve(q_gravity);
+}
+
+std::vector<double> Machine2D::static_element_forces() const {
+  const Eigen::VectorXd qs = static_deflection();
+  std::vector<double> f;
+  for (std::size_t e = 0; e < model_.elements().size(); ++e)
+    f.push_back(-model_.elements()[e].stiffness * model_.elongation_map(static_cast<int>(e)).dot(qs));
+  return f;
+}
+
+double Machine2D::soil_line_at(double t) const {
+  return cutting_ ? soil_line_ : soil_line_ + soil_velocity_ * (t - soil_line_time_);
+}
+
+void Machine2D::reset(double t, const Eigen::VectorXd& q) {
+  cutting_ = true;
+  soil_line_time_ = t;
+  soil_line_ = blade_point_ >= 0 ? model_.points()[static_cast<std::size_t>(blade_point_)].displacement.row(X).dot(q) : 0.0;
+  full_teeth_ = true;
+  if (p_.attachment == Attachment::chain && p_.chain.chain_speed > 0 && p_.chain.tooth_spacing > 0) {
+    const double period = p_.chain.tooth_spacing / p_.chain.chain_speed;
+    const double mtig = std::floor(p_.chain.length_in_ground / p_.chain.tooth_spacing);
+    const double atch = (p_.chain.length_in_ground - p_.chain.tooth_spacing * mtig) / p_.chain.tooth_spacing * period;
+    full_teeth_ = std::fmod(t, period) < atch;
+  }
+}
+
+double Machine2D::tooth_force() const {
+  const Chain2D& c = p_.chain;
+  const double reh = cutting_ ? 1.0 : c.static_reduction, red = cutting_ ? 1.0 : c.damping_reduction;
+  return c.tooth_static_force * reh + c.chain_speed * c.tooth_damping * red;  // FTH, Appendix D
+}
+
+double Machine2D::chain_force(double t) const {
+  if (p_.attachment != Attachment::chain) return 0.0;
+  const Chain2D& c = p_.chain;
+  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
+  const double teeth = mtig - 1.0 + (full_teeth_ ? 1.0 : 0.0);  // NTD = MTIG - 1 + XNN (Eq. D.3)
+  const double ramp = c.ramp_time > 0.0 ? std::min(1.0, std::max(0.0, t / c.ramp_time)) : 1.0;
+  return ramp * tooth_force() * teeth;  // RCH (Eq. 2.41)
+}
+
+Eigen::VectorXd Machine2D::forcing(double t) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(size());
+  // Reference ground inputs (Eqs. 2.20, 2.26): FK + FC at the tires and bounce tire.
+  auto ground = [&](const std::string& element, const GroundInput& in) {
+    if (in.kind == GroundInput::Kind::none) return;
+    const int e = model_.element_index(element);
+    const SpringDamper& el = model_.elements()[static_cast<std::size_t>(e)];
+    // The ground end moves by xr along the element's direction: elongation = G q - xr.
+    f += model_.elongation_map(e).transpose() * (el.stiffness * in.displacement(t) + el.damping * in.velocity(t));
+  };
+  ground("front_tire_normal", p_.front_tire.normal_input);
+  ground("front_tire_tractive", p_.front_tire.tractive_input);
+  ground("rear_tire_normal", p_.rear_tire.normal_input);
+  ground("rear_tire_tractive", p_.rear_tire.tractive_input);
+  if (p_.attachment == Attachment::plow) {
+    ground("bounce_tire", p_.plow.bounce_input);
+    // The shaker's in-plane component acts along the shank (n*, Eq. 2.28).
+    const Plow2D& pl = p_.plow;
+    const Eigen::Vector2d shank = (pl.linkage.upper_joint - pl.linkage.lower_joint).normalized();
+    const double force = pl.shaker_amplitude * std::sin(kTwoPi * pl.shaker_frequency * t + pl.shaker_phase);
+    f += model_.generalized_force(shaker_point_, force * in_3d(shank));
+  } else if (p_.attachment == Attachment::chain) {
+    const double rch = chain_force(t);
+    const Eigen::Vector3d force = rch * Eigen::Vector3d(std::cos(p_.chain.chain_angle), 0.0, -std::sin(p_.chain.chain_angle));
+    f += model_.generalized_force(chain_point_, force);
+    f(coordinate("theta_y")) -= rch * p_.chain.moment_arm;  // -RMCH (Eq. 2.33)
+  }
+  return f;
+}
+
+void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const {
+  const Eigen::MatrixXd& k = cutting_ ? k_cut_ : k_back_;
+  const Eigen::MatrixXd& c = cutting_ ? c_cut_ : c_back_;
+  Eigen::VectorXd f = forcing(t) - k * q - c * v;
+  // The soil moves rearward past the machine at VS: the blade dampers see the
+  // blade velocity relative to it (Eq. 2.23), a reference velocity (VS cos, -VS sin).
+  if (blade_point_ >= 0 && p_.forward_speed != 0.0) {
+    const double scale = cutting_ ? 1.0 : p_.soil.damping_reduction;
+    const Eigen::Vector3d v_soil(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope));
+    f += model_.points()[static_cast<std::size_t>(blade_point_)].displacement.transpose() * (scale * p_.soil.damping * v_soil);
+  }
+  a = m_solver_.solve(f);
+}
+
+Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  (void)t;
+  if (blade_point_ < 0) return Eigen::Vector2d::Zero();
+  const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
+  const Eigen::Vector3d d = j * q, vel = j * v;
+  const double rk = p_.soil.stiffness * (cutting_ ? 1.0 : p_.soil.stiffness_reduction);
+  const double rc = p_.soil.damping * (cutting_ ? 1.0 : p_.soil.damping_reduction);
+  // Eq. 2.37: RPF = [dX5 RK5 + (VX5 - VS cos) RC5] l + [dZ5 RK5 + (VZ5 + VS sin) RC5] n
+  return {d(X) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
+          d(Z) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
+}
+
+int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
+
+void Machine2D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
+  if (blade_point_ < 0) return;
+  const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
+  if (cutting_) {
+    // Cutting ends when the blade moves rearward faster than the soil flows past.
+    g[0] = j.row(X).dot(v) - soil_velocity_;
+  } else {
+    // Cutting resumes when the blade reaches the unpenetrated soil line again.
+    g[0] = j.row(X).dot(q) - soil_line_at(t);
+  }
+}
+
+std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
+                                const std::vector<int>& directions) {
+  (void)v;
+  if (fired.empty() || fired[0] != 0) return {};
+  const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
+  const double x5 = j.row(X).dot(q);
+  if (cutting_ && directions[0] > 0) {
+    cutting_ = false;
+    soil_line_ = x5;
+    soil_line_time_ = t;
+    return fmt::format("blade backs off at x5 = {:.6g} m", x5);
+  }
+  if (!cutting_ && directions[0] < 0) {
+    cutting_ = true;
+    soil_line_ = x5;
+    soil_line_time_ = t;
+    return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
+  }
+  return {};
+}
+
+double Machine2D::next_scheduled_change(double t) const {
+  if (p_.attachment != Attachment::chain) return std::numeric_limits<double>::infinity();
+  const Chain2D& c = p_.chain;
+  double next = std::numeric_limits<double>::infinity();
+  if (c.ramp_time > t) next = c.ramp_time;
+  if (c.chain_speed > 0 && c.tooth_spacing > 0) {
+    const double period = c.tooth_spacing / c.chain_speed;
+    const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
+    const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
+    const double k = std::floor(t / period);
+    for (double candidate : {k * period + atch, (k + 1) * period, (k + 1) * period + atch})
+      if (candidate > t * (1 + 1e-14) + 1e-15) next = std::min(next, candidate);
+  }
+  return next;
+}
+
+std::string Machine2D::on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  (void)q;
+  (void)v;
+  if (p_.attachment != Attachment::chain) return {};
+  const Chain2D& c = p_.chain;
+  const double period = c.tooth_spacing / c.chain_speed;
+  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
+  const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
+  const double tau = t - std::floor(t / period + 1e-9) * period;
+  const bool full = tau < atch - 1e-12 * period;
+  if (full != full_teeth_) {
+    full_teeth_ = full;
+    return fmt::format("{} teeth digging", static_cast<int>(mtig - 1 + (full ? 1 : 0)));
+  }
+  return {};
+}
+
+}  // namespace framedyn::rigid

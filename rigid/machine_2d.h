@@ -1,0 +1,199 @@
+// The 2-D vehicle model of the thesis's Chapter II (program CMW2D) on the
+// multibody assembly: frame (uniform section plus added masses, Appendix C),
+// cab (w, theta_v; its X motion tied to the frame, Eq. 2.8), front and rear
+// tires (normal and tractive spring-dampers along the ground slope), and
+// either the vibratory plow (four-bar linkage, Appendix A; lift cylinder,
+// Appendix B; bounce tire; rotating shaker force, Eq. 2.28) or the digging
+// chain (boom rigid on the frame, chain force and moment, Eq. 2.33, tooth
+// force of Appendix D), with the soil law of Eq. 2.36 at the blade or boom.
+//
+// Coordinates (fixed axes X rearward, Z up, rotations about +Y):
+//   plow:  q = (x, z, theta_y, psi, w, theta_v)
+//   chain: q = (x, z, theta_y, w, theta_v)
+//   none:  q = (x, z, theta_y, w, theta_v)
+// x, z: displacement of the frame reference point (the thesis's c.g. point,
+// Eqs. C.3-C.4), m; theta_y: frame pitch, rad; psi: upper plow arm rotation,
+// rad; w: cab vertical displacement, m; theta_v: cab pitch, rad.
+// All values SI. docs/theory/rigid.md.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+#include "rigid/ground_input.h"
+#include "rigid/multibody.h"
+#include "rigid/plow_linkage.h"
+#include "rigid/switched_system.h"
+
+namespace framedyn::rigid {
+
+struct SpringDamperValues {
+  double stiffness = 0.0;  // N/m
+  double damping = 0.0;    // N s/m
+};
+
+// A mass rigidly attached to the frame (engine, reel, ballast, chain boom).
+struct AddedMass {
+  std::string name;
+  double mass = 0.0;                     // CCM_i, kg
+  double inertia = 0.0;                  // CCI_i, kg m^2 about its own c.g. (Y axis)
+  Eigen::Vector2d position{0, 0};        // (XIM_i, ZIM_i), m
+  Eigen::Vector2d attachment{0, 0};      // (XIC_i, ZIC_i): where its connection force acts on the frame
+};
+
+struct Frame2D {
+  double front_end = 0.0;           // X of the uniform section's front end (-FLF), m
+  double length = 0.0;              // FLT, m
+  double mass_per_length = 0.0;     // rho, kg/m
+  std::vector<AddedMass> added_masses;  // up to 30
+};
+
+struct CabMount {
+  Eigen::Vector2d position{0, 0};   // on frame and cab alike at equilibrium, m
+  SpringDamperValues vertical;
+};
+
+struct Cab2D {
+  double mass = 0.0, inertia = 0.0;  // M3, I3
+  Eigen::Vector2d cg{0, 0};
+  CabMount front, rear;              // elements 12 and 14
+};
+
+struct Tire2D {
+  Eigen::Vector2d contact{0, 0};     // contact point (both tires of the axle together)
+  SpringDamperValues normal, tractive;
+  GroundInput normal_input, tractive_input;
+};
+
+struct SoilLaw {
+  double stiffness = 0.0;            // K5, N/m (both X and Z at the blade point)
+  double damping = 0.0;              // C5, N s/m
+  double stiffness_reduction = 0.0;  // REK, 0..1, while the blade moves in soil already cut
+  double damping_reduction = 1.0;    // REC, 0..1
+};
+
+struct Plow2D {
+  double mass = 0.0, inertia = 0.0;  // M2, I2: all on the shank (link l2)
+  Eigen::Vector2d cg{0, 0};
+  FourBarGeometry linkage;
+  Eigen::Vector2d blade_point{0, 0};       // point 5
+  Eigen::Vector2d shaker_point{0, 0};      // point 22
+  double shaker_amplitude = 0.0;           // N, the rotating force's magnitude
+  double shaker_frequency = 0.0;           // Hz
+  double shaker_phase = 0.0;               // rad
+  Eigen::Vector2d bounce_tire_point{0, 0}; // point 18
+  SpringDamperValues bounce_tire;          // K8, C8 (along the ground normal)
+  GroundInput bounce_input;
+  Eigen::Vector2d cylinder_frame_point{0, 0};  // point 7
+  Eigen::Vector2d cylinder_arm_point{0, 0};    // point 8, on the upper arm
+  SpringDamperValues lift_cylinder;            // K7, C7
+};
+
+struct Chain2D {
+  Eigen::Vector2d boom_point{0, 0};  // point 5, where the soil acts on the boom
+  Eigen::Vector2d chain_pin{0, 0};   // point 6, where RCH and RMCH act on the frame
+  double chain_angle = 0.0;          // theta_ch, rad
+  double moment_arm = 0.0;           // l2 of Eq. 2.32, m
+  double tooth_static_force = 0.0;   // FTG, N
+  double tooth_damping = 0.0;        // CCH, N s/m
+  double chain_speed = 0.0;          // VCH, m/s
+  double static_reduction = 1.0;     // REH, while the teeth back off
+  double damping_reduction = 1.0;    // RED
+  double tooth_spacing = 0.0;        // TS, m
+  double length_in_ground = 0.0;     // LC, m
+  double ramp_time = 0.0;            // linear start-up, s
+};
+
+enum class Attachment { none, plow, chain };
+
+struct Machine2DParameters {
+  double ground_slope = 0.0;     // theta_g, rad
+  double forward_speed = 0.0;    // VS, m/s, positive forward (-X)
+  double gravity = 9.80665;      // m/s^2, for static forces
+  Frame2D frame;
+  Cab2D cab;
+  Tire2D front_tire, rear_tire;
+  Attachment attachment = Attachment::plow;
+  Plow2D plow;
+  Chain2D chain;
+  SoilLaw soil;
+};
+
+// The frame's mass, c.g. and pitch inertia about its c.g. (Appendix C,
+// Eqs. C.2, C.4, C.5 with the errata's rho FLT), and the reference point of
+// x, z, theta_y (Eqs. C.3-C.4: the cab's mass enters the reference height).
+struct FrameMassProperties {
+  double mass = 0.0;              // M1
+  Eigen::Vector2d cg{0, 0};       // of M1
+  double inertia = 0.0;           // about cg
+  Eigen::Vector2d reference{0, 0};  // (XCG, ZCG) of the thesis
+};
+FrameMassProperties frame_mass_properties(const Frame2D& frame, const Cab2D& cab);
+
+// The assembled 2-D machine: its multibody model, and the switched dynamics
+// (soil law, chain teeth, shaker) for the integrators.
+class Machine2D : public SwitchedSystem {
+ public:
+  explicit Machine2D(const Machine2DParameters& p);
+
+  const Multibody& model() const { return model_; }
+  const Machine2DParameters& parameters() const { return p_; }
+  const FrameMassProperties& frame_mass() const { return frame_; }
+  // Index of a coordinate by name ("x", "psi", ...), -1 if absent.
+  int coordinate(const std::string& name) const;
+
+  // K and C with the soil law at full value (the blade cutting): for modes.
+  Eigen::MatrixXd stiffness_matrix() const { return k_full_; }
+  Eigen::MatrixXd damping_matrix() const { return c_full_; }
+  Eigen::MatrixXd mass_matrix() const { return m_; }
+
+  // Static equilibrium under gravity from the unloaded springs: q_static and
+  // the static force in every element (compression positive).
+  Eigen::VectorXd static_deflection() const;
+  std::vector<double> static_element_forces() const;
+
+  // SwitchedSystem
+  int size() const override { return model_.size(); }
+  void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
+  int event_count() const override;
+  void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
+  std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
+                       const std::vector<int>& directions) override;
+  double next_scheduled_change(double t) const override;
+  std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
+
+  // Resets the discrete state for a run starting at t with (q, v): blade cutting, soil line at the blade.
+  void reset(double t, const Eigen::VectorXd& q);
+
+  // Forces for recovery at a state. Plow resultant RPF (Eq. 2.37), N, in (X, Z).
+  Eigen::Vector2d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  double chain_force(double t) const;  // RCH, N
+  bool cutting() const { return cutting_; }
+  double soil_line() const { return soil_line_; }
+  double soil_line_at(double t) const;
+
+  // Element and point indices.
+  int blade_point() const { return blade_point_; }
+  const std::vector<int>& soil_elements() const { return soil_elements_; }
+
+ private:
+  Machine2DParameters p_;
+  FrameMassProperties frame_;
+  Multibody model_;
+  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, c_cut_, k_back_, c_back_;
+  Eigen::LDLT<Eigen::MatrixXd> m_solver_;
+  int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
+  std::vector<int> soil_elements_;
+  // Discrete state.
+  bool cutting_ = true;
+  double soil_line_ = 0.0, soil_line_time_ = 0.0;  // x_s at soil_line_time_ (moving at VS cos theta_g while backing)
+  double soil_velocity_ = 0.0;                     // VS cos theta_g, m/s along +X
+  bool full_teeth_ = true;                         // XNN = 1
+
+  Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part
+  double tooth_force() const;
+};
+
+}  // namespace framedyn::rigid
