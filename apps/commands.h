@@ -12,5 +12,6 @@ namespace framedyn::apps {
 // Registers the subcommand; `run` is set to the function that executes it.
 void add_modes_command(CLI::App& app, std::function<int()>& run);
 void add_static_command(CLI::App& app, std::function<int()>& run);
+void add_run_command(CLI::App& app, std::function<int()>& run);
 
 }  // namespace framedyn::apps

@@ -57,6 +57,10 @@ double UnitSystem::to_si_factor(Quantity q) const {
     case Quantity::density: return M / (L * L * L);
     case Quantity::translational_stiffness: return F / L;
     case Quantity::rotational_stiffness: return F * L;
+    case Quantity::translational_damping: return F / L;
+    case Quantity::velocity: return L;
+    case Quantity::mass_per_length: return M / L;
+    case Quantity::force_per_length: return F / L;
     case Quantity::angle: return 1.0;
     case Quantity::frequency: return 1.0;
     case Quantity::time: return 1.0;
@@ -80,6 +84,10 @@ std::string UnitSystem::label(Quantity q) const {
     case Quantity::density: return mass_label_ + "/" + L + "^3";
     case Quantity::translational_stiffness: return F + "/" + L;
     case Quantity::rotational_stiffness: return F + "*" + L + "/rad";
+    case Quantity::translational_damping: return F + "*s/" + L;
+    case Quantity::velocity: return L + "/s";
+    case Quantity::mass_per_length: return mass_label_ + "/" + L;
+    case Quantity::force_per_length: return F + "/" + L;
     case Quantity::angle: return "rad";
     case Quantity::frequency: return "Hz";
     case Quantity::time: return "s";

@@ -23,6 +23,10 @@ enum class Quantity {
   density,                 // mass / length^3
   translational_stiffness, // force / length
   rotational_stiffness,    // moment / radian
+  translational_damping,   // force * time / length
+  velocity,                // length / time
+  mass_per_length,         // mass / length
+  force_per_length,        // force / length (a weight per length)
   angle,                   // radian, same in every system
   frequency,               // hertz, same in every system
   time,

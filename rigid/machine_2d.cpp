@@ -203,28 +203,45 @@ void Machine2D::reset(double t, const Eigen::VectorXd& q) {
   cutting_ = true;
   soil_line_time_ = t;
   soil_line_ = blade_point_ >= 0 ? model_.points()[static_cast<std::size_t>(blade_point_)].displacement.row(X).dot(q) : 0.0;
-  full_teeth_ = true;
-  if (p_.attachment == Attachment::chain && p_.chain.chain_speed > 0 && p_.chain.tooth_spacing > 0) {
-    const double period = p_.chain.tooth_spacing / p_.chain.chain_speed;
-    const double mtig = std::floor(p_.chain.length_in_ground / p_.chain.tooth_spacing);
-    const double atch = (p_.chain.length_in_ground - p_.chain.tooth_spacing * mtig) / p_.chain.tooth_spacing * period;
-    full_teeth_ = std::fmod(t, period) < atch;
-  }
+  soil_history_.assign(1, {t, true, soil_line_});
+  full_teeth_ = full_teeth_at(t);
 }
 
-double Machine2D::tooth_force() const {
+bool Machine2D::full_teeth_at(double t) const {
   const Chain2D& c = p_.chain;
-  const double reh = cutting_ ? 1.0 : c.static_reduction, red = cutting_ ? 1.0 : c.damping_reduction;
+  if (p_.attachment != Attachment::chain || !(c.chain_speed > 0) || !(c.tooth_spacing > 0)) return true;
+  // Appendix D: within each tooth period TPCH, MTIG teeth dig for the first ATCH.
+  const double period = c.tooth_spacing / c.chain_speed;
+  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
+  const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
+  const double tau = t - std::floor(t / period + 1e-9) * period;
+  return tau < atch - 1e-12 * period;
+}
+
+Machine2D::SoilState Machine2D::soil_state_at(double t) const {
+  SoilState s = soil_history_.empty() ? SoilState{} : soil_history_.front();
+  for (const SoilState& h : soil_history_)
+    if (h.time <= t) s = h;
+  return s;
+}
+
+double Machine2D::tooth_force(bool cutting) const {
+  const Chain2D& c = p_.chain;
+  const double reh = cutting ? 1.0 : c.static_reduction, red = cutting ? 1.0 : c.damping_reduction;
   return c.tooth_static_force * reh + c.chain_speed * c.tooth_damping * red;  // FTH, Appendix D
 }
 
 double Machine2D::chain_force(double t) const {
   if (p_.attachment != Attachment::chain) return 0.0;
+  return chain_force(t, soil_state_at(t).cutting, full_teeth_at(t));
+}
+
+double Machine2D::chain_force(double t, bool cutting, bool full_teeth) const {
   const Chain2D& c = p_.chain;
   const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double teeth = mtig - 1.0 + (full_teeth_ ? 1.0 : 0.0);  // NTD = MTIG - 1 + XNN (Eq. D.3)
+  const double teeth = mtig - 1.0 + (full_teeth ? 1.0 : 0.0);  // NTD = MTIG - 1 + XNN (Eq. D.3)
   const double ramp = c.ramp_time > 0.0 ? std::min(1.0, std::max(0.0, t / c.ramp_time)) : 1.0;
-  return ramp * tooth_force() * teeth;  // RCH (Eq. 2.41)
+  return ramp * tooth_force(cutting) * teeth;  // RCH (Eq. 2.41)
 }
 
 Eigen::VectorXd Machine2D::forcing(double t) const {
@@ -249,7 +266,7 @@ Eigen::VectorXd Machine2D::forcing(double t) const {
     const double force = pl.shaker_amplitude * std::sin(kTwoPi * pl.shaker_frequency * t + pl.shaker_phase);
     f += model_.generalized_force(shaker_point_, force * in_3d(shank));
   } else if (p_.attachment == Attachment::chain) {
-    const double rch = chain_force(t);
+    const double rch = chain_force(t, cutting_, full_teeth_);
     const Eigen::Vector3d force = rch * Eigen::Vector3d(std::cos(p_.chain.chain_angle), 0.0, -std::sin(p_.chain.chain_angle));
     f += model_.generalized_force(chain_point_, force);
     f(coordinate("theta_y")) -= rch * p_.chain.moment_arm;  // -RMCH (Eq. 2.33)
@@ -272,12 +289,12 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
 }
 
 Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
-  (void)t;
   if (blade_point_ < 0) return Eigen::Vector2d::Zero();
+  const bool cutting = soil_state_at(t).cutting;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const Eigen::Vector3d d = j * q, vel = j * v;
-  const double rk = p_.soil.stiffness * (cutting_ ? 1.0 : p_.soil.stiffness_reduction);
-  const double rc = p_.soil.damping * (cutting_ ? 1.0 : p_.soil.damping_reduction);
+  const double rk = p_.soil.stiffness * (cutting ? 1.0 : p_.soil.stiffness_reduction);
+  const double rc = p_.soil.damping * (cutting ? 1.0 : p_.soil.damping_reduction);
   // Eq. 2.37: RPF = [dX5 RK5 + (VX5 - VS cos) RC5] l + [dZ5 RK5 + (VZ5 + VS sin) RC5] n
   return {d(X) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
           d(Z) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
@@ -307,12 +324,14 @@ std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
     cutting_ = false;
     soil_line_ = x5;
     soil_line_time_ = t;
+    soil_history_.push_back({t, false, x5});
     return fmt::format("blade backs off at x5 = {:.6g} m", x5);
   }
   if (!cutting_ && directions[0] < 0) {
     cutting_ = true;
     soil_line_ = x5;
     soil_line_time_ = t;
+    soil_history_.push_back({t, true, x5});
     return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
   }
   return {};
@@ -339,11 +358,8 @@ std::string Machine2D::on_scheduled_change(double t, const Eigen::VectorXd& q, c
   (void)v;
   if (p_.attachment != Attachment::chain) return {};
   const Chain2D& c = p_.chain;
-  const double period = c.tooth_spacing / c.chain_speed;
   const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
-  const double tau = t - std::floor(t / period + 1e-9) * period;
-  const bool full = tau < atch - 1e-12 * period;
+  const bool full = full_teeth_at(t);
   if (full != full_teeth_) {
     full_teeth_ = full;
     return fmt::format("{} teeth digging", static_cast<int>(mtig - 1 + (full ? 1 : 0)));

@@ -167,11 +167,21 @@ class Machine2D : public SwitchedSystem {
   // Resets the discrete state for a run starting at t with (q, v): blade cutting, soil line at the blade.
   void reset(double t, const Eigen::VectorXd& q);
 
-  // Forces for recovery at a state. Plow resultant RPF (Eq. 2.37), N, in (X, Z).
+  // The soil law's state: set at reset and at every located switch, so that
+  // forces can be recovered afterwards at any sample time.
+  struct SoilState {
+    double time = 0.0;       // when it began, s
+    bool cutting = true;
+    double line = 0.0;       // x of the unpenetrated soil line at `time`, m
+  };
+  const std::vector<SoilState>& soil_history() const { return soil_history_; }
+  SoilState soil_state_at(double t) const;  // the state in force at t (after a switch at exactly t)
+
+  // Forces for recovery. Plow resultant RPF (Eq. 2.37), N, in (X, Z), with
+  // the soil law in force at t.
   Eigen::Vector2d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
-  double chain_force(double t) const;  // RCH, N
+  double chain_force(double t) const;  // RCH, N, with the teeth and soil law in force at t
   bool cutting() const { return cutting_; }
-  double soil_line() const { return soil_line_; }
   double soil_line_at(double t) const;
 
   // Element and point indices.
@@ -191,9 +201,12 @@ class Machine2D : public SwitchedSystem {
   double soil_line_ = 0.0, soil_line_time_ = 0.0;  // x_s at soil_line_time_ (moving at VS cos theta_g while backing)
   double soil_velocity_ = 0.0;                     // VS cos theta_g, m/s along +X
   bool full_teeth_ = true;                         // XNN = 1
+  std::vector<SoilState> soil_history_;
+  bool full_teeth_at(double t) const;
 
   Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part
-  double tooth_force() const;
+  double tooth_force(bool cutting) const;
+  double chain_force(double t, bool cutting, bool full_teeth) const;
 };
 
 }  // namespace framedyn::rigid

@@ -1,0 +1,137 @@
+// `framedyn run STUDY.yaml`: runs a study file. Today: rigid-body studies
+// (model: rigid_2d) — natural frequencies with their dominant coordinates and
+// a forced response with recovered forces. Writes DIR/summary.json,
+// DIR/rigid_modes.csv and, with a response, DIR/response.csv and DIR/events.csv.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "apps/progress.h"
+#include "core/csv_writer.h"
+#include "core/results_folder.h"
+#include "coupling/rigid_study.h"
+
+namespace framedyn::apps {
+
+namespace {
+
+using core::Quantity;
+
+struct RunOptions {
+  std::string study;
+  std::string out;
+  bool verbose = false, quiet = false;
+};
+
+std::string coordinate_unit(const std::string& name, const core::UnitSystem& u) {
+  return name.rfind("theta", 0) == 0 || name == "psi" ? std::string("rad") : u.label(Quantity::length);
+}
+double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
+  return name.rfind("theta", 0) == 0 || name == "psi" ? 1.0 : 1.0 / u.to_si_factor(Quantity::length);
+}
+
+int run_study(const RunOptions& opt) {
+  Progress progress(opt.verbose, opt.quiet);
+  progress.stage("reading " + opt.study);
+  const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
+  const core::UnitSystem& u = study.units;
+  progress.stage(study.response ? "modes and forced response" : "modes");
+  const coupling::RigidResults r = coupling::run_rigid_study(study);
+
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
+  core::ResultsFolder folder(out_dir);
+
+  nlohmann::ordered_json j;
+  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
+  j["input"] = {{"study", opt.study}, {"name", study.name}, {"units", u.name()}};
+  nlohmann::ordered_json rigid;
+  rigid["model"] = "rigid_2d";
+  rigid["dofs"] = r.coordinates.size();
+  rigid["coordinates"] = r.coordinates;
+  rigid["fixed_coordinates"] = study.fixed_coordinates;
+  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  core::CsvTable mcsv([&] {
+    std::vector<std::string> h = {"mode", core::column("frequency", "Hz"), "dominant"};
+    for (const std::string& c : r.coordinates) h.push_back("energy_share_" + c);
+    return h;
+  }());
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const rigid::RigidMode& m = r.modes[i];
+    nlohmann::ordered_json jm;
+    jm["mode"] = i + 1;
+    jm["frequency_hz"] = m.frequency_hz;
+    jm["dominant"] = m.dominant;
+    nlohmann::ordered_json share;
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) share[r.coordinates[c]] = m.energy_share(static_cast<Eigen::Index>(c));
+    jm["energy_share"] = share;
+    modes.push_back(jm);
+    mcsv.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(m.dominant);
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) mcsv.add(m.energy_share(static_cast<Eigen::Index>(c)));
+  }
+  rigid["modes"] = modes;
+  folder.write_text("rigid_modes.csv", mcsv.str());
+
+  if (study.response) {
+    const rigid::Trajectory& tr = r.trajectory;
+    nlohmann::ordered_json resp;
+    resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
+    resp["duration"] = {{"value", study.response->duration}, {"unit", "s"}};
+    resp["events"] = tr.events.size();
+    resp["steps"] = tr.steps;
+    const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
+    if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
+    if (r.peak_cutting_force) resp["peak_cutting_force"] = {{"value", *r.peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
+    if (r.peak_backing_force) resp["peak_backing_force"] = {{"value", *r.peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
+    rigid["response"] = resp;
+
+    std::vector<std::string> h = {"time [s]"};
+    for (const std::string& c : r.coordinates) h.push_back(core::column(c, coordinate_unit(c, u)));
+    for (const coupling::Series& s : r.series)
+      h.push_back(s.quantity == Quantity::dimensionless ? s.name : core::column(s.name, u.label(s.quantity)));
+    core::CsvTable csv(h);
+    for (std::size_t i = 0; i < tr.time.size(); ++i) {
+      csv.row().add(tr.time[i]);
+      for (std::size_t c = 0; c < r.coordinates.size(); ++c)
+        csv.add(tr.q[i](static_cast<Eigen::Index>(c)) * coordinate_factor(r.coordinates[c], u));
+      for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
+    }
+    folder.write_text("response.csv", csv.str());
+    core::CsvTable ev({"time [s]", "event"});
+    for (const auto& e : tr.events) ev.row().add(e.time).add(e.what);
+    folder.write_text("events.csv", ev.str());
+  }
+  j["rigid"] = rigid;
+  folder.write_text("summary.json", j.dump(2) + "\n");
+  folder.commit();
+  progress.done();
+
+  fmt::print("framedyn run: {} ({}, {} coordinates, units {})\n", opt.study, study.name, r.coordinates.size(), u.name());
+  if (!r.modes.empty()) {
+    fmt::print("\n mode  frequency [Hz]  dominant\n");
+    for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
+  }
+  if (r.plow_vertical_peak_to_peak) {
+    const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
+    fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));
+    fmt::print("peak cutting force {:.5g} {}, peak backing force {:.5g} {}\n", r.peak_cutting_force.value_or(0) * ff, u.label(Quantity::force),
+               r.peak_backing_force.value_or(0) * ff, u.label(Quantity::force));
+  }
+  fmt::print("\nresults in {}/\n", out_dir);
+  return 0;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, std::function<int()>& run) {
+  auto opt = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "Run a study file (rigid-body vehicle modes and forced response)");
+  cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
+  cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");
+  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  cmd->callback([opt, &run]() { run = [opt]() { return run_study(*opt); }; });
+}
+
+}  // namespace framedyn::apps

@@ -1,0 +1,61 @@
+// Rigid-body studies (the thesis's CMW2D runs): a YAML study file describes
+// the machine and what to compute — natural frequencies with their dominant
+// coordinates, a forced response with force recovery. Reading and running are
+// separate: read_rigid_study turns the file into plain data (SI), and
+// run_rigid_study computes results without touching files.
+// The study format: docs/user-guide.md, "Study files".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "rigid/machine_2d.h"
+#include "rigid/rigid_modes.h"
+#include "rigid/time_integration.h"
+
+namespace framedyn::coupling {
+
+struct ResponseRequest {
+  double duration = 0.5;           // s
+  double output_interval = 5e-4;   // s
+  enum class Method { event_located, rk4 } method = Method::event_located;
+  double rk4_step = 5e-4;          // s
+  double relative_tolerance = 1e-8;
+};
+
+struct RigidStudy {
+  std::string file;
+  std::string name;
+  core::UnitSystem units;
+  rigid::Machine2DParameters machine;
+  bool modes = true;
+  std::vector<std::string> fixed_coordinates;   // held in the modal analysis
+  std::optional<ResponseRequest> response;
+};
+
+// Throws core::InputError naming the file, line and key path.
+RigidStudy read_rigid_study(const std::string& file);
+
+// One recovered time history with its unit.
+struct Series {
+  std::string name;
+  core::Quantity quantity;
+  std::vector<double> values;  // SI
+};
+
+struct RigidResults {
+  std::vector<std::string> coordinates;
+  std::vector<rigid::RigidMode> modes;
+  // Response (empty if none was asked for).
+  rigid::Trajectory trajectory;
+  std::vector<Series> series;  // blade motion, plow force, element forces, chain force
+  std::optional<double> plow_vertical_peak_to_peak;  // m, average over shaker cycles
+  std::optional<double> peak_cutting_force;          // N, largest signed plow force magnitude (forward travel)
+  std::optional<double> peak_backing_force;          // N, largest magnitude while the blade moves back
+};
+
+RigidResults run_rigid_study(const RigidStudy& study);
+
+}  // namespace framedyn::coupling
