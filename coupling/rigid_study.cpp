@@ -76,11 +76,93 @@ rigid::CabMount mount(const YamlMap& m) {
 
 }  // namespace
 
+std::vector<std::string> calibratable_parameters() {
+  return {"tires.front.normal.stiffness", "tires.front.tractive.stiffness", "tires.rear.normal.stiffness", "tires.rear.tractive.stiffness",
+          "tires.tractive.stiffness", "tires.contact_depth", "cab.front_mount.stiffness", "cab.rear_mount.stiffness", "cab.mass",
+          "cab.inertia", "plow.mass", "plow.inertia", "plow.bounce_tire.stiffness", "plow.lift_cylinder.stiffness", "soil.stiffness",
+          "frame.mass_per_length", "frame.added_masses.<name>.mass", "frame.added_masses.<name>.inertia"};
+}
+
+namespace {
+
+// The storage of a plain parameter, or nullptr for derived ones and unknown names.
+double* parameter_slot(rigid::Machine2DParameters& p, const std::string& name, Quantity& q) {
+  q = Quantity::translational_stiffness;
+  if (name == "tires.front.normal.stiffness") return &p.front_tire.normal.stiffness;
+  if (name == "tires.front.tractive.stiffness" || name == "tires.tractive.stiffness") return &p.front_tire.tractive.stiffness;
+  if (name == "tires.rear.normal.stiffness") return &p.rear_tire.normal.stiffness;
+  if (name == "tires.rear.tractive.stiffness") return &p.rear_tire.tractive.stiffness;
+  if (name == "cab.front_mount.stiffness") return &p.cab.front.vertical.stiffness;
+  if (name == "cab.rear_mount.stiffness") return &p.cab.rear.vertical.stiffness;
+  if (name == "plow.bounce_tire.stiffness") return &p.plow.bounce_tire.stiffness;
+  if (name == "plow.lift_cylinder.stiffness") return &p.plow.lift_cylinder.stiffness;
+  if (name == "soil.stiffness") return &p.soil.stiffness;
+  q = Quantity::mass;
+  if (name == "cab.mass") return &p.cab.mass;
+  if (name == "plow.mass") return &p.plow.mass;
+  q = Quantity::rotary_inertia;
+  if (name == "cab.inertia") return &p.cab.inertia;
+  if (name == "plow.inertia") return &p.plow.inertia;
+  q = Quantity::mass_per_length;
+  if (name == "frame.mass_per_length") return &p.frame.mass_per_length;
+  if (name.rfind("frame.added_masses.", 0) == 0) {
+    // frame.added_masses.<name>.mass or .inertia
+    const std::string rest = name.substr(19);
+    const std::size_t dot = rest.rfind('.');
+    if (dot == std::string::npos) return nullptr;
+    const std::string mass_name = rest.substr(0, dot), field = rest.substr(dot + 1);
+    for (rigid::AddedMass& a : p.frame.added_masses)
+      if (a.name == mass_name && field == "mass") return q = Quantity::mass, &a.mass;
+      else if (a.name == mass_name && field == "inertia") return q = Quantity::rotary_inertia, &a.inertia;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+core::Quantity parameter_quantity(const rigid::Machine2DParameters& p, const std::string& name) {
+  if (name == "tires.contact_depth") return Quantity::length;
+  rigid::Machine2DParameters copy = p;
+  Quantity q;
+  if (!parameter_slot(copy, name, q)) throw std::invalid_argument("unknown parameter '" + name + "'");
+  return q;
+}
+
+double get_parameter(const rigid::Machine2DParameters& p, const std::string& name) {
+  // The tractive springs' line of action, as a depth below the rails' axis.
+  if (name == "tires.contact_depth") return -0.5 * (p.front_tire.contact.y() + p.rear_tire.contact.y());
+  rigid::Machine2DParameters copy = p;
+  Quantity q;
+  const double* slot = parameter_slot(copy, name, q);
+  if (!slot) throw std::invalid_argument("unknown parameter '" + name + "'");
+  return *slot;
+}
+
+void set_parameter(rigid::Machine2DParameters& p, const std::string& name, double value) {
+  if (name == "tires.contact_depth") {
+    p.front_tire.contact.y() = -value;
+    p.rear_tire.contact.y() = -value;
+    return;
+  }
+  if (name == "tires.tractive.stiffness") {
+    // Front and rear together, keeping their ratio: one parameter for the x mode.
+    const double ratio = p.front_tire.tractive.stiffness > 0 ? p.rear_tire.tractive.stiffness / p.front_tire.tractive.stiffness : 1.0;
+    p.front_tire.tractive.stiffness = value;
+    p.rear_tire.tractive.stiffness = value * ratio;
+    return;
+  }
+  Quantity q;
+  double* slot = parameter_slot(p, name, q);
+  if (!slot) throw std::invalid_argument("unknown parameter '" + name + "'");
+  *slot = value;
+}
+
 RigidStudy read_rigid_study(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
   core::UnitSystem si = core::UnitSystem::si();
   YamlMap top(doc, "", file, &si);
-  top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires", "plow", "chain", "soil", "analysis"});
+  top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires", "plow", "chain", "soil", "analysis",
+                  "calibration"});
   if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
   RigidStudy s;
   s.file = file;
@@ -228,6 +310,27 @@ RigidStudy read_rigid_study(const std::string& file) {
       s.response = req;
     }
   }
+  if (auto cal = root.optional_map("calibration")) {
+    cal->allow_only({"parameters", "targets"});
+    CalibrationRequest req;
+    req.parameters = cal->strings("parameters");
+    if (req.parameters.empty()) throw cal->error("parameters", "a list of parameter names to fit", "none");
+    for (const std::string& name : req.parameters) {
+      try {
+        if (get_parameter(p, name) <= 0) throw cal->error("parameters", "parameters with a positive starting value", name + " <= 0");
+      } catch (const std::invalid_argument&) {
+        std::string known;
+        for (const std::string& k : calibratable_parameters()) known += (known.empty() ? "" : ", ") + k;
+        throw cal->error("parameters", "one of " + known, "'" + name + "'");
+      }
+    }
+    for (const YamlMap& t : cal->list_of_maps("targets")) {
+      t.allow_only({"frequency_hz", "dominant"});
+      req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
+    }
+    if (req.targets.empty()) throw cal->error("targets", "a list of {frequency_hz, dominant}", "none");
+    s.calibration = req;
+  }
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
   try {
@@ -240,9 +343,23 @@ RigidStudy read_rigid_study(const std::string& file) {
   return s;
 }
 
-RigidResults run_rigid_study(const RigidStudy& study) {
-  rigid::Machine2D machine(study.machine);
+RigidResults run_rigid_study(const RigidStudy& study_in) {
+  RigidStudy study = study_in;
   RigidResults r;
+  if (study.calibration) {
+    const CalibrationRequest& c = *study.calibration;
+    std::vector<double> initial;
+    for (const std::string& name : c.parameters) initial.push_back(get_parameter(study.machine, name));
+    const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
+      rigid::Machine2DParameters p = study.machine;
+      for (std::size_t i = 0; i < values.size(); ++i) set_parameter(p, c.parameters[i], values[i]);
+      rigid::Machine2D m(p);
+      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), study.fixed_coordinates);
+    };
+    r.calibration = rigid::calibrate(modes_of, initial, c.targets);
+    for (std::size_t i = 0; i < c.parameters.size(); ++i) set_parameter(study.machine, c.parameters[i], r.calibration->fitted[i]);
+  }
+  rigid::Machine2D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
   if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(), r.coordinates, study.fixed_coordinates);
   if (!study.response) return r;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/units.h"
+#include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
 #include "rigid/rigid_modes.h"
 #include "rigid/time_integration.h"
@@ -25,6 +26,19 @@ struct ResponseRequest {
   double relative_tolerance = 1e-8;
 };
 
+// Fit named machine parameters to target frequencies before the analysis.
+struct CalibrationRequest {
+  std::vector<std::string> parameters;            // e.g. "tires.front.normal.stiffness"
+  std::vector<rigid::FrequencyTarget> targets;
+};
+
+// The machine parameters a calibration may adjust, by name (SI values).
+// Throw std::invalid_argument for an unknown name.
+std::vector<std::string> calibratable_parameters();
+double get_parameter(const rigid::Machine2DParameters& p, const std::string& name);
+void set_parameter(rigid::Machine2DParameters& p, const std::string& name, double value);
+core::Quantity parameter_quantity(const rigid::Machine2DParameters& p, const std::string& name);
+
 struct RigidStudy {
   std::string file;
   std::string name;
@@ -33,6 +47,7 @@ struct RigidStudy {
   bool modes = true;
   std::vector<std::string> fixed_coordinates;   // held in the modal analysis
   std::optional<ResponseRequest> response;
+  std::optional<CalibrationRequest> calibration;
 };
 
 // Throws core::InputError naming the file, line and key path.
@@ -47,6 +62,7 @@ struct Series {
 
 struct RigidResults {
   std::vector<std::string> coordinates;
+  std::optional<rigid::CalibrationResult> calibration;  // with the study's CalibrationRequest
   std::vector<rigid::RigidMode> modes;
   // Response (empty if none was asked for).
   rigid::Trajectory trajectory;
