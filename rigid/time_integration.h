@@ -1,5 +1,5 @@
 // Time integration of a SwitchedSystem (rigid/switched_system.h,
-// docs/theory/rigid.md, section 4), M q'' + C_s q' + K_s q = f_s(t), written as
+// docs/theory/rigid.md, section 8), M q'' + C_s q' + K_s q = f_s(t), written as
 // the first-order system y = [q; v], y' = [v; a(t, q, v)] with a from
 // SwitchedSystem::acceleration.
 //
