@@ -28,11 +28,11 @@ struct ModesOptions {
   std::string out;
   bool lumped = false;
   double shift_hz = 1.0;
-  bool verbose = false, quiet = false;
+  ProgressFlags progress;
 };
 
 int run_modes(const ModesOptions& opt) {
-  Progress progress(opt.verbose, opt.quiet);
+  Progress progress(opt.progress);
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
@@ -159,8 +159,7 @@ void add_modes_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_modes)");
   cmd->add_flag("--lumped", opt->lumped, "Lumped mass instead of consistent mass");
   cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(CLI::PositiveNumber);
-  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
-  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_modes(*opt); }; });
 }
 

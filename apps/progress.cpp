@@ -7,6 +7,11 @@
 
 namespace framedyn::apps {
 
+void ProgressFlags::add_to(CLI::App& cmd) {
+  cmd.add_flag("--verbose,-v", verbose, "Report every stage on stderr");
+  cmd.add_flag("--quiet,-q", quiet, "No progress lines");
+}
+
 Progress::Progress(bool verbose, bool quiet) : start_(std::chrono::steady_clock::now()), verbose_(verbose), quiet_(quiet) {}
 
 double Progress::elapsed() const {

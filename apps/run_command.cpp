@@ -22,7 +22,7 @@ using core::Quantity;
 struct RunOptions {
   std::string study;
   std::string out;
-  bool verbose = false, quiet = false;
+  ProgressFlags progress;
 };
 
 std::string coordinate_unit(const std::string& name, const core::UnitSystem& u) {
@@ -33,7 +33,7 @@ double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
 }
 
 int run_study(const RunOptions& opt) {
-  Progress progress(opt.verbose, opt.quiet);
+  Progress progress(opt.progress);
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
@@ -168,8 +168,7 @@ void add_run_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand("run", "Run a study file (rigid-body vehicle modes and forced response)");
   cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");
-  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
-  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_study(*opt); }; });
 }
 

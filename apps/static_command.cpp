@@ -27,11 +27,11 @@ struct StaticOptions {
   MeshInput mesh;
   std::string out;
   int stations = 3;
-  bool verbose = false, quiet = false;
+  ProgressFlags progress;
 };
 
 int run_static(const StaticOptions& opt) {
-  Progress progress(opt.verbose, opt.quiet);
+  Progress progress(opt.progress);
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
@@ -158,8 +158,7 @@ void add_static_command(CLI::App& app, std::function<int()>& run) {
   opt->mesh.add_options(*cmd);
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_static)");
   cmd->add_option("--stations", opt->stations, "Section-force stations per element, ends included (default 3)")->check(CLI::Range(2, 101));
-  cmd->add_flag("--verbose,-v", opt->verbose, "Report every stage on stderr");
-  cmd->add_flag("--quiet,-q", opt->quiet, "No progress lines");
+  opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_static(*opt); }; });
 }
 

@@ -3,6 +3,8 @@
 // The program is FRAMEDYN_BINARY; every run works in a fresh temp folder.
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_dir.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,29 +26,10 @@ namespace fs = std::filesystem;
 const std::string kBinary = FRAMEDYN_BINARY;
 const fs::path kFrame = fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "r100_frame.inp";
 
-class TempDir {
+// A fresh directory per test (tests/support/temp_dir.h).
+class TempDir : public framedyn::testing::TempDir {
  public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() / ("framedyn_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = path_ / name;
-    std::ofstream out(p, std::ios::binary);
-    out << text;
-    return p;
-  }
-
- private:
-  fs::path path_;
+  TempDir() : framedyn::testing::TempDir("framedyn_test_cli") {}
 };
 
 std::string read_file(const fs::path& p) {

@@ -4,6 +4,8 @@
 // written out here, not against fem/beam_section.cpp.
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_dir.h"
+
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -45,29 +47,10 @@ const std::string kDeckName = "deck.inp";
 // ------------------------------------------------------------------ helpers
 
 // A fresh directory, removed at the end of the test.
-class TempDir {
+// A fresh directory per test (tests/support/temp_dir.h).
+class TempDir : public framedyn::testing::TempDir {
  public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() / ("framedyn_test_inp_reader_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path write(const std::string& relative, const std::string& text) const {
-    const fs::path p = path_ / relative;
-    fs::create_directories(p.parent_path());
-    std::ofstream out(p, std::ios::binary);
-    out << text;
-    return p;
-  }
-
- private:
-  fs::path path_;
+  TempDir() : framedyn::testing::TempDir("framedyn_test_inp_reader") {}
 };
 
 FrameModel read(const std::string& text, const InpReadOptions& options = {}) {
