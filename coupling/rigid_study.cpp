@@ -161,9 +161,9 @@ RigidStudy read_rigid_study(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
   core::UnitSystem si = core::UnitSystem::si();
   YamlMap top(doc, "", file, &si);
+  if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
   top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires", "plow", "chain", "soil", "analysis",
                   "calibration"});
-  if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
   RigidStudy s;
   s.file = file;
   s.name = top.text_or("name", file);
@@ -217,6 +217,9 @@ RigidStudy read_rigid_study(const std::string& file) {
   cab.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "position", "front_mount", "rear_mount"});
   p.cab.mass = cab.mass(kGravity);
   p.cab.inertia = inertia_of(cab, p.cab.mass, "cab");
+  // theta_v has no other inertia: a zero one would leave M singular.
+  if (!(p.cab.inertia > 0))
+    throw cab.error(cab.has("inertia") ? "inertia" : "radius_of_gyration", "a positive value (the cab's pitch theta_v needs inertia)", "0");
   p.cab.cg = cab.point("position");
   p.cab.front = mount(cab.map("front_mount"));
   p.cab.rear = mount(cab.map("rear_mount"));
@@ -247,6 +250,11 @@ RigidStudy read_rigid_study(const std::string& file) {
     const YamlMap link = plow.map("linkage");
     link.allow_only({"upper_pivot", "lower_pivot", "upper_joint", "lower_joint"});
     pl.linkage = {link.point("upper_pivot"), link.point("lower_pivot"), link.point("upper_joint"), link.point("lower_joint")};
+    try {
+      (void)rigid::four_bar_velocity_ratios(pl.linkage);
+    } catch (const std::invalid_argument& e) {
+      throw link.error("", "a linkage with a unique small motion", e.what());
+    }
     pl.blade_point = plow.point("blade_point");
     const YamlMap shaker = plow.map("shaker");
     shaker.allow_only({"point", "force", "frequency_hz", "phase_deg"});
@@ -336,7 +344,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   try {
     rigid::Machine2D check(p);
     for (const std::string& f : s.fixed_coordinates)
-      if (check.coordinate(f) < 0) throw root.error("analysis.fixed_coordinates", "coordinate names of this model", "'" + f + "'");
+      if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
   } catch (const std::invalid_argument& e) {
     throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
   }
@@ -379,7 +387,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
 
-  // Element forces: spring (k (G q - xr)) + damper (c (G v - vr)) + static, tension positive.
+  // Element forces: spring + damper + static (Eq. 2.42), compression positive.
   const rigid::Multibody& mb = machine.model();
   const std::vector<double> statics = machine.static_element_forces();
   for (std::size_t e = 0; e < mb.elements().size(); ++e) {
@@ -387,7 +395,12 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
     if (el.name.rfind("soil", 0) == 0) continue;  // the soil's force is the plow/boom force below
     const Eigen::RowVectorXd g = mb.elongation_map(static_cast<int>(e));
     Series s{el.name + "_force", Quantity::force, {}};
-    for (std::size_t i = 0; i < ns; ++i) s.values.push_back(-(el.stiffness * g.dot(tr.q[i]) + el.damping * g.dot(tr.v[i])) + statics[e]);
+    const rigid::GroundInput* in = machine.ground_input_of(static_cast<int>(e));
+    for (std::size_t i = 0; i < ns; ++i) {
+      // Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF, compression positive.
+      const double xr = in ? in->displacement(tr.time[i]) : 0.0, vr = in ? in->velocity(tr.time[i]) : 0.0;
+      s.values.push_back(-(el.stiffness * (g.dot(tr.q[i]) - xr) + el.damping * (g.dot(tr.v[i]) - vr)) + statics[e]);
+    }
     r.series.push_back(std::move(s));
   }
   if (machine.blade_point() >= 0) {

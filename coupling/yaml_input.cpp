@@ -39,7 +39,8 @@ YamlMap::YamlMap(YAML::Node node, std::string path, std::string file, const core
 std::string YamlMap::child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 InputLocation YamlMap::location(const std::string& key) const {
-  const YAML::Node n = key.empty() ? YAML::Node() : node_[key];
+  // No key: the map itself (a default YAML::Node is defined but has no mark).
+  const YAML::Node n = key.empty() ? node_ : node_[key];
   const int line = (n.IsDefined() ? n.Mark().line : node_.Mark().line) + 1;
   return {file_, line > 0 ? line : 0, key.empty() ? path_ : child_path(key)};
 }

@@ -244,22 +244,28 @@ double Machine2D::chain_force(double t, bool cutting, bool full_teeth) const {
   return ramp * tooth_force(cutting) * teeth;  // RCH (Eq. 2.41)
 }
 
+const GroundInput* Machine2D::ground_input_of(int element) const {
+  const std::string& name = model_.elements().at(static_cast<std::size_t>(element)).name;
+  const GroundInput* in = nullptr;
+  if (name == "front_tire_normal") in = &p_.front_tire.normal_input;
+  else if (name == "front_tire_tractive") in = &p_.front_tire.tractive_input;
+  else if (name == "rear_tire_normal") in = &p_.rear_tire.normal_input;
+  else if (name == "rear_tire_tractive") in = &p_.rear_tire.tractive_input;
+  else if (name == "bounce_tire" && p_.attachment == Attachment::plow) in = &p_.plow.bounce_input;
+  return (in && in->kind != GroundInput::Kind::none) ? in : nullptr;
+}
+
 Eigen::VectorXd Machine2D::forcing(double t) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(size());
   // Reference ground inputs (Eqs. 2.20, 2.26): FK + FC at the tires and bounce tire.
-  auto ground = [&](const std::string& element, const GroundInput& in) {
-    if (in.kind == GroundInput::Kind::none) return;
-    const int e = model_.element_index(element);
-    const SpringDamper& el = model_.elements()[static_cast<std::size_t>(e)];
+  for (std::size_t e = 0; e < model_.elements().size(); ++e) {
+    const GroundInput* in = ground_input_of(static_cast<int>(e));
+    if (!in) continue;
+    const SpringDamper& el = model_.elements()[e];
     // The ground end moves by xr along the element's direction: elongation = G q - xr.
-    f += model_.elongation_map(e).transpose() * (el.stiffness * in.displacement(t) + el.damping * in.velocity(t));
-  };
-  ground("front_tire_normal", p_.front_tire.normal_input);
-  ground("front_tire_tractive", p_.front_tire.tractive_input);
-  ground("rear_tire_normal", p_.rear_tire.normal_input);
-  ground("rear_tire_tractive", p_.rear_tire.tractive_input);
+    f += model_.elongation_map(static_cast<int>(e)).transpose() * (el.stiffness * in->displacement(t) + el.damping * in->velocity(t));
+  }
   if (p_.attachment == Attachment::plow) {
-    ground("bounce_tire", p_.plow.bounce_input);
     // The shaker's in-plane component acts along the shank (n*, Eq. 2.28).
     const Plow2D& pl = p_.plow;
     const Eigen::Vector2d shank = (pl.linkage.upper_joint - pl.linkage.lower_joint).normalized();

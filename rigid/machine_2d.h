@@ -184,6 +184,9 @@ class Machine2D : public SwitchedSystem {
   bool cutting() const { return cutting_; }
   double soil_line_at(double t) const;
 
+  // The reference ground input of a grounded element (tires, bounce tire), or nullptr.
+  const GroundInput* ground_input_of(int element) const;
+
   // Element and point indices.
   int blade_point() const { return blade_point_; }
   const std::vector<int>& soil_elements() const { return soil_elements_; }

@@ -59,9 +59,10 @@ int Multibody::point_index(const std::string& name) const {
 
 Eigen::RowVectorXd Multibody::elongation_map(int e) const {
   const SpringDamper& el = elements_.at(static_cast<std::size_t>(e));
-  Jacobian relative = -points_[static_cast<std::size_t>(el.point_a)].displacement;
-  if (el.point_b >= 0) relative += points_[static_cast<std::size_t>(el.point_b)].displacement;
-  return el.direction.transpose() * relative;
+  const Jacobian& ja = points_[static_cast<std::size_t>(el.point_a)].displacement;
+  // A grounded element runs from the ground to a: elongation n . d_a (multibody.h).
+  if (el.point_b < 0) return el.direction.transpose() * ja;
+  return el.direction.transpose() * (points_[static_cast<std::size_t>(el.point_b)].displacement - ja);
 }
 
 Eigen::MatrixXd Multibody::mass_matrix() const {

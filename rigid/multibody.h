@@ -8,8 +8,9 @@
 //     M = sum_b m_b T_b^T T_b + R_b^T I_b R_b                      (1.1)
 // A point p has a displacement Jacobian J_p (delta_p = J_p q); on a rigid
 // body J_p = T_b - [r_p]x R_b (1.2). A spring-damper e acts along a unit
-// direction n_e between two points (or a point and the ground); its
-// elongation is G_e q with G_e = n_e^T (J_b - J_a) (1.3), and
+// direction n_e from point a to point b, or from the ground to point a; its
+// elongation is G_e q with G_e = n_e^T (J_b - J_a), or G_e = n_e^T J_a for a
+// grounded element (1.3), and
 //     K = sum_e k_e G_e^T G_e,   C = sum_e c_e G_e^T G_e           (1.4)
 // so M, K and C are symmetric by construction. Reference ground inputs
 // (the other end of a grounded element moving by xr(t) along n_e) load the
@@ -43,8 +44,11 @@ struct Point {
 };
 
 // A linear spring and a linear damper in parallel along `direction`, from
-// point a to point b; `b < 0` means the ground. Elongation = n . (d_b - d_a),
-// with d_ground = xr(t) n for a moving ground reference.
+// point a to point b: elongation = n . (d_b - d_a). `b < 0` means the ground,
+// and then the element runs from the ground to point a (n points from the
+// ground towards a): elongation = n . (d_a - d_ground), with d_ground = xr(t) n
+// for a moving ground reference, so that FK = k G^T xr (1.5). Element forces
+// -k * elongation are then compression positive for every element.
 struct SpringDamper {
   std::string name;
   int point_a = -1;
