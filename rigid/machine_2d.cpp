@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -244,6 +245,37 @@ double Machine2D::chain_force(double t, bool cutting, bool full_teeth) const {
   return ramp * tooth_force(cutting) * teeth;  // RCH (Eq. 2.41)
 }
 
+Jacobian Machine2D::frame_point_jacobian(const Eigen::Vector2d& point) const {
+  // The frame body's own Jacobian moved to another point of the frame.
+  const Body& frame = model_.bodies().front();
+  return frame.translation - skew(in_3d(point - frame_.cg)) * frame.rotation;
+}
+
+double Machine2D::element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  const SpringDamper& el = model_.elements().at(static_cast<std::size_t>(element));
+  const Eigen::RowVectorXd g = model_.elongation_map(element);
+  double k = el.stiffness, c = el.damping, xr = 0.0, vr = 0.0;
+  if (const GroundInput* in = ground_input_of(element)) {
+    xr = in->displacement(t);
+    vr = in->velocity(t);
+  }
+  if (std::find(soil_elements_.begin(), soil_elements_.end(), element) != soil_elements_.end()) {
+    const bool cutting = soil_state_at(t).cutting;
+    k *= cutting ? 1.0 : p_.soil.stiffness_reduction;
+    c *= cutting ? 1.0 : p_.soil.damping_reduction;
+    // The soil streams rearward past the machine at VS (Eq. 2.23).
+    vr = el.direction.dot(Eigen::Vector3d(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope)));
+  }
+  return k * (g.dot(q) - xr) + c * (g.dot(v) - vr);
+}
+
+Eigen::Vector2d Machine2D::shaker_force(double t) const {
+  if (p_.attachment != Attachment::plow) return Eigen::Vector2d::Zero();
+  const Plow2D& pl = p_.plow;
+  const Eigen::Vector2d shank = (pl.linkage.upper_joint - pl.linkage.lower_joint).normalized();
+  return pl.shaker_amplitude * std::sin(kTwoPi * pl.shaker_frequency * t + pl.shaker_phase) * shank;
+}
+
 const GroundInput* Machine2D::ground_input_of(int element) const {
   const std::string& name = model_.elements().at(static_cast<std::size_t>(element)).name;
   const GroundInput* in = nullptr;
@@ -267,10 +299,7 @@ Eigen::VectorXd Machine2D::forcing(double t) const {
   }
   if (p_.attachment == Attachment::plow) {
     // The shaker's in-plane component acts along the shank (n*, Eq. 2.28).
-    const Plow2D& pl = p_.plow;
-    const Eigen::Vector2d shank = (pl.linkage.upper_joint - pl.linkage.lower_joint).normalized();
-    const double force = pl.shaker_amplitude * std::sin(kTwoPi * pl.shaker_frequency * t + pl.shaker_phase);
-    f += model_.generalized_force(shaker_point_, force * in_3d(shank));
+    f += model_.generalized_force(shaker_point_, in_3d(shaker_force(t)));
   } else if (p_.attachment == Attachment::chain) {
     const double rch = chain_force(t, cutting_, full_teeth_);
     const Eigen::Vector3d force = rch * Eigen::Vector3d(std::cos(p_.chain.chain_angle), 0.0, -std::sin(p_.chain.chain_angle));

@@ -184,6 +184,14 @@ class Machine2D : public SwitchedSystem {
   bool cutting() const { return cutting_; }
   double soil_line_at(double t) const;
 
+  // Displacement Jacobian of a point fixed to the frame at (X, Z).
+  Jacobian frame_point_jacobian(const Eigen::Vector2d& point) const;
+  // Tension in an element (N, positive when stretched): k (G q - xr) + c (G v - vr),
+  // with the soil law in force at t for the soil elements.
+  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  // The shaker's force vector at t (X, Z), N; zero without a plow.
+  Eigen::Vector2d shaker_force(double t) const;
+
   // The reference ground input of a grounded element (tires, bounce tire), or nullptr.
   const GroundInput* ground_input_of(int element) const;
 

@@ -1,0 +1,87 @@
+// Frame loads and stress resultants of the 2-D machine: the frame's free body
+// must balance, and the resultants follow from the loads by statics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coupling/frame_loads_2d.h"
+#include "coupling/rigid_study.h"
+#include "rigid/time_integration.h"
+
+namespace framedyn {
+namespace {
+
+struct PlowRun {
+  coupling::RigidStudy study;
+  std::unique_ptr<rigid::Machine2D> machine;
+  rigid::Trajectory trajectory;
+};
+
+PlowRun plowing(double duration) {
+  PlowRun r;
+  r.study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  r.machine = std::make_unique<rigid::Machine2D>(r.study.machine);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r.machine->size());
+  r.machine->reset(0.0, zero);
+  rigid::IntegrationOptions o;
+  o.end_time = duration;
+  o.output_interval = 1e-3;
+  r.trajectory = rigid::integrate_event_located(*r.machine, zero, zero, o);
+  return r;
+}
+
+// Every force on the frame — tires, cab, added masses' inertia, the plow's
+// pins and cylinder — plus the uniform section's own inertia must sum to zero
+// in force and moment at every instant (d'Alembert on the frame body), since
+// the loads come from Newton's laws on each attached part and the motion from
+// the whole machine's equations. Cutting behind the rear end of everything
+// leaves no load outside: SRX, SRZ and SRMY there are the frame's residual.
+// Tolerance: round-off relative to the largest load (the shaker's 1.2e5 N).
+TEST(FrameLoads2D, FrameFreeBodyBalancesAtEveryInstant) {
+  const PlowRun r = plowing(0.2);
+  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
+  const double behind_everything = 10.0;  // m
+  const coupling::StressResultants sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {behind_everything});
+  double scale = 0.0;
+  for (const auto& l : loads)
+    for (const auto& f : l.force) scale = std::max(scale, f.norm());
+  ASSERT_GT(scale, 1e3);
+  for (std::size_t i = 0; i < r.trajectory.time.size(); ++i) {
+    EXPECT_NEAR(sr.srx[i][0], 0.0, 1e-9 * scale) << "t = " << r.trajectory.time[i];
+    EXPECT_NEAR(sr.srz[i][0], 0.0, 1e-9 * scale) << "t = " << r.trajectory.time[i];
+    EXPECT_NEAR(sr.srmy[i][0], 0.0, 1e-9 * scale * 5.0) << "t = " << r.trajectory.time[i];  // moment arms up to ~5 m
+  }
+}
+
+// In front of the frame's front end there is nothing to cut: all resultants zero.
+TEST(FrameLoads2D, ResultantsVanishInFrontOfTheFrame) {
+  const PlowRun r = plowing(0.05);
+  const auto loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
+  const auto sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {-2.0});
+  for (std::size_t i = 0; i < r.trajectory.time.size(); ++i) {
+    EXPECT_EQ(sr.srx[i][0], 0.0);
+    EXPECT_EQ(sr.srz[i][0], 0.0);
+    EXPECT_EQ(sr.srmy[i][0], 0.0);
+  }
+}
+
+// Statics of one cut by hand: with only the loads in front, the shear jumps
+// by a load's Z force where the cut passes it, and the moment grows linearly
+// with the distance between loads (dM/dX = the shear of the loads in front,
+// plus the tube's share, which vanishes as the two cuts close in).
+TEST(FrameLoads2D, MomentChangesBetweenCutsByShearTimesDistance) {
+  const PlowRun r = plowing(0.05);
+  const auto loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
+  // Two cuts 1 mm apart between two loads (the front axle at X = 0 and the
+  // ballast at -22 in): no load between them.
+  const double xa = -0.20, xb = -0.199;
+  const auto sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {xa, xb});
+  for (std::size_t i = 0; i < r.trajectory.time.size(); ++i) {
+    // SRMY(x) = sum M + sum F_x (Z_j - Z_op) + F_z (X_op - X_j) + tube: d SRMY/dX = sum F_z + tube share = -SRZ.
+    const double slope = (sr.srmy[i][1] - sr.srmy[i][0]) / (xb - xa);
+    EXPECT_NEAR(slope, -0.5 * (sr.srz[i][0] + sr.srz[i][1]), 1e-6 * std::max(1.0, std::abs(sr.srz[i][0])) + 1e-3);
+  }
+}
+
+}  // namespace
+}  // namespace framedyn
