@@ -340,12 +340,19 @@ int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
 void Machine2D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
   if (blade_point_ < 0) return;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
+  // Each event function starts a hair (1e-10 m or m/s) on its own side of
+  // zero when its state begins, because a switch leaves the other function
+  // exactly at zero with zero slope (the soil line is set at the blade, the
+  // relative velocity is zero): an exact zero at a restart hides the next
+  // crossing from the root finder, as when the blade only grazes free and
+  // cuts again at once.
+  constexpr double kHair = 1e-10;
   if (cutting_) {
     // Cutting ends when the blade moves rearward faster than the soil flows past.
-    g[0] = j.row(X).dot(v) - soil_velocity_;
+    g[0] = j.row(X).dot(v) - soil_velocity_ - kHair;
   } else {
     // Cutting resumes when the blade reaches the unpenetrated soil line again.
-    g[0] = j.row(X).dot(q) - soil_line_at(t);
+    g[0] = j.row(X).dot(q) - soil_line_at(t) + kHair;
   }
 }
 
