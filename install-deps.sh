@@ -2,6 +2,7 @@
 # Installs everything framedyn needs from Debian 12's packages (and nothing
 # else): the compiler and CMake, the numerical libraries, the test framework,
 # and CalculiX (ccx), the peer FE code the tests compare the beam model with.
+# gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`.
 set -euo pipefail
 packages=(
   g++ make cmake pkg-config
@@ -9,6 +10,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev
   calculix-ccx
+  gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -13,5 +13,6 @@ namespace framedyn::apps {
 void add_modes_command(CLI::App& app, std::function<int()>& run);
 void add_static_command(CLI::App& app, std::function<int()>& run);
 void add_run_command(CLI::App& app, std::function<int()>& run);
+void add_sweep_command(CLI::App& app, std::function<int()>& run);
 
 }  // namespace framedyn::apps

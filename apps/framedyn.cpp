@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   framedyn::apps::add_modes_command(app, run);
   framedyn::apps::add_static_command(app, run);
   framedyn::apps::add_run_command(app, run);
+  framedyn::apps::add_sweep_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

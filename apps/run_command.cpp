@@ -2,6 +2,7 @@
 // (model: rigid_2d) — natural frequencies with their dominant coordinates and
 // a forced response with recovered forces. Writes DIR/summary.json,
 // DIR/rigid_modes.csv and, with a response, DIR/response.csv and DIR/events.csv.
+// With --figures, PNG time histories too (apps/response_figures.cpp).
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "apps/commands.h"
 #include "apps/progress.h"
+#include "apps/response_figures.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
@@ -22,6 +24,7 @@ using core::Quantity;
 struct RunOptions {
   std::string study;
   std::string out;
+  bool figures = false;  // --figures: PNG time histories (apps/response_figures.cpp)
   ProgressFlags progress;
 };
 
@@ -34,6 +37,7 @@ double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
 
 int run_study(const RunOptions& opt) {
   Progress progress(opt.progress);
+  if (opt.figures) require_gnuplot();
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
@@ -135,6 +139,11 @@ int run_study(const RunOptions& opt) {
     folder.write_text("events.csv", ev.str());
   }
   j["rigid"] = rigid;
+  std::vector<std::string> figures;
+  if (opt.figures) {
+    progress.stage("figures");
+    figures = write_response_figures(study, r, folder);
+  }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
@@ -157,6 +166,7 @@ int run_study(const RunOptions& opt) {
     fmt::print("peak cutting force {:.5g} {}, peak backing force {:.5g} {}\n", r.peak_cutting_force.value_or(0) * ff, u.label(Quantity::force),
                r.peak_backing_force.value_or(0) * ff, u.label(Quantity::force));
   }
+  if (opt.figures) fmt::print("\nfigures: {}\n", figures.empty() ? std::string("none (the study has no response)") : fmt::format("{}", fmt::join(figures, ", ")));
   fmt::print("\nresults in {}/\n", out_dir);
   return 0;
 }
@@ -168,6 +178,7 @@ void add_run_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand("run", "Run a study file (rigid-body vehicle modes and forced response)");
   cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");
+  cmd->add_flag("--figures", opt->figures, "Also write PNG figures of the response (needs gnuplot)");
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_study(*opt); }; });
 }

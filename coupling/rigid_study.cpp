@@ -97,6 +97,8 @@ double* parameter_slot(rigid::Machine2DParameters& p, const std::string& name, Q
   if (name == "plow.bounce_tire.stiffness") return &p.plow.bounce_tire.stiffness;
   if (name == "plow.lift_cylinder.stiffness") return &p.plow.lift_cylinder.stiffness;
   if (name == "soil.stiffness") return &p.soil.stiffness;
+  q = Quantity::translational_damping;
+  if (name == "soil.damping") return &p.soil.damping;  // C5, for sweeps
   q = Quantity::mass;
   if (name == "cab.mass") return &p.cab.mass;
   if (name == "plow.mass") return &p.plow.mass;

@@ -959,12 +959,17 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   // round-off 1e-15; the exact crossing times below are known in closed form
   // or to 1e-15 s by bisection.
   const double tol_v = 1e-14, tol_x = 1e-15;
+  // Each event function starts 1e-10 (m/s or m) on its own side of zero
+  // (docs/theory/rigid.md, section 4), so that a switch never leaves the next
+  // function at an exact zero: the cutting function is X5' - VS cos - 1e-10,
+  // the backing one X5 - X_s + 1e-10.
+  const double hair = 1e-10;
 
   // Cutting: g = X5' - VS cos(theta_g). The blade starts forward (X5' < 0) and
   // its X velocity rises through VS cos at t1 = acos(-VS cos / (A w)) / w.
-  for (double t : {0.0, 0.005, 0.01}) EXPECT_NEAR(event(t), path.vx5(t) - vs, tol_v);
+  for (double t : {0.0, 0.005, 0.01}) EXPECT_NEAR(event(t), path.vx5(t) - vs - hair, tol_v);
   const double t1 = std::acos(-vs / (path.amplitude * path.omega)) / path.omega;
-  EXPECT_NEAR(event(t1), 0.0, tol_v);
+  EXPECT_NEAR(event(t1), -hair, tol_v);
   EXPECT_LT(event(t1 - 1e-6), 0.0);
   EXPECT_GT(event(t1 + 1e-6), 0.0);
   // A falling crossing does not end cutting.
@@ -991,7 +996,7 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   // rearward at VS cos; g = X5 - X_s(t).
   for (double t : {t1, t1 + 0.003, t1 + 0.02}) {
     EXPECT_NEAR(m.soil_line_at(t), line1 + vs * (t - t1), tol_x);
-    EXPECT_NEAR(event(t), path.x5(t) - (line1 + vs * (t - t1)), tol_x);
+    EXPECT_NEAR(event(t), path.x5(t) - (line1 + vs * (t - t1)) + hair, tol_x);
   }
   EXPECT_GT(event(t1 + 1e-4), 0.0);  // the blade runs ahead of the soil line
   // t2: the blade, coming forward again, meets the line (bracket, then bisect).
@@ -1000,7 +1005,7 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   ASSERT_LT(event(hi), 0.0);
   for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) (event(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
   const double t2 = hi;
-  EXPECT_NEAR(path.x5(t2), line1 + vs * (t2 - t1), 1e-12);
+  EXPECT_NEAR(path.x5(t2) + hair, line1 + vs * (t2 - t1), 1e-12);  // the blade meets the line, less the 1e-10 m offset
   std::printf("cutting ends at t1 = %.9f s (X5 = %.6e m), resumes at t2 = %.9f s at the soil line %.6e m\n", t1, line1, t2, path.x5(t2));
   // K and C at REK K5, REC C5 while backing off.
   {
@@ -1025,7 +1030,7 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   {
     const double t = t2 + 0.002;
     path.state(t, q, v);
-    EXPECT_NEAR(event(t), path.vx5(t) - vs, tol_v);
+    EXPECT_NEAR(event(t), path.vx5(t) - vs - hair, tol_v);
     VectorXd a;
     m.acceleration(t, q, v, a);
     EXPECT_LT(relative_difference(a, hand_acceleration(m, g, p, t, q, v, true)), 1e-8);

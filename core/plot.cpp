@@ -1,0 +1,206 @@
+// PNG line plots through gnuplot; see plot.h.
+#include "core/plot.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "core/csv_writer.h"
+#include "core/error.h"
+
+extern char** environ;
+
+namespace framedyn::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Okabe-Ito colours: distinct for colour-blind readers and in grey print.
+constexpr const char* kColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
+constexpr int kPointTypes[] = {7, 5, 9, 11, 13, 15, 4};
+
+// A gnuplot single-quoted string: only ' is special (doubled); no line breaks.
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else if (c == '\n' || c == '\r') out += ' ';
+    else out += c;
+  }
+  return out + "'";
+}
+
+std::string axis_title(const std::string& label, const std::string& unit) { return column(label, unit); }
+
+// A private temporary folder, removed with the object.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    static std::atomic<unsigned> counter{0};
+    const fs::path base = fs::temp_directory_path();
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+      path_ = base / fmt::format("framedyn_plot_{}_{}", ::getpid(), counter++);
+      std::error_code ec;
+      if (fs::create_directory(path_, ec)) return;
+    }
+    throw PlotError("cannot create a temporary folder for the plot in " + base.string());
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// Runs `program args...` with stdin from /dev/null and stdout + stderr into
+// `log`. Returns the exit status; throws PlotError if it cannot be started or
+// does not exit normally.
+int run_program(const std::string& program, const std::vector<std::string>& args, const fs::path& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  std::vector<std::string> all = {program};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0)
+    throw PlotError(fmt::format("cannot run '{}' to draw figures: {} (install gnuplot, Debian package gnuplot-nox: ./install-deps.sh)", program,
+                                std::strerror(rc)));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw PlotError(fmt::format("waiting for '{}': {}", program, std::strerror(errno)));
+  if (!WIFEXITED(status)) throw PlotError(fmt::format("'{}' was stopped by signal {}", program, WIFSIGNALED(status) ? WTERMSIG(status) : 0));
+  return WEXITSTATUS(status);
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+void check_plot(const LinePlot& plot) {
+  const InputLocation where{"", 0, "plot '" + plot.title + "'"};
+  if (plot.series.empty()) throw InputError(where, "at least one series", "none");
+  if (plot.width < 100 || plot.width > 10000 || plot.height < 100 || plot.height > 10000)
+    throw InputError(where, "a size of 100 to 10000 pixels", fmt::format("{} x {}", plot.width, plot.height));
+  for (const PlotSeries& s : plot.series) {
+    const std::string which = "series '" + s.name + "'";
+    if (s.x.size() != s.y.size()) throw InputError(where, "as many x as y values in " + which, fmt::format("{} x and {} y values", s.x.size(), s.y.size()));
+    if (s.x.empty()) throw InputError(where, "values in " + which, "an empty series");
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
+        throw InputError(where, "finite values in " + which, fmt::format("({}, {}) at point {}", s.x[i], s.y[i], i + 1));
+  }
+}
+
+std::string gnuplot_script(const LinePlot& plot, const fs::path& data_file, const fs::path& png) {
+  std::string s;
+  s += "# framedyn line plot\n";
+  // pngcairo draws anti-aliased lines; gnuplot-nox also has libgd's png.
+  s += "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n";
+  s += fmt::format("  set terminal pngcairo size {},{} noenhanced font 'Sans,11' linewidth 1.2 background '#ffffff'\n", plot.width, plot.height);
+  s += "} else {\n";
+  s += fmt::format("  set terminal png size {},{} noenhanced background '#ffffff'\n", plot.width, plot.height);
+  s += "}\n";
+  s += "set encoding utf8\n";
+  s += "set output " + quoted(fs::absolute(png).string()) + "\n";
+  s += "set title " + quoted(plot.title) + " font ',13'\n";
+  s += "set xlabel " + quoted(axis_title(plot.x_label, plot.x_unit)) + "\n";
+  s += "set ylabel " + quoted(axis_title(plot.y_label, plot.y_unit)) + "\n";
+  s += "set style line 100 lc rgb '#d0d0d0' lw 1 dt 1\n";
+  s += "set grid xtics ytics linestyle 100, linestyle 100\n";
+  s += "set border lw 1\n";
+  s += "set key below horizontal center Left reverse samplen 3 spacing 1.2 width 2\n";
+  s += "set datafile separator ','\n";
+  s += "set format y '%.6g'\n";
+  s += "set format x '%.6g'\n";
+  if (plot.mark_points) {
+    // A little room so that the first and last markers are not cut by the border.
+    s += "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
+  } else {
+    s += "set autoscale xfix\n";
+  }
+  s += "plot ";
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& ser = plot.series[i];
+    const std::size_t k = i % (sizeof(kColours) / sizeof(kColours[0]));
+    if (i > 0) s += ", \\\n     ";
+    s += fmt::format("{} index {} using 1:2", i == 0 ? quoted(fs::absolute(data_file).string()) : std::string("''"), i);
+    if (plot.mark_points)
+      s += fmt::format(" with linespoints lw 2 pt {} ps 1.3 lc rgb '{}'", kPointTypes[k], kColours[k]);
+    else
+      s += fmt::format(" with lines lw 1.5 lc rgb '{}'", kColours[k]);
+    s += ser.name.empty() ? std::string(" notitle") : " title " + quoted(ser.name);
+  }
+  s += "\nunset output\n";
+  return s;
+}
+
+void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnuplot) {
+  check_plot(plot);
+  ScratchDir scratch;
+  const fs::path data = scratch.path() / "plot.csv", script = scratch.path() / "plot.gp", log = scratch.path() / "gnuplot.log";
+  {
+    // One block per series (gnuplot's "index"), blocks apart by two blank lines.
+    std::ofstream out(data, std::ios::binary);
+    for (std::size_t i = 0; i < plot.series.size(); ++i) {
+      const PlotSeries& ser = plot.series[i];
+      out << (i > 0 ? "\n\n" : "") << "# " << ser.name << "\n";
+      for (std::size_t p = 0; p < ser.x.size(); ++p) out << fmt::format("{:.17g},{:.17g}\n", ser.x[p], ser.y[p]);
+    }
+    out.close();
+    if (!out) throw PlotError("cannot write the plot data " + data.string());
+  }
+  {
+    std::ofstream out(script, std::ios::binary);
+    out << gnuplot_script(plot, data, png);
+    out.close();
+    if (!out) throw PlotError("cannot write the plot script " + script.string());
+  }
+  std::error_code ec;
+  fs::remove(png, ec);
+  const int status = run_program(gnuplot, {script.string()}, log);
+  std::string message = read_text(log);
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  if (status != 0) throw PlotError(fmt::format("gnuplot failed (exit status {}) drawing '{}': {}", status, plot.title, message));
+  if (!fs::exists(png, ec) || fs::file_size(png, ec) == 0)
+    throw PlotError(fmt::format("gnuplot wrote no image {} for '{}': {}", png.string(), plot.title, message));
+}
+
+bool gnuplot_available(const std::string& gnuplot) {
+  try {
+    ScratchDir scratch;
+    return run_program(gnuplot, {"--version"}, scratch.path() / "version.log") == 0;
+  } catch (const PlotError&) {
+    return false;
+  }
+}
+
+}  // namespace framedyn::core

@@ -1,0 +1,56 @@
+// Parameter sweeps: one study run once per value of a named machine parameter
+// (the thesis's Chapter V studies of the ground stiffness K5, 20,000 to
+// 60,000 lbf/in, and damping C5, 100 to 500 lbf*s/in: Figures 9 and 10).
+// Each run is run_rigid_study on a copy of the study with the parameter set;
+// nothing else changes, so the runs are independent and may run on several
+// threads with results identical to a sequential run. No files are touched.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "coupling/rigid_study.h"
+
+namespace framedyn::coupling {
+
+// What one run of a sweep gives (SI).
+struct SweepPoint {
+  double value = 0.0;                               // the parameter
+  std::optional<double> plow_vertical_pp;           // m, as RigidResults
+  std::optional<double> peak_cutting_force;         // N
+  std::optional<double> peak_backing_force;         // N
+  std::vector<double> frequencies_hz;               // natural frequencies, lowest first
+  std::vector<std::string> dominant;                // the dominant coordinate of each
+};
+
+SweepPoint sweep_point(const RigidResults& r, double value);
+
+struct SweepResult {
+  std::string parameter;
+  core::Quantity quantity = core::Quantity::dimensionless;  // of the parameter
+  std::vector<SweepPoint> points;  // in the order of the requested values
+  // The run at the study file's own value of the parameter, the reference of
+  // the relative changes; reference_index is its place in `points`, or -1
+  // when that value was not among the swept ones (it was run on its own).
+  SweepPoint reference;
+  int reference_index = -1;
+};
+
+// Parameters a sweep may change: the calibratable ones and soil.damping.
+std::vector<std::string> sweepable_parameters();
+
+// (value - reference) / reference, or nothing if either is missing or the reference is 0.
+std::optional<double> relative_change(const std::optional<double>& value, const std::optional<double>& reference);
+
+// Runs `study` once per value (SI) of `parameter`, on up to `threads` threads.
+// `progress`, if given, is called (from any thread, one call at a time) as each
+// run starts. Throws core::InputError (key "--parameter" or "--values") for an
+// unknown parameter, one the study calibrates, no values, a negative or
+// non-finite value, or a study without analysis.response; run errors pass through.
+SweepResult run_parameter_sweep(const RigidStudy& study, const std::string& parameter, const std::vector<double>& values, int threads = 1,
+                                const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace framedyn::coupling
