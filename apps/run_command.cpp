@@ -137,6 +137,55 @@ int run_study(const RunOptions& opt) {
     core::CsvTable ev({"time [s]", "event"});
     for (const auto& e : tr.events) ev.row().add(e.time).add(e.what);
     folder.write_text("events.csv", ev.str());
+
+    if (r.resultants) {
+      // Frame loads (forces on the frame) and the stress resultants of Eq. 2.47.
+      const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment), L = u.label(Quantity::length);
+      const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
+      std::vector<std::string> lh = {"time [s]"};
+      for (const coupling::FrameLoad2D& l : r.frame_loads)
+        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(core::column(l.name + c, std::string(c) == "_my" ? M : F));
+      core::CsvTable lcsv(lh);
+      for (std::size_t i = 0; i < tr.time.size(); ++i) {
+        lcsv.row().add(tr.time[i]);
+        for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
+      }
+      folder.write_text("frame_loads.csv", lcsv.str());
+      const coupling::StressResultants& sr = *r.resultants;
+      const bool stress = !r.rail_top_stress.empty();
+      std::vector<std::string> rh = {"time [s]", core::column("X", L), core::column("SRX", F), core::column("SRZ", F), core::column("SRMY", M)};
+      if (stress) rh.push_back(core::column("rail_top_stress", u.label(Quantity::stress)));
+      core::CsvTable rcsv(rh);
+      nlohmann::ordered_json points = nlohmann::ordered_json::array();
+      for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
+        double px = 0, pz = 0, pm = 0, ps = 0, ps_time = 0;
+        for (std::size_t i = 0; i < tr.time.size(); ++i) {
+          px = std::max(px, std::abs(sr.srx[i][k]));
+          pz = std::max(pz, std::abs(sr.srz[i][k]));
+          pm = std::max(pm, std::abs(sr.srmy[i][k]));
+          if (stress && std::abs(r.rail_top_stress[i][k]) > ps) {
+            ps = std::abs(r.rail_top_stress[i][k]);
+            ps_time = tr.time[i];
+          }
+        }
+        nlohmann::ordered_json jp = {{"x", sr.output_x[k] * lf}, {"peak_srx", px * ff}, {"peak_srz", pz * ff}, {"peak_srmy", pm * mf}};
+        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"time_s", ps_time}};
+        points.push_back(jp);
+      }
+      for (std::size_t i = 0; i < tr.time.size(); ++i)
+        for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
+          rcsv.row().add(tr.time[i]).add(sr.output_x[k] * lf).add(sr.srx[i][k] * ff).add(sr.srz[i][k] * ff).add(sr.srmy[i][k] * mf);
+          if (stress) rcsv.add(r.rail_top_stress[i][k] * sf);
+        }
+      folder.write_text("frame_resultants.csv", rcsv.str());
+      rigid["frame"] = {{"units", {{"x", L}, {"force", F}, {"moment", M}, {"stress", u.label(Quantity::stress)}}},
+                        {"loads", [&] {
+                           std::vector<std::string> names;
+                           for (const auto& l : r.frame_loads) names.push_back(l.name);
+                           return names;
+                         }()},
+                        {"output_points", points}};
+    }
   }
   j["rigid"] = rigid;
   std::vector<std::string> figures;

@@ -165,7 +165,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   YamlMap top(doc, "", file, &si);
   if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
   top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires", "plow", "chain", "soil", "analysis",
-                  "calibration"});
+                  "calibration", "frame_output"});
   RigidStudy s;
   s.file = file;
   s.name = top.text_or("name", file);
@@ -320,6 +320,21 @@ RigidStudy read_rigid_study(const std::string& file) {
       s.response = req;
     }
   }
+  if (auto fo = root.optional_map("frame_output")) {
+    fo->allow_only({"points", "height", "rail"});
+    FrameOutputRequest req;
+    req.points = fo->numbers("points", Quantity::length);
+    if (req.points.empty() || req.points.size() > 24)
+      throw fo->error("points", "a list of 1 to 24 X positions (the thesis's limit)", fmt::format("{} points", req.points.size()));
+    req.height = fo->number_or("height", Quantity::length, 0.0);
+    if (auto rail = fo->optional_map("rail")) {
+      rail->allow_only({"area", "second_moment", "top_fiber"});
+      req.rail_area = rail->positive("area", Quantity::area);
+      req.rail_second_moment = rail->positive("second_moment", Quantity::second_moment_of_area);
+      req.rail_top_fiber = rail->positive("top_fiber", Quantity::length);
+    }
+    s.frame_output = req;
+  }
   if (auto cal = root.optional_map("calibration")) {
     cal->allow_only({"parameters", "targets"});
     CalibrationRequest req;
@@ -456,6 +471,19 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
     Series c{"chain_force", Quantity::force, {}};
     for (std::size_t i = 0; i < ns; ++i) c.values.push_back(machine.chain_force(tr.time[i]));
     r.series.push_back(std::move(c));
+  }
+  if (study.frame_output) {
+    const FrameOutputRequest& fo = *study.frame_output;
+    r.frame_loads = frame_loads_2d(machine, tr);
+    r.resultants = frame_stress_resultants(machine, tr, r.frame_loads, fo.points, fo.height);
+    if (fo.rail_area > 0) {
+      // Each of the two rails carries half of the whole frame's resultants (Eq. 2.47d).
+      r.rail_top_stress.assign(ns, std::vector<double>(fo.points.size(), 0.0));
+      for (std::size_t i = 0; i < ns; ++i)
+        for (std::size_t k = 0; k < fo.points.size(); ++k)
+          r.rail_top_stress[i][k] = 0.5 * r.resultants->srx[i][k] / fo.rail_area -
+                                    0.5 * r.resultants->srmy[i][k] * fo.rail_top_fiber / fo.rail_second_moment;
+    }
   }
   return r;
 }

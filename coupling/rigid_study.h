@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/units.h"
+#include "coupling/frame_loads_2d.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
 #include "rigid/rigid_modes.h"
@@ -39,6 +40,16 @@ double get_parameter(const rigid::Machine2DParameters& p, const std::string& nam
 void set_parameter(rigid::Machine2DParameters& p, const std::string& name, double value);
 core::Quantity parameter_quantity(const rigid::Machine2DParameters& p, const std::string& name);
 
+// Where to report the frame's stress resultants (Eq. 2.47) and the rail's
+// top-fiber stress: up to 24 output points along the frame.
+struct FrameOutputRequest {
+  std::vector<double> points;      // X, m
+  double height = 0.0;             // Z of the output points, m
+  double rail_area = 0.0;          // one rail: A, m^2 (0: no stress)
+  double rail_second_moment = 0.0; // I about the rail's horizontal axis, m^4
+  double rail_top_fiber = 0.0;     // distance from the rail's axis to its top, m
+};
+
 struct RigidStudy {
   std::string file;
   std::string name;
@@ -48,6 +59,7 @@ struct RigidStudy {
   std::vector<std::string> fixed_coordinates;   // held in the modal analysis
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;
+  std::optional<FrameOutputRequest> frame_output;
 };
 
 // Throws core::InputError naming the file, line and key path.
@@ -70,6 +82,10 @@ struct RigidResults {
   std::optional<double> plow_vertical_peak_to_peak;  // m, average over shaker cycles
   std::optional<double> peak_cutting_force;          // N, largest signed plow force magnitude (forward travel)
   std::optional<double> peak_backing_force;          // N, largest magnitude while the blade moves back
+  // Frame loads and resultants (with a response and a frame_output request).
+  std::vector<FrameLoad2D> frame_loads;
+  std::optional<StressResultants> resultants;
+  std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);
