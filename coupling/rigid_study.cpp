@@ -314,7 +314,13 @@ RigidStudy read_rigid_study(const std::string& file) {
       if (method == "event_located") req.method = ResponseRequest::Method::event_located;
       else if (method == "rk4") req.method = ResponseRequest::Method::rk4;
       else throw r->error("method", "event_located or rk4", "'" + method + "'");
-      if (req.method == ResponseRequest::Method::rk4) req.rk4_step = r->positive("rk4_step", Quantity::time);
+      if (req.method == ResponseRequest::Method::rk4) {
+        req.rk4_step = r->positive("rk4_step", Quantity::time);
+        const double ratio = req.output_interval / req.rk4_step;
+        if (std::abs(ratio - std::round(ratio)) > 1e-9 * ratio || std::round(ratio) < 1)
+          throw r->error("rk4_step", "a step that divides output_interval a whole number of times",
+                         fmt::format("{} s against an output interval of {} s", req.rk4_step, req.output_interval));
+      }
       req.relative_tolerance = r->number_or("relative_tolerance", Quantity::dimensionless, 1e-8);
       if (!(req.relative_tolerance > 0 && req.relative_tolerance < 1e-2)) throw r->error("relative_tolerance", "a tolerance between 0 and 0.01", "out of range");
       s.response = req;
