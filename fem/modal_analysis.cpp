@@ -25,9 +25,9 @@ bool factorize(Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Spars
   s.compute(a);
   return s.info() == Eigen::Success;
 }
-Eigen::VectorXd solve(const SparseCholesky& s, const Eigen::VectorXd& b) { return s.solve(b); }
-Eigen::VectorXd solve(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::VectorXd& b) {
-  return s.solve(b);
+void solve_into(const SparseCholesky& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) { s.solve_in_place(b.data(), x.data()); }
+void solve_into(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  x = s.solve(b);
 }
 
 // The mass matrix as M = S S^T, S = P^T L (L lower triangular, P a
@@ -77,7 +77,7 @@ class StandardFormOperator {
     Eigen::Map<Eigen::VectorXd> out(y, n);
     a_.noalias() = mass_.lower * in;                           // L x
     for (Eigen::Index i = 0; i < n; ++i) b_(mass_.perm(i)) = a_(i);  // S x = P^T L x
-    a_ = solve(solver_, b_);                                     // A^{-1} S x
+    solve_into(solver_, b_, a_);                                 // A^{-1} S x
     for (Eigen::Index i = 0; i < n; ++i) b_(i) = a_(mass_.perm(i));  // P ...
     out.noalias() = mass_.lower.transpose() * b_;               // S^T ... = L^T P ...
     ++solves_;

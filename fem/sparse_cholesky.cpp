@@ -11,6 +11,12 @@ namespace framedyn::fem {
 struct SparseCholesky::Impl {
   mutable cholmod_common common;
   cholmod_factor* factor = nullptr;
+  // Solution and workspace reused by every solve (cholmod_solve2): a Lanczos
+  // run solves some tens of times, and fresh 8 MB buffers per solve at 10^6
+  // DOF cost more in page faults than the triangular solves themselves.
+  mutable cholmod_dense* x = nullptr;
+  mutable cholmod_dense* y = nullptr;
+  mutable cholmod_dense* e = nullptr;
   Impl() {
     cholmod_start(&common);
     common.print = 0;  // CHOLMOD would print warnings on stdout
@@ -20,6 +26,9 @@ struct SparseCholesky::Impl {
     common.supernodal = CHOLMOD_AUTO;
   }
   ~Impl() {
+    if (x) cholmod_free_dense(&x, &common);
+    if (y) cholmod_free_dense(&y, &common);
+    if (e) cholmod_free_dense(&e, &common);
     if (factor) cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
   }
@@ -87,16 +96,14 @@ void SparseCholesky::solve_in_place(const double* b, double* x) const {
   rhs.x = const_cast<double*>(b);
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* sol = cholmod_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
-  if (!sol) throw std::runtime_error("CHOLMOD solve failed");
-  std::memcpy(x, sol->x, sizeof(double) * static_cast<size_t>(size_));
-  cholmod_free_dense(&sol, &impl_->common);
+  if (!cholmod_solve2(CHOLMOD_A, impl_->factor, &rhs, nullptr, &impl_->x, nullptr, &impl_->y, &impl_->e, &impl_->common))
+    throw std::runtime_error("CHOLMOD solve failed");
+  std::memcpy(x, impl_->x->x, sizeof(double) * static_cast<size_t>(size_));
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::Ref<const Eigen::VectorXd>& b) const {
   Eigen::VectorXd x(b.size());
-  Eigen::VectorXd copy = b;  // CHOLMOD needs contiguous memory it may read as non-const
-  solve_in_place(copy.data(), x.data());
+  solve_in_place(b.data(), x.data());  // Ref<const VectorXd> is contiguous
   return x;
 }
 

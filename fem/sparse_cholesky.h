@@ -26,6 +26,8 @@ class SparseCholesky {
   // min(diag L)^2 / max(diag L)^2: CHOLMOD's cheap reciprocal condition estimate.
   double reciprocal_condition() const;
   Eigen::VectorXd solve(const Eigen::Ref<const Eigen::VectorXd>& b) const;
+  // x = A^{-1} b; b and x may not overlap. Reuses the solver's buffers:
+  // not for concurrent calls on one object.
   void solve_in_place(const double* b, double* x) const;
   Eigen::Index size() const { return size_; }
 
