@@ -233,11 +233,15 @@ RigidStudy read_rigid_study(const std::string& file) {
 
   if (p.attachment != rigid::Attachment::none) {
     const YamlMap soil = root.map("soil");
-    soil.allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction"});
+    soil.allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference"});
     p.soil.stiffness = soil.non_negative("stiffness", Quantity::translational_stiffness);
     p.soil.damping = soil.non_negative("damping", Quantity::translational_damping);
     p.soil.stiffness_reduction = soil.fraction("stiffness_reduction", 0.0);
     p.soil.damping_reduction = soil.fraction("damping_reduction", 1.0);
+    const std::string reference = soil.text_or("spring_reference", "equilibrium");
+    if (reference != "equilibrium" && reference != "contact")
+      throw soil.error("spring_reference", "equilibrium (Eq. 2.37 as printed) or contact (the soil pushed from the point of contact)", "'" + reference + "'");
+    p.soil.spring_from_contact = reference == "contact";
   } else if (root.has("soil")) {
     throw root.error("soil", "no soil data without an attachment", "a soil map");
   }

@@ -204,7 +204,12 @@ void Machine2D::reset(double t, const Eigen::VectorXd& q) {
   cutting_ = true;
   soil_line_time_ = t;
   soil_line_ = blade_point_ >= 0 ? model_.points()[static_cast<std::size_t>(blade_point_)].displacement.row(X).dot(q) : 0.0;
-  soil_history_.assign(1, {t, true, soil_line_});
+  anchor_.setZero();
+  if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
+    const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
+    anchor_ = {j.row(X).dot(q), j.row(Z).dot(q)};
+  }
+  soil_history_.assign(1, {t, true, soil_line_, anchor_});
   full_teeth_ = full_teeth_at(t);
 }
 
@@ -260,7 +265,8 @@ double Machine2D::element_tension(int element, double t, const Eigen::VectorXd& 
     vr = in->velocity(t);
   }
   if (std::find(soil_elements_.begin(), soil_elements_.end(), element) != soil_elements_.end()) {
-    const bool cutting = soil_state_at(t).cutting;
+    const SoilState state = soil_state_at(t);
+  const bool cutting = state.cutting;
     k *= cutting ? 1.0 : p_.soil.stiffness_reduction;
     c *= cutting ? 1.0 : p_.soil.damping_reduction;
     // The soil streams rearward past the machine at VS (Eq. 2.23).
@@ -313,6 +319,12 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
   const Eigen::MatrixXd& k = cutting_ ? k_cut_ : k_back_;
   const Eigen::MatrixXd& c = cutting_ ? c_cut_ : c_back_;
   Eigen::VectorXd f = forcing(t) - k * q - c * v;
+  // Soil springs unstretched at the anchor (nonzero only with spring_from_contact).
+  if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
+    const double scale = cutting_ ? 1.0 : p_.soil.stiffness_reduction;
+    f += scale * p_.soil.stiffness *
+         (model_.elongation_map(soil_elements_[0]).transpose() * anchor_.x() + model_.elongation_map(soil_elements_[1]).transpose() * anchor_.y());
+  }
   // The soil moves rearward past the machine at VS: the blade dampers see the
   // blade velocity relative to it (Eq. 2.23), a reference velocity (VS cos, -VS sin).
   if (blade_point_ >= 0 && p_.forward_speed != 0.0) {
@@ -325,14 +337,15 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
 
 Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
   if (blade_point_ < 0) return Eigen::Vector2d::Zero();
-  const bool cutting = soil_state_at(t).cutting;
+  const SoilState state = soil_state_at(t);
+  const bool cutting = state.cutting;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const Eigen::Vector3d d = j * q, vel = j * v;
   const double rk = p_.soil.stiffness * (cutting ? 1.0 : p_.soil.stiffness_reduction);
   const double rc = p_.soil.damping * (cutting ? 1.0 : p_.soil.damping_reduction);
   // Eq. 2.37: RPF = [dX5 RK5 + (VX5 - VS cos) RC5] l + [dZ5 RK5 + (VZ5 + VS sin) RC5] n
-  return {d(X) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
-          d(Z) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
+  return {(d(X) - state.anchor.x()) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
+          (d(Z) - state.anchor.y()) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
 }
 
 int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
@@ -366,14 +379,15 @@ std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
     cutting_ = false;
     soil_line_ = x5;
     soil_line_time_ = t;
-    soil_history_.push_back({t, false, x5});
+    soil_history_.push_back({t, false, x5, anchor_});
     return fmt::format("blade backs off at x5 = {:.6g} m", x5);
   }
   if (!cutting_ && directions[0] < 0) {
     cutting_ = true;
     soil_line_ = x5;
     soil_line_time_ = t;
-    soil_history_.push_back({t, true, x5});
+    if (p_.soil.spring_from_contact) anchor_ = {x5, j.row(Z).dot(q)};
+    soil_history_.push_back({t, true, x5, anchor_});
     return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
   }
   return {};

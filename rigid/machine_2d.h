@@ -72,6 +72,11 @@ struct SoilLaw {
   double damping = 0.0;              // C5, N s/m
   double stiffness_reduction = 0.0;  // REK, 0..1, while the blade moves in soil already cut
   double damping_reduction = 1.0;    // REC, 0..1
+  // Where the soil springs are unstretched: at the blade's equilibrium
+  // position (Eq. 2.37 as printed, the default), or where the blade was when
+  // the current cut began ("soil in compression only": the soil is pushed
+  // from the point of contact on).
+  bool spring_from_contact = false;
 };
 
 struct Plow2D {
@@ -173,6 +178,7 @@ class Machine2D : public SwitchedSystem {
     double time = 0.0;       // when it began, s
     bool cutting = true;
     double line = 0.0;       // x of the unpenetrated soil line at `time`, m
+    Eigen::Vector2d anchor{0, 0};  // (X, Z) displacement at which the soil springs are unstretched, m
   };
   const std::vector<SoilState>& soil_history() const { return soil_history_; }
   SoilState soil_state_at(double t) const;  // the state in force at t (after a switch at exactly t)
@@ -213,6 +219,7 @@ class Machine2D : public SwitchedSystem {
   double soil_velocity_ = 0.0;                     // VS cos theta_g, m/s along +X
   bool full_teeth_ = true;                         // XNN = 1
   std::vector<SoilState> soil_history_;
+  Eigen::Vector2d anchor_{0, 0};  // soil springs' unstretched blade displacement (see SoilLaw)
   bool full_teeth_at(double t) const;
 
   Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part
