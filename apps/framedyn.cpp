@@ -9,8 +9,10 @@
 
 #include "apps/commands.h"
 #include "core/error.h"
+#include "core/results_folder.h"
 
 int main(int argc, char** argv) {
+  framedyn::core::install_interrupt_cleanup();  // before any thread starts
   CLI::App app{"framedyn " FRAMEDYN_VERSION ": rigid-body and beam finite-element dynamics of off-road machine frames"};
   app.set_version_flag("--version", std::string("framedyn ") + FRAMEDYN_VERSION);
   app.require_subcommand(1);

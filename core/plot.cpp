@@ -2,6 +2,7 @@
 #include "core/plot.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -83,9 +84,18 @@ int run_program(const std::string& program, const std::vector<std::string>& args
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // The child starts with no signals blocked and default dispositions, so that
+  // Ctrl-C stops gnuplot too (framedyn blocks them for its interrupt clean-up).
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (rc != 0)
     throw PlotError(fmt::format("cannot run '{}' to draw figures: {} (install gnuplot, Debian package gnuplot-nox: ./install-deps.sh)", program,
                                 std::strerror(rc)));

@@ -1,15 +1,70 @@
 // Whole-or-absent results folders: write beside the target, rename into place.
 #include "core/results_folder.h"
 
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 namespace framedyn::core {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The partial folders of this process, for the interrupt clean-up.
+std::mutex& registry_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::set<fs::path>& partial_folders() {
+  static std::set<fs::path> folders;
+  return folders;
+}
+
+const char* signal_name(int signal_number) {
+  switch (signal_number) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return "a signal";
+  }
+}
+
+}  // namespace
+
+void install_interrupt_cleanup() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    sigaddset(&signals, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    std::thread([signals] {
+      int signal_number = 0;
+      if (sigwait(&signals, &signal_number) != 0) return;
+      std::lock_guard<std::mutex> lock(registry_mutex());  // lets a commit in progress finish
+      for (const fs::path& folder : partial_folders()) {
+        std::error_code ec;
+        fs::remove_all(folder, ec);
+      }
+      std::fprintf(stderr, "framedyn: interrupted by %s; no results written (earlier results left as they were)\n",
+                   signal_name(signal_number));
+      std::fflush(stderr);
+      std::_Exit(128 + signal_number);
+    }).detach();
+  });
+}
 
 ResultsFolder::ResultsFolder(fs::path target) : target_(std::move(target)) {
   if (target_.empty()) throw std::runtime_error("results folder: empty path");
@@ -18,15 +73,21 @@ ResultsFolder::ResultsFolder(fs::path target) : target_(std::move(target)) {
   partial_ += ".partial-" + std::to_string(::getpid());
   std::error_code ec;
   fs::remove_all(partial_, ec);
+  {
+    std::lock_guard<std::mutex> lock(registry_mutex());
+    partial_folders().insert(partial_);
+  }
   fs::create_directories(partial_, ec);
   if (ec) throw std::runtime_error("cannot create results folder " + partial_.string() + ": " + ec.message());
 }
 
 ResultsFolder::~ResultsFolder() {
+  std::lock_guard<std::mutex> lock(registry_mutex());
   if (!committed_) {
     std::error_code ec;
     fs::remove_all(partial_, ec);
   }
+  partial_folders().erase(partial_);
 }
 
 fs::path ResultsFolder::path_of(const std::string& file_name) const { return partial_ / file_name; }
@@ -40,6 +101,7 @@ void ResultsFolder::write_text(const std::string& file_name, const std::string& 
 }
 
 void ResultsFolder::commit() {
+  std::lock_guard<std::mutex> lock(registry_mutex());
   std::error_code ec;
   fs::path old;
   if (fs::exists(target_, ec)) {
@@ -55,6 +117,7 @@ void ResultsFolder::commit() {
     throw std::runtime_error("cannot move results into " + target_.string() + ": " + ec.message());
   }
   committed_ = true;
+  partial_folders().erase(partial_);
   if (!old.empty()) fs::remove_all(old, ec);
 }
 

@@ -1,13 +1,21 @@
 // A results folder that is whole or absent. Files are written into a sibling
 // folder "<target>.partial-<pid>"; commit() moves it into place in one rename,
-// so a run that stops half-way (an error, an exception) leaves any previous
-// results untouched and no partial folder that looks complete.
+// so a run that stops half-way (an error, an exception, Ctrl-C or SIGTERM)
+// leaves any previous results untouched and no partial folder behind.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
 namespace framedyn::core {
+
+// Makes SIGINT, SIGTERM and SIGHUP remove every results folder still being
+// written, print one line, and exit with status 128 + signal. Call it first in
+// main, before any thread starts: it blocks those signals in the calling
+// thread (threads started later inherit that) and waits for them in a thread
+// of its own, so the clean-up runs as ordinary code, not in a signal handler,
+// and never races a commit (both hold one lock).
+void install_interrupt_cleanup();
 
 class ResultsFolder {
  public:
