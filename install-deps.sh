@@ -2,7 +2,8 @@
 # Installs everything framedyn needs from Debian 12's packages (and nothing
 # else): the compiler and CMake, the numerical libraries, the test framework,
 # and CalculiX (ccx), the peer FE code the tests compare the beam model with.
-# gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`.
+# gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`;
+# clang with its runtime (libFuzzer, sanitizers) builds the fuzz harnesses of tests/fuzz.
 set -euo pipefail
 packages=(
   g++ make cmake pkg-config
@@ -11,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   calculix-ccx
   gnuplot-nox
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -51,6 +51,8 @@ InputError YamlMap::error(const std::string& key, const std::string& expected, c
 
 void YamlMap::allow_only(std::initializer_list<const char*> allowed) const {
   for (const auto& kv : node_) {
+    if (!kv.first.IsScalar())
+      throw InputError({file_, kv.first.Mark().line + 1, path_}, "keys that are plain words", "a key that is " + describe(kv.first));
     const std::string key = kv.first.as<std::string>();
     bool ok = false;
     for (const char* a : allowed) ok = ok || key == a;

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Builds framedyn's libFuzzer harnesses with clang (ASan + UBSan) and runs each
+# for a while, starting from the seed corpora (the shipped meshes and studies
+# and tests/fuzz/seeds). Exits non-zero on the first finding and names the
+# input that reproduces it.
+#
+#   tests/fuzz/run_fuzzers.sh build  SOURCE_DIR BUILD_DIR
+#   tests/fuzz/run_fuzzers.sh run    SOURCE_DIR BUILD_DIR SECONDS HARNESS
+#
+# HARNESS: fuzz_inp_reader | fuzz_study_reader. A finding is kept in
+# BUILD_DIR/findings/; rerun it with `BUILD_DIR/tests/fuzz/HARNESS FILE`.
+set -euo pipefail
+what=$1 source_dir=$(cd "$2" && pwd) build_dir=$3
+
+case "$what" in
+  build)
+    if ! command -v clang++ >/dev/null; then
+      echo "run_fuzzers: clang++ not found (Debian packages clang and libclang-rt-14-dev; ./install-deps.sh installs them)" >&2
+      exit 1
+    fi
+    cmake -S "$source_dir" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DFRAMEDYN_FUZZ=ON -DFRAMEDYN_BUILD_TESTS=OFF -DFRAMEDYN_NATIVE=OFF >/dev/null
+    cmake --build "$build_dir" -j2 --target fuzz_inp_reader fuzz_study_reader
+    ;;
+  run)
+    seconds=$4 harness=$5
+    corpus="$build_dir/corpus/$harness"
+    mkdir -p "$corpus" "$build_dir/findings"
+    case "$harness" in
+      fuzz_inp_reader)   cp "$source_dir"/meshes/*.inp "$source_dir"/tests/fuzz/seeds/inp/*.inp "$corpus"/ ;;
+      fuzz_study_reader) find "$source_dir/examples" -name '*.yaml' -exec cp {} "$corpus"/ \; ;;
+      *) echo "run_fuzzers: unknown harness '$harness'" >&2; exit 2 ;;
+    esac
+    # -timeout: an input that takes 10 s is a hang, a finding too.
+    "$build_dir/tests/fuzz/$harness" "$corpus" -max_total_time="$seconds" -max_len=20000 -timeout=10 \
+      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build_dir/findings/$harness-" 2>"$build_dir/$harness.log" || {
+      tail -n 60 "$build_dir/$harness.log" >&2
+      echo "run_fuzzers: $harness found a fault; reproducer in $build_dir/findings/" >&2
+      exit 1
+    }
+    grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|Done)" "$build_dir/$harness.log" || true
+    echo "run_fuzzers: $harness ran ${seconds} s without a finding; corpus $(ls "$corpus" | wc -l) inputs"
+    ;;
+  *) echo "usage: run_fuzzers.sh build|run SOURCE_DIR BUILD_DIR [SECONDS HARNESS]" >&2; exit 2 ;;
+esac
