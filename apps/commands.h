@@ -14,5 +14,6 @@ void add_modes_command(CLI::App& app, std::function<int()>& run);
 void add_static_command(CLI::App& app, std::function<int()>& run);
 void add_run_command(CLI::App& app, std::function<int()>& run);
 void add_sweep_command(CLI::App& app, std::function<int()>& run);
+void add_frame_response_command(CLI::App& app, std::function<int()>& run);  // frame_response_command.cpp
 
 }  // namespace framedyn::apps

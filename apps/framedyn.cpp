@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   framedyn::apps::add_static_command(app, run);
   framedyn::apps::add_run_command(app, run);
   framedyn::apps::add_sweep_command(app, run);
+  framedyn::apps::add_frame_response_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

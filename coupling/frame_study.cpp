@@ -1,0 +1,358 @@
+// The frame transient study: read, run, write; see frame_study.h.
+#include "coupling/frame_study.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/csv_writer.h"
+#include "core/error.h"
+#include "fem/inp_reader.h"
+#include "fem/modal_analysis.h"
+#include "fem/section_forces.h"
+#include "fem/vtu_writer.h"
+
+namespace framedyn::coupling {
+
+namespace {
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+const char* supports_name(FrameSupports s) {
+  return s == FrameSupports::fixed_rear_end ? "fixed_rear_end" : "free_free_inertia_relief";
+}
+const char* method_name(FrameMethod m) {
+  switch (m) {
+    case FrameMethod::mode_displacement: return "mode_displacement";
+    case FrameMethod::mode_acceleration: return "mode_acceleration";
+    case FrameMethod::direct: return "direct";
+  }
+  return "";
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  return v == 0.0 ? "0" : fmt::format("{:.10g}", v);
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir) {
+  f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "pvd",
+                "direct_substeps"});
+  FrameStudyRequest r;
+  r.file = f.file();
+  r.units = f.units();
+  const auto resolve = [&](const std::string& p) {
+    const std::filesystem::path path(p);
+    return path.is_absolute() ? path : dir / path;
+  };
+  r.mesh = resolve(f.text("mesh"));
+  if (f.has("loads")) r.loads = resolve(f.text("loads"));
+  const std::string supports = f.text_or("supports", "fixed_rear_end");
+  if (supports == "fixed_rear_end") r.supports = FrameSupports::fixed_rear_end;
+  else if (supports == "free_free_inertia_relief") r.supports = FrameSupports::free_free_inertia_relief;
+  else throw f.error("supports", "fixed_rear_end or free_free_inertia_relief", quoted(supports));
+  r.support_set = f.text_or("support_set", "REAR_END");
+  if (f.has("modes")) {
+    const YAML::Node n = f.node()["modes"];
+    if (n.IsScalar() && n.Scalar() == "all") r.modes = -1;
+    else {
+      r.modes = f.integer("modes");
+      if (r.modes < 1) throw f.error("modes", "a number of modes >= 1 or 'all'", describe(n));
+    }
+  }
+  const std::string method = f.text_or("method", "mode_acceleration");
+  if (method == "mode_displacement") r.method = FrameMethod::mode_displacement;
+  else if (method == "mode_acceleration") r.method = FrameMethod::mode_acceleration;
+  else if (method == "direct") r.method = FrameMethod::direct;
+  else throw f.error("method", "mode_displacement, mode_acceleration or direct", quoted(method));
+  if (f.has("damping")) {
+    const YamlMap d = f.map("damping");
+    d.allow_only({"modal_ratio", "rayleigh"});
+    if (d.has("modal_ratio") == d.has("rayleigh"))
+      throw f.error("damping", "exactly one of modal_ratio or rayleigh", d.has("rayleigh") ? "both" : "neither");
+    if (d.has("modal_ratio")) {
+      const YAML::Node n = d.node()["modal_ratio"];
+      std::vector<double> ratios = n.IsSequence() ? d.numbers("modal_ratio", core::Quantity::dimensionless)
+                                                  : std::vector<double>{d.number("modal_ratio", core::Quantity::dimensionless)};
+      if (ratios.empty()) throw d.error("modal_ratio", "a ratio or a list of ratios", "an empty list");
+      for (double z : ratios)
+        if (!(z >= 0.0 && z < 1.0)) throw d.error("modal_ratio", "damping ratios in [0, 1)", json_number(z));
+      r.damping = fem::ModalDamping{ratios, false, 0.0, 0.0};
+    } else {
+      const YamlMap ry = d.map("rayleigh");
+      ry.allow_only({"alpha", "beta"});
+      // alpha in 1/s and beta in s are the same in every unit system.
+      r.damping = fem::ModalDamping::rayleigh_damping(ry.non_negative("alpha", core::Quantity::dimensionless),
+                                                      ry.non_negative("beta", core::Quantity::dimensionless));
+    }
+  }
+  if (r.method == FrameMethod::direct && !r.damping.rayleigh)
+    throw f.error("damping", "rayleigh: {alpha, beta} for method direct (a full-system integrator needs C = alpha M + beta K)",
+                  "modal_ratio");
+  if (f.has("output_interval")) r.output_interval = f.positive("output_interval", core::Quantity::time);
+  if (f.has("stations")) {
+    r.stations = f.integer("stations");
+    if (r.stations < 2) throw f.error("stations", "at least 2 stations per element (the ends)", std::to_string(r.stations));
+  }
+  r.pvd = f.boolean_or("pvd", false);
+  if (f.has("direct_substeps")) {
+    r.direct_substeps = f.integer("direct_substeps");
+    if (r.direct_substeps < 1) throw f.error("direct_substeps", "an integer >= 1", std::to_string(r.direct_substeps));
+  }
+  return r;
+}
+
+FrameStudyRequest read_frame_study(const std::string& file) {
+  const YAML::Node doc = load_yaml_file(file);
+  core::UnitSystem si = core::UnitSystem::si();
+  YamlMap top(doc, "", file, &si);
+  if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
+  top.allow_only({"framedyn_study", "name", "units", "model", "frame"});
+  const std::string units = top.text("units");
+  core::UnitSystem u = si;
+  try {
+    u = core::UnitSystem::from_name(units);
+  } catch (const std::invalid_argument&) {
+    throw top.error("units", "in-lbf-s, m-N-s (or SI) or mm-N-s", quoted(units));
+  }
+  YamlMap root(doc, "", file, &u);
+  const std::string model = root.text("model");
+  if (model != "frame_transient") throw root.error("model", "frame_transient", quoted(model));
+  FrameStudyRequest r = read_frame_block(root.map("frame"), std::filesystem::path(file).parent_path());
+  r.name = root.text_or("name", file);
+  r.units = u;
+  r.file = file;
+  return r;
+}
+
+FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameStudyResults out;
+  out.model = fem::read_inp(q.mesh);
+  fem::FrameModel& model = out.model;
+  if (q.supports == FrameSupports::fixed_rear_end) {
+    const auto set = model.node_sets.find(q.support_set);
+    if (set == model.node_sets.end() || set->second.empty())
+      throw core::InputError({q.file, 0, "frame.support_set"}, "a node set of the mesh " + q.mesh.string(), quoted(q.support_set));
+    for (int node : set->second)
+      for (int d = 0; d < fem::kDofsPerNode; ++d) model.constraints.push_back({node, d, 0.0});
+  } else if (!model.constraints.empty()) {
+    throw core::InputError({q.file, 0, "frame.supports"}, "a mesh without *BOUNDARY for free_free_inertia_relief",
+                           fmt::format("{} constrained DOFs in {}", model.constraints.size(), q.mesh.string()));
+  }
+  if (given) out.loads = *given;
+  else if (q.loads) out.loads = read_load_history(*q.loads);
+  else throw core::InputError({q.file, 0, "frame.loads"}, "a load-history file", "no 'loads' key and no loads from a rigid-body run");
+  if (out.loads.times.size() < 2) throw core::InputError({q.file, 0, "frame.loads"}, "a load history with at least two times", "one time");
+
+  std::vector<LoadPointLocation> points;
+  for (const LoadPointHistory& p : out.loads.points) points.push_back({p.name, p.location});
+  out.mapping = map_load_points(model, points);
+
+  fem::FrameDynamics frame(model);
+  const bool free_free = frame.free_free();
+  fem::ModalBasis basis;
+  if (q.method != FrameMethod::direct && q.modes < 0) {
+    basis = frame.all_modes();
+  } else {
+    fem::ModalOptions mo;
+    const int wanted = q.method == FrameMethod::direct ? std::min(20, frame.dofs().free_count() - 7) : q.modes;
+    mo.mode_count = wanted + (free_free ? 6 : 0);
+    if (mo.mode_count >= frame.dofs().free_count())
+      throw core::InputError({q.file, 0, "frame.modes"}, fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - (free_free ? 6 : 0)),
+                             std::to_string(q.modes));
+    basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, mo));
+  }
+
+  fem::TransientInput in;
+  in.times = out.loads.times;
+  in.distribution = out.mapping.distribution;
+  in.components = out.loads.component_matrix();
+  int interval = 1;
+  if (q.output_interval) {
+    const double dt = (in.times(in.times.size() - 1) - in.times(0)) / static_cast<double>(in.times.size() - 1);
+    interval = std::max(1, static_cast<int>(std::lround(*q.output_interval / dt)));
+  }
+  if (q.method == FrameMethod::direct) {
+    fem::NewmarkOptions no;
+    no.rayleigh_alpha = q.damping.alpha;
+    no.rayleigh_beta = q.damping.beta;
+    no.substeps = q.direct_substeps;
+    no.output_interval = interval;
+    out.response = fem::direct_transient(frame, in, no);
+    std::vector<double> f;
+    for (Eigen::Index i = 0; i < basis.eigenvalues.size(); ++i)
+      if (!basis.rigid_body[static_cast<std::size_t>(i)]) f.push_back(std::sqrt(std::max(basis.eigenvalues(i), 0.0)) / 6.283185307179586);
+    out.frequencies_hz = Eigen::Map<Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size()));
+  } else {
+    fem::ModalTransientOptions mo;
+    mo.method = q.method == FrameMethod::mode_displacement ? fem::ResponseMethod::mode_displacement : fem::ResponseMethod::mode_acceleration;
+    mo.damping = q.damping;
+    mo.output_interval = interval;
+    out.response = fem::modal_transient(frame, basis, in, mo);
+    out.frequencies_hz = out.response.frequencies_hz;
+  }
+  out.rails = recover_rails(model, out.response.times, out.response.displacement, q.rails, q.stations);
+  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q, const core::ResultsFolder& folder) {
+  const core::UnitSystem& u = q.units;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), mf = 1.0 / u.to_si_factor(Quantity::moment),
+               sf = 1.0 / u.to_si_factor(Quantity::stress);
+  {
+    core::CsvTable t({"mode", core::column("frequency", "Hz"), "damping_ratio"});
+    for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
+      t.row().add(static_cast<int>(i + 1)).add(r.frequencies_hz(i));
+      if (i < r.response.damping_ratios.size()) t.add(r.response.damping_ratios(i));
+      else t.add(q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i)));
+    }
+    folder.write_text("frame_modes.csv", t.str());
+  }
+  {
+    core::CsvTable t({"rail", "element", "station", core::column("X", u.label(Quantity::length)), core::column("Y", u.label(Quantity::length)),
+                      core::column("Z", u.label(Quantity::length)), core::column("max_bending_moment", u.label(Quantity::moment)),
+                      core::column("max_abs_Mz", u.label(Quantity::moment)), core::column("max_abs_My", u.label(Quantity::moment)),
+                      core::column("max_abs_normal_stress", u.label(Quantity::stress))});
+    for (const RailRecovery& rail : r.rails)
+      for (std::size_t k = 0; k < rail.station_points.size(); ++k) {
+        const Eigen::Index i = static_cast<Eigen::Index>(k);
+        t.row().add(rail.spec.name).add(rail.station_element_ids[k]).add(static_cast<int>(k % static_cast<std::size_t>(q.stations)))
+            .add(rail.station_points[k].x() * lf).add(rail.station_points[k].y() * lf).add(rail.station_points[k].z() * lf)
+            .add(rail.envelope_bending_moment(i) * mf).add(rail.envelope_mz(i) * mf).add(rail.envelope_my(i) * mf)
+            .add(rail.envelope_normal_stress(i) * sf);
+      }
+    folder.write_text("frame_rails_envelope.csv", t.str());
+  }
+  {
+    std::vector<std::string> h = {"time [s]"};
+    for (const RailRecovery& rail : r.rails) {
+      h.push_back(core::column(rail.spec.name + ".max_bending_moment", u.label(Quantity::moment)));
+      h.push_back(core::column(rail.spec.name + ".max_abs_normal_stress", u.label(Quantity::stress)));
+    }
+    core::CsvTable t(h);
+    for (Eigen::Index j = 0; j < r.response.times.size(); ++j) {
+      t.row().add(r.response.times(j));
+      for (const RailRecovery& rail : r.rails) t.add(rail.series_bending_moment(j) * mf).add(rail.series_normal_stress(j) * sf);
+    }
+    folder.write_text("frame_rails_series.csv", t.str());
+  }
+  if (!q.pvd) return;
+  // ParaView time series: one VTU per output time, a PVD collection naming them.
+  const fem::FrameModel& m = r.model;
+  std::vector<fem::BeamGeometry> geometry;
+  for (const fem::BeamElement& b : m.beams) geometry.push_back(fem::beam_geometry(m, b));
+  std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+  for (Eigen::Index j = 0; j < r.response.times.size(); ++j) {
+    const Eigen::VectorXd uj = r.response.displacement.col(j);
+    fem::VtuField disp{fmt::format("displacement [{}]", u.label(Quantity::length)), 3, {}};
+    fem::VtuField rot{"rotation [rad]", 3, {}};
+    for (std::size_t n = 0; n < m.nodes.size(); ++n)
+      for (int d = 0; d < 3; ++d) {
+        disp.values.push_back(uj(fem::kDofsPerNode * static_cast<Eigen::Index>(n) + d) * lf);
+        rot.values.push_back(uj(fem::kDofsPerNode * static_cast<Eigen::Index>(n) + 3 + d));
+      }
+    fem::VtuField stress{fmt::format("max_abs_normal_stress [{}]", u.label(Quantity::stress)), 1, {}};
+    fem::VtuField moment{fmt::format("max_bending_moment [{}]", u.label(Quantity::moment)), 1, {}};
+    fem::VtuField axial{fmt::format("axial_force_mid [{}]", u.label(Quantity::force)), 1, {}};
+    for (std::size_t e = 0; e < m.beams.size(); ++e) {
+      const fem::Vector12d f = fem::element_end_forces(geometry[e], m.beams[e], uj);
+      double smax = 0.0, mmax = 0.0;
+      for (int s = 0; s < q.stations; ++s) {
+        const fem::SectionForces sfc = fem::section_forces_at(f, geometry[e].data.length * s / (q.stations - 1));
+        mmax = std::max(mmax, std::hypot(sfc.my, sfc.mz));
+        for (double v : fem::fiber_stresses(geometry[e].data.section, sfc)) smax = std::max(smax, std::abs(v));
+      }
+      stress.values.push_back(smax * sf);
+      moment.values.push_back(mmax * mf);
+      axial.values.push_back(fem::section_forces_at(f, 0.5 * geometry[e].data.length).n / u.to_si_factor(Quantity::force));
+    }
+    const std::string name = fmt::format("frame_response_{:05d}.vtu", j);
+    folder.write_text(name, fem::vtu_document(m, lf, {disp, rot}, {stress, moment, axial}));
+    pvd += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", core::format_number(r.response.times(j)), name);
+  }
+  pvd += "  </Collection>\n</VTKFile>\n";
+  folder.write_text("frame_response.pvd", pvd);
+}
+
+std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) {
+  const core::UnitSystem& u = q.units;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  auto where = [&](const RailPeak& p, const std::string& rail) {
+    return fmt::format("\"rail\": {}, \"element\": {}, \"station\": {}, \"x\": {{\"value\": {}, \"unit\": {}}}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}",
+                       json_string(rail), p.element_id, p.station, json_number(p.point.x() * lf), json_string(u.label(Quantity::length)),
+                       json_number(p.time));
+  };
+  std::string j = "{\n";
+  j += fmt::format("  \"model\": \"frame_transient\",\n  \"mesh\": {},\n  \"supports\": \"{}\",\n  \"method\": \"{}\",\n", json_string(q.mesh.string()),
+                   supports_name(q.supports), method_name(q.method));
+  j += fmt::format("  \"nodes\": {},\n  \"elements\": {},\n  \"output_times\": {},\n  \"wall_time\": {{\"value\": {}, \"unit\": \"s\"}},\n",
+                   r.model.nodes.size(), r.model.beams.size(), r.response.times.size(), json_number(r.wall_seconds));
+  j += "  \"modes\": [";
+  for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
+    const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)
+                                                             : q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i));
+    j += fmt::format("{}\n    {{\"mode\": {}, \"frequency_hz\": {}, \"damping_ratio\": {}}}", i ? "," : "", i + 1, json_number(r.frequencies_hz(i)),
+                     json_number(zeta));
+  }
+  j += "\n  ],\n  \"load_points\": [";
+  for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
+    const MappedLoadPoint& mp = r.mapping.points[p];
+    std::string ids;
+    for (std::size_t k = 0; k < mp.nodes.size(); ++k) ids += (k ? ", " : "") + std::to_string(r.model.nodes[static_cast<std::size_t>(mp.nodes[k])].id);
+    j += fmt::format("{}\n    {{\"name\": {}, \"at_node\": {}, \"node_set\": {}, \"nodes\": [{}], \"spider_length\": {{\"value\": {}, \"unit\": {}}}}}", p ? "," : "",
+                     json_string(mp.name), mp.at_node ? "true" : "false", mp.from_node_set ? "true" : "false", ids, json_number(mp.spider_length * lf),
+                     json_string(u.label(Quantity::length)));
+  }
+  j += "\n  ],\n  \"peak_bending_moment\": {";
+  const RailRecovery* worst = nullptr;
+  for (std::size_t k = 0; k < r.rails.size(); ++k) {
+    const RailRecovery& rail = r.rails[k];
+    j += fmt::format("{}\n    {}: {{\"value\": {}, \"unit\": {}, {}}}", k ? "," : "", json_string(rail.spec.name),
+                     json_number(u.from_si(rail.peak_bending_moment.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
+                     where(rail.peak_bending_moment, rail.spec.name));
+    if (!worst || std::abs(rail.peak_normal_stress.value) > std::abs(worst->peak_normal_stress.value)) worst = &rail;
+  }
+  j += "\n  },\n  \"peak_bending_moment_components\": {";
+  for (std::size_t k = 0; k < r.rails.size(); ++k) {
+    const RailRecovery& rail = r.rails[k];
+    j += fmt::format("{}\n    {}: {{\"mz\": {{\"value\": {}, \"unit\": {}, {}}}, \"my\": {{\"value\": {}, \"unit\": {}, {}}}}}", k ? "," : "",
+                     json_string(rail.spec.name), json_number(u.from_si(rail.peak_mz.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
+                     where(rail.peak_mz, rail.spec.name), json_number(u.from_si(rail.peak_my.value, Quantity::moment)),
+                     json_string(u.label(Quantity::moment)), where(rail.peak_my, rail.spec.name));
+  }
+  j += "\n  }";
+  if (worst) {
+    j += fmt::format(",\n  \"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}, \"fiber\": {}, \"bending_share\": {}}}",
+                     json_number(u.from_si(worst->peak_normal_stress.value, Quantity::stress)), json_string(u.label(Quantity::stress)),
+                     where(worst->peak_normal_stress, worst->spec.name), worst->peak_normal_stress.fiber, json_number(worst->bending_share));
+    j += ",\n  \"rails\": {";
+    for (std::size_t k = 0; k < r.rails.size(); ++k) {
+      const RailRecovery& rail = r.rails[k];
+      j += fmt::format("{}\n    {}: {{\"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}}}, \"bending_share\": {}}}", k ? "," : "",
+                       json_string(rail.spec.name), json_number(u.from_si(rail.peak_normal_stress.value, Quantity::stress)),
+                       json_string(u.label(Quantity::stress)), where(rail.peak_normal_stress, rail.spec.name), json_number(rail.bending_share));
+    }
+    j += "\n  }";
+  }
+  j += "\n}";
+  return j;
+}
+
+}  // namespace framedyn::coupling

@@ -1,0 +1,102 @@
+// Section forces and corner stresses along the rails over time; see rail_stress.h.
+#include "coupling/rail_stress.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "fem/beam_element.h"
+
+namespace framedyn::coupling {
+
+namespace {
+
+void update(RailPeak& p, double v, double t, int element, int station, const Eigen::Vector3d& x, int fiber = -1) {
+  if (std::abs(v) > std::abs(p.value) || (p.element_id == 0 && p.value == 0.0)) p = {v, t, element, station, x, fiber};
+}
+
+}  // namespace
+
+std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eigen::VectorXd& times,
+                                        const Eigen::MatrixXd& u, const std::vector<RailSpec>& rails, int stations) {
+  if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
+  if (u.rows() != model.dof_count() || u.cols() != times.size())
+    throw std::invalid_argument("the displacement history does not match the model or the times");
+  std::vector<RailRecovery> out;
+  for (const RailSpec& spec : rails) {
+    const auto set = model.element_sets.find(spec.element_set);
+    if (set == model.element_sets.end())
+      throw core::InputError({"", 0, "rails." + spec.name}, "an element set of the mesh", "'" + spec.element_set + "'");
+    std::vector<int> beams;
+    for (int id : set->second)
+      if (model.beam_index(id) >= 0) beams.push_back(model.beam_index(id));
+    if (beams.empty())
+      throw core::InputError({"", 0, "rails." + spec.name}, "an element set with beam elements", "'" + spec.element_set + "' without any");
+    RailRecovery r;
+    r.spec = spec;
+    std::vector<fem::BeamGeometry> geometry;
+    for (int b : beams) {
+      const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(b)];
+      geometry.push_back(fem::beam_geometry(model, beam));
+      const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
+      const Eigen::Vector3d& e = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
+      for (int s = 0; s < stations; ++s) {
+        r.station_element_ids.push_back(beam.id);
+        r.station_points.push_back(a + (static_cast<double>(s) / (stations - 1)) * (e - a));
+      }
+    }
+    const Eigen::Index ns = static_cast<Eigen::Index>(r.station_points.size());
+    r.envelope_bending_moment = r.envelope_mz = r.envelope_my = r.envelope_normal_stress = Eigen::VectorXd::Zero(ns);
+    r.series_bending_moment = r.series_normal_stress = Eigen::VectorXd::Zero(times.size());
+    for (Eigen::Index j = 0; j < times.size(); ++j) {
+      const Eigen::VectorXd uj = u.col(j);
+      const double t = times(j);
+      for (std::size_t e = 0; e < beams.size(); ++e) {
+        const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(beams[e])];
+        const fem::BeamGeometry& g = geometry[e];
+        const fem::Vector12d f = fem::element_end_forces(g, beam, uj);
+        const fem::SectionProperties& sec = g.data.section;
+        for (int s = 0; s < stations; ++s) {
+          const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;
+          const Eigen::Vector3d& x = r.station_points[static_cast<std::size_t>(k)];
+          const double xs = (static_cast<double>(s) / (stations - 1)) * g.data.length;
+          const fem::SectionForces sf = fem::section_forces_at(f, xs);
+          const double m = std::hypot(sf.my, sf.mz);
+          r.envelope_bending_moment(k) = std::max(r.envelope_bending_moment(k), m);
+          r.envelope_mz(k) = std::max(r.envelope_mz(k), std::abs(sf.mz));
+          r.envelope_my(k) = std::max(r.envelope_my(k), std::abs(sf.my));
+          r.series_bending_moment(j) = std::max(r.series_bending_moment(j), m);
+          update(r.peak_bending_moment, m, t, beam.id, s, x);
+          update(r.peak_axial_force, sf.n, t, beam.id, s, x);
+          update(r.peak_shear_y, sf.vy, t, beam.id, s, x);
+          update(r.peak_shear_z, sf.vz, t, beam.id, s, x);
+          update(r.peak_torque, sf.t, t, beam.id, s, x);
+          update(r.peak_my, sf.my, t, beam.id, s, x);
+          update(r.peak_mz, sf.mz, t, beam.id, s, x);
+          const std::vector<double> sigma = fem::fiber_stresses(sec, sf);
+          for (std::size_t c = 0; c < sigma.size(); ++c) {
+            const double a = std::abs(sigma[c]);
+            r.envelope_normal_stress(k) = std::max(r.envelope_normal_stress(k), a);
+            r.series_normal_stress(j) = std::max(r.series_normal_stress(j), a);
+            if (a > std::abs(r.peak_normal_stress.value) || r.peak_normal_stress.element_id == 0) {
+              update(r.peak_normal_stress, sigma[c], t, beam.id, s, x, static_cast<int>(c));
+              r.forces_at_peak_stress = sf;
+              const Eigen::Vector2d& p = sec.stress_points[c];
+              // Eq. (C.6): sigma = N/A + (My x2 / I11 - Mz x1 / I22).
+              r.axial_stress_at_peak = sf.n / sec.area;
+              r.bending_stress_at_peak = sf.my * p.y() / sec.i11 - sf.mz * p.x() / sec.i22;
+            }
+          }
+        }
+      }
+    }
+    const double denom = std::abs(r.axial_stress_at_peak) + std::abs(r.bending_stress_at_peak);
+    r.bending_share = denom > 0.0 ? std::abs(r.bending_stress_at_peak) / denom : 0.0;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace framedyn::coupling

@@ -1,0 +1,63 @@
+// Recovery along the frame's rails over time: the six section forces at
+// stations of every element of a rail's element set, the fiber normal stress
+// at the tube's corners (fem/section_forces), the peak of each with where
+// (X, rail, element, station) and when, and the share of the peak normal
+// stress that comes from bending. Theory: docs/theory/coupling.md, "Rail
+// stresses", Eqs. (C.5)-(C.7).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+#include "fem/frame_model.h"
+#include "fem/section_forces.h"
+
+namespace framedyn::coupling {
+
+struct RailSpec {
+  std::string name;          // for reports, e.g. "left_rail"
+  std::string element_set;   // mesh element set, e.g. "LEFT_RAIL"
+};
+
+// Where and when a peak occurs. `value` is signed (the value whose magnitude is largest).
+struct RailPeak {
+  double value = 0.0;        // SI (N, N m or Pa)
+  double time = 0.0;         // s
+  int element_id = 0;        // mesh element number
+  int station = 0;           // 0 .. stations-1 from the element's node a
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // m
+  int fiber = -1;            // stress point index (stresses only)
+};
+
+struct RailRecovery {
+  RailSpec spec;
+  // Stations, element by element in the set's order, `stations` per element.
+  std::vector<int> station_element_ids;
+  std::vector<Eigen::Vector3d> station_points;   // m
+  // Envelopes over time, per station: max |.|.
+  Eigen::VectorXd envelope_bending_moment;       // resultant sqrt(My^2 + Mz^2), N m
+  Eigen::VectorXd envelope_mz;                   // about n2 (vertical bending for rails with n1 = +Z), N m
+  Eigen::VectorXd envelope_my;                   // about n1 (lateral bending), N m
+  Eigen::VectorXd envelope_normal_stress;        // max over the corners, Pa
+  // Time series over the rail: max over the stations at each output time.
+  Eigen::VectorXd series_bending_moment;         // N m
+  Eigen::VectorXd series_normal_stress;          // Pa
+  // Peaks over stations and times.
+  RailPeak peak_bending_moment;                  // resultant (value >= 0)
+  RailPeak peak_axial_force, peak_shear_y, peak_shear_z, peak_torque, peak_my, peak_mz;
+  RailPeak peak_normal_stress;
+  fem::SectionForces forces_at_peak_stress;
+  double axial_stress_at_peak = 0.0;             // N / A there, Pa
+  double bending_stress_at_peak = 0.0;           // My x2 / I11 - Mz x1 / I22 there, Pa
+  double bending_share = 0.0;                    // |bending| / (|axial| + |bending|) at the peak (Eq. C.7)
+};
+
+// `displacement`: all DOFs x outputs (m, rad), `times` its output times.
+// Throws core::InputError (key "rails.<name>") for an element set the mesh
+// does not have or that holds no beam element.
+std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eigen::VectorXd& times,
+                                        const Eigen::MatrixXd& displacement, const std::vector<RailSpec>& rails, int stations);
+
+}  // namespace framedyn::coupling
