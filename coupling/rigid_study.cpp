@@ -239,9 +239,13 @@ RigidStudy read_rigid_study(const std::string& file) {
     p.soil.stiffness_reduction = soil.fraction("stiffness_reduction", 0.0);
     p.soil.damping_reduction = soil.fraction("damping_reduction", 1.0);
     const std::string reference = soil.text_or("spring_reference", "equilibrium");
-    if (reference != "equilibrium" && reference != "contact")
-      throw soil.error("spring_reference", "equilibrium (Eq. 2.37 as printed) or contact (the soil pushed from the point of contact)", "'" + reference + "'");
-    p.soil.spring_from_contact = reference == "contact";
+    if (reference != "equilibrium" && reference != "contact" && reference != "soil_line")
+      throw soil.error("spring_reference",
+                       "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or soil_line (from the point of "
+                       "contact, carried rearward with the unpenetrated soil at VS)",
+                       "'" + reference + "'");
+    p.soil.spring_from_contact = reference == "contact" || reference == "soil_line";
+    p.soil.contact_moves_with_soil = reference == "soil_line";
   } else if (root.has("soil")) {
     throw root.error("soil", "no soil data without an attachment", "a soil map");
   }
@@ -306,9 +310,14 @@ RigidStudy read_rigid_study(const std::string& file) {
   }
 
   if (auto analysis = root.optional_map("analysis")) {
-    analysis->allow_only({"modes", "fixed_coordinates", "response"});
+    analysis->allow_only({"modes", "fixed_coordinates", "modal_soil", "response"});
     s.modes = analysis->boolean_or("modes", true);
     s.fixed_coordinates = analysis->strings("fixed_coordinates");
+    const std::string modal_soil = analysis->text_or("modal_soil", "cutting");
+    if (modal_soil == "cutting") s.modal_soil = rigid::Machine2D::ModalSoil::cutting;
+    else if (modal_soil == "backing") s.modal_soil = rigid::Machine2D::ModalSoil::backing;
+    else if (modal_soil == "none") s.modal_soil = rigid::Machine2D::ModalSoil::none;
+    else throw analysis->error("modal_soil", "cutting (K5), backing (REK K5) or none", "'" + modal_soil + "'");
     if (auto r = analysis->optional_map("response")) {
       r->allow_only({"duration", "output_interval", "method", "rk4_step", "relative_tolerance"});
       ResponseRequest req;
@@ -346,7 +355,7 @@ RigidStudy read_rigid_study(const std::string& file) {
     s.frame_output = req;
   }
   if (auto cal = root.optional_map("calibration")) {
-    cal->allow_only({"parameters", "targets"});
+    cal->allow_only({"parameters", "targets", "fit_labels"});
     CalibrationRequest req;
     req.parameters = cal->strings("parameters");
     if (req.parameters.empty()) throw cal->error("parameters", "a list of parameter names to fit", "none");
@@ -364,6 +373,7 @@ RigidStudy read_rigid_study(const std::string& file) {
       req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
     }
     if (req.targets.empty()) throw cal->error("targets", "a list of {frequency_hz, dominant}", "none");
+    req.fit_labels = cal->boolean_or("fit_labels", false);
     s.calibration = req;
   }
   // Build once now so that geometric errors (a toggle linkage, a massless
@@ -389,14 +399,16 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
       rigid::Machine2DParameters p = study.machine;
       for (std::size_t i = 0; i < values.size(); ++i) set_parameter(p, c.parameters[i], values[i]);
       rigid::Machine2D m(p);
-      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), study.fixed_coordinates);
+      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(study.modal_soil), m.model().coordinate_names(), study.fixed_coordinates);
     };
-    r.calibration = rigid::calibrate(modes_of, initial, c.targets);
+    rigid::CalibrationOptions options;
+    if (c.fit_labels) options.coordinates = rigid::Machine2D(study.machine).model().coordinate_names();
+    r.calibration = rigid::calibrate(modes_of, initial, c.targets, options);
     for (std::size_t i = 0; i < c.parameters.size(); ++i) set_parameter(study.machine, c.parameters[i], r.calibration->fitted[i]);
   }
   rigid::Machine2D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
-  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(), r.coordinates, study.fixed_coordinates);
+  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(study.modal_soil), r.coordinates, study.fixed_coordinates);
   if (!study.response) return r;
 
   const ResponseRequest& req = *study.response;

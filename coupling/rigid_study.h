@@ -31,6 +31,9 @@ struct ResponseRequest {
 struct CalibrationRequest {
   std::vector<std::string> parameters;            // e.g. "tires.front.normal.stiffness"
   std::vector<rigid::FrequencyTarget> targets;
+  // calibration.fit_labels: make each target's dominant coordinate part of
+  // the fit (rigid::CalibrationOptions::coordinates), not only the pairing.
+  bool fit_labels = false;
 };
 
 // The machine parameters a calibration may adjust, by name (SI values).
@@ -57,6 +60,10 @@ struct RigidStudy {
   rigid::Machine2DParameters machine;
   bool modes = true;
   std::vector<std::string> fixed_coordinates;   // held in the modal analysis
+  // The soil stiffness the modal analysis (and a calibration) sees:
+  // analysis.modal_soil = cutting (K5, the default), backing (REK K5) or none.
+  // The thesis does not say which CMW2D used; docs/theory/rigid.md, section 5.
+  rigid::Machine2D::ModalSoil modal_soil = rigid::Machine2D::ModalSoil::cutting;
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;
   std::optional<FrameOutputRequest> frame_output;

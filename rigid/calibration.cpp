@@ -35,16 +35,38 @@ namespace {
 // log-parameter towards its start: with more parameters than targets the fit
 // then moves the parameters as little as it can.
 constexpr double kRegularisation = 1e-3;
+// The lead a target's own coordinate must have in its mode's energy, so that
+// the label holds with a margin rather than on a tie.
+constexpr double kLabelMargin = 0.01;
 
+// Index of a target's labelled coordinate in the energy shares, -1 if the
+// label is not enforced (no names given, no label, or an unknown name).
+int label_index(const CalibrationOptions& options, const FrequencyTarget& target) {
+  for (std::size_t j = 0; j < options.coordinates.size(); ++j)
+    if (!target.dominant.empty() && options.coordinates[j] == target.dominant) return static_cast<int>(j);
+  return -1;
+}
+
+// Frequency errors (one per target), label shortfalls (one per target when
+// labels are enforced), then the pull towards the start (one per parameter).
 Eigen::VectorXd residuals(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
-                          const Eigen::VectorXd& x0) {
+                          const Eigen::VectorXd& x0, const CalibrationOptions& options) {
   const std::vector<int> match = match_targets(modes, targets);
-  Eigen::VectorXd r(static_cast<Eigen::Index>(targets.size()) + x.size());
+  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
+  const Eigen::Index nl = options.coordinates.empty() ? 0 : nt;
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(nt + nl + x.size());
   r.tail(x.size()) = kRegularisation * (x - x0);
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (match[t] < 0) throw std::invalid_argument("more frequency targets than the model has modes");
+    const RigidMode& mode = modes[static_cast<std::size_t>(match[t])];
     // Logarithmic error: symmetric in over- and under-shoot, ~ relative error.
-    r(static_cast<Eigen::Index>(t)) = std::log(modes[static_cast<std::size_t>(match[t])].frequency_hz / targets[t].frequency_hz);
+    r(static_cast<Eigen::Index>(t)) = std::log(mode.frequency_hz / targets[t].frequency_hz);
+    const int own = label_index(options, targets[t]);
+    if (nl == 0 || own < 0 || mode.energy_share.size() != static_cast<Eigen::Index>(options.coordinates.size())) continue;
+    double other = 0.0;
+    for (Eigen::Index j = 0; j < mode.energy_share.size(); ++j)
+      if (j != own) other = std::max(other, mode.energy_share(j));
+    r(nt + static_cast<Eigen::Index>(t)) = std::max(0.0, other - mode.energy_share(own) + kLabelMargin);
   }
   return r;
 }
@@ -108,11 +130,11 @@ namespace {
 int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
               const CalibrationOptions& options) {
   const Eigen::Index np = x.size();
-  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
-  Eigen::VectorXd r = residuals(modes_of(from_log(x)), targets, x, x0);
+  Eigen::VectorXd r = residuals(modes_of(from_log(x)), targets, x, x0, options);
+  const Eigen::Index nfit = r.size() - np;  // frequency errors and label shortfalls
   double lambda = 1e-3;
   int iterations = 0;
-  for (int it = 0; it < options.max_iterations && r.head(nt).norm() > options.tolerance; ++it) {
+  for (int it = 0; it < options.max_iterations && r.head(nfit).norm() > options.tolerance; ++it) {
     iterations = it + 1;
     // Jacobian of the log-frequency errors with respect to the log-parameters.
     Eigen::MatrixXd j(r.size(), np);
@@ -121,7 +143,7 @@ int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarg
       Eigen::VectorXd xp = x, xm = x;
       xp(k) += h;
       xm(k) -= h;
-      j.col(k) = (residuals(modes_of(from_log(xp)), targets, xp, x0) - residuals(modes_of(from_log(xm)), targets, xm, x0)) / (2 * h);
+      j.col(k) = (residuals(modes_of(from_log(xp)), targets, xp, x0, options) - residuals(modes_of(from_log(xm)), targets, xm, x0, options)) / (2 * h);
     }
     bool improved = false;
     for (int attempt = 0; attempt < 20 && !improved; ++attempt) {
@@ -134,7 +156,7 @@ int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarg
       const Eigen::VectorXd trial = x + step;
       Eigen::VectorXd r_trial;
       try {
-        r_trial = residuals(modes_of(from_log(trial)), targets, trial, x0);
+        r_trial = residuals(modes_of(from_log(trial)), targets, trial, x0, options);
       } catch (const std::exception&) {
         lambda *= 10;
         continue;

@@ -27,6 +27,13 @@ using ModesOfParameters = std::function<std::vector<RigidMode>(const std::vector
 struct CalibrationOptions {
   int max_iterations = 100;
   double tolerance = 1e-10;  // on the relative frequency errors' norm
+  // The coordinate names that index RigidMode::energy_share. When given, a
+  // target's dominant coordinate is part of what is fitted, not only used to
+  // pair it with a mode: a target whose mode is led by another coordinate adds
+  // the shortfall of its own coordinate's energy share (plus a 1 % margin) to
+  // the residual, so that among the parameter sets that reach the frequencies
+  // the fit moves to one whose modes carry the target's labels.
+  std::vector<std::string> coordinates;
 };
 
 struct CalibrationResult {

@@ -176,7 +176,17 @@ Machine2D::Machine2D(const Machine2DParameters& p)
   c_cut_ = c_full_;
   k_back_ = k_full_ - (1.0 - p.soil.stiffness_reduction) * k_soil;
   c_back_ = c_full_ - (1.0 - p.soil.damping_reduction) * c_soil;
+  k_no_soil_ = k_full_ - k_soil;
   m_solver_.compute(m_);
+}
+
+Eigen::MatrixXd Machine2D::stiffness_matrix(ModalSoil soil) const {
+  switch (soil) {
+    case ModalSoil::cutting: return k_full_;
+    case ModalSoil::backing: return k_back_;
+    case ModalSoil::none: return k_no_soil_;
+  }
+  return k_full_;
 }
 
 int Machine2D::coordinate(const std::string& name) const { return index_of(model_.coordinate_names(), name); }
@@ -205,11 +215,12 @@ void Machine2D::reset(double t, const Eigen::VectorXd& q) {
   soil_line_time_ = t;
   soil_line_ = blade_point_ >= 0 ? model_.points()[static_cast<std::size_t>(blade_point_)].displacement.row(X).dot(q) : 0.0;
   anchor_.setZero();
+  anchor_time_ = t;
   if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
     const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
     anchor_ = {j.row(X).dot(q), j.row(Z).dot(q)};
   }
-  soil_history_.assign(1, {t, true, soil_line_, anchor_});
+  soil_history_.assign(1, {t, true, soil_line_, anchor_, anchor_time_});
   full_teeth_ = full_teeth_at(t);
 }
 
@@ -222,6 +233,12 @@ bool Machine2D::full_teeth_at(double t) const {
   const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
   const double tau = t - std::floor(t / period + 1e-9) * period;
   return tau < atch - 1e-12 * period;
+}
+
+Eigen::Vector2d Machine2D::anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const {
+  if (!(p_.soil.spring_from_contact && p_.soil.contact_moves_with_soil)) return anchor;
+  const Eigen::Vector2d soil_flow(p_.forward_speed * std::cos(p_.ground_slope), -p_.forward_speed * std::sin(p_.ground_slope));
+  return anchor + soil_flow * (t - anchor_time);
 }
 
 Machine2D::SoilState Machine2D::soil_state_at(double t) const {
@@ -266,9 +283,12 @@ double Machine2D::element_tension(int element, double t, const Eigen::VectorXd& 
   }
   if (std::find(soil_elements_.begin(), soil_elements_.end(), element) != soil_elements_.end()) {
     const SoilState state = soil_state_at(t);
-  const bool cutting = state.cutting;
+    const bool cutting = state.cutting;
     k *= cutting ? 1.0 : p_.soil.stiffness_reduction;
     c *= cutting ? 1.0 : p_.soil.damping_reduction;
+    // Unstretched at the anchor (zero unless spring_from_contact), as in plow_force.
+    const Eigen::Vector2d anchor = anchor_at(state.anchor, state.anchor_time, t);
+    xr = el.direction.dot(Eigen::Vector3d(anchor.x(), 0.0, anchor.y()));
     // The soil streams rearward past the machine at VS (Eq. 2.23).
     vr = el.direction.dot(Eigen::Vector3d(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope)));
   }
@@ -322,8 +342,9 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
   // Soil springs unstretched at the anchor (nonzero only with spring_from_contact).
   if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
     const double scale = cutting_ ? 1.0 : p_.soil.stiffness_reduction;
+    const Eigen::Vector2d anchor = anchor_at(anchor_, anchor_time_, t);
     f += scale * p_.soil.stiffness *
-         (model_.elongation_map(soil_elements_[0]).transpose() * anchor_.x() + model_.elongation_map(soil_elements_[1]).transpose() * anchor_.y());
+         (model_.elongation_map(soil_elements_[0]).transpose() * anchor.x() + model_.elongation_map(soil_elements_[1]).transpose() * anchor.y());
   }
   // The soil moves rearward past the machine at VS: the blade dampers see the
   // blade velocity relative to it (Eq. 2.23), a reference velocity (VS cos, -VS sin).
@@ -343,9 +364,10 @@ Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const 
   const Eigen::Vector3d d = j * q, vel = j * v;
   const double rk = p_.soil.stiffness * (cutting ? 1.0 : p_.soil.stiffness_reduction);
   const double rc = p_.soil.damping * (cutting ? 1.0 : p_.soil.damping_reduction);
+  const Eigen::Vector2d anchor = anchor_at(state.anchor, state.anchor_time, t);
   // Eq. 2.37: RPF = [dX5 RK5 + (VX5 - VS cos) RC5] l + [dZ5 RK5 + (VZ5 + VS sin) RC5] n
-  return {(d(X) - state.anchor.x()) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
-          (d(Z) - state.anchor.y()) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
+  return {(d(X) - anchor.x()) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
+          (d(Z) - anchor.y()) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
 }
 
 int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
@@ -379,15 +401,18 @@ std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
     cutting_ = false;
     soil_line_ = x5;
     soil_line_time_ = t;
-    soil_history_.push_back({t, false, x5, anchor_});
+    soil_history_.push_back({t, false, x5, anchor_, anchor_time_});
     return fmt::format("blade backs off at x5 = {:.6g} m", x5);
   }
   if (!cutting_ && directions[0] < 0) {
     cutting_ = true;
     soil_line_ = x5;
     soil_line_time_ = t;
-    if (p_.soil.spring_from_contact) anchor_ = {x5, j.row(Z).dot(q)};
-    soil_history_.push_back({t, true, x5, anchor_});
+    if (p_.soil.spring_from_contact) {
+      anchor_ = {x5, j.row(Z).dot(q)};
+      anchor_time_ = t;
+    }
+    soil_history_.push_back({t, true, x5, anchor_, anchor_time_});
     return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
   }
   return {};

@@ -77,6 +77,13 @@ struct SoilLaw {
   // the current cut began ("soil in compression only": the soil is pushed
   // from the point of contact on).
   bool spring_from_contact = false;
+  // With spring_from_contact: the springs' ground end is fixed in the soil,
+  // which streams rearward past the machine at VS (Eq. 2.23), so the
+  // unstretched position moves with the unpenetrated soil line at
+  // (VS cos theta_g, -VS sin theta_g) from the instant the cut began; the
+  // spring then acts on the blade's penetration into the soil it is cutting,
+  // as the damper acts on its velocity relative to that soil.
+  bool contact_moves_with_soil = false;
 };
 
 struct Plow2D {
@@ -151,6 +158,11 @@ class Machine2D : public SwitchedSystem {
 
   // K and C with the soil law at full value (the blade cutting): for modes.
   Eigen::MatrixXd stiffness_matrix() const { return k_full_; }
+  // Which soil stiffness a modal analysis sees: K5 at full value (the blade
+  // cutting), REK K5 (the blade in soil already cut), or no soil spring at all
+  // (the machine standing on its tires and bounce tire alone).
+  enum class ModalSoil { cutting, backing, none };
+  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const;
   Eigen::MatrixXd damping_matrix() const { return c_full_; }
   Eigen::MatrixXd mass_matrix() const { return m_; }
 
@@ -179,6 +191,7 @@ class Machine2D : public SwitchedSystem {
     bool cutting = true;
     double line = 0.0;       // x of the unpenetrated soil line at `time`, m
     Eigen::Vector2d anchor{0, 0};  // (X, Z) displacement at which the soil springs are unstretched, m
+    double anchor_time = 0.0;      // when the anchor was set (it moves with the soil from then on if contact_moves_with_soil), s
   };
   const std::vector<SoilState>& soil_history() const { return soil_history_; }
   SoilState soil_state_at(double t) const;  // the state in force at t (after a switch at exactly t)
@@ -209,7 +222,7 @@ class Machine2D : public SwitchedSystem {
   Machine2DParameters p_;
   FrameMassProperties frame_;
   Multibody model_;
-  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, c_cut_, k_back_, c_back_;
+  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, c_cut_, k_back_, c_back_, k_no_soil_;
   Eigen::LDLT<Eigen::MatrixXd> m_solver_;
   int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
   std::vector<int> soil_elements_;
@@ -220,6 +233,9 @@ class Machine2D : public SwitchedSystem {
   bool full_teeth_ = true;                         // XNN = 1
   std::vector<SoilState> soil_history_;
   Eigen::Vector2d anchor_{0, 0};  // soil springs' unstretched blade displacement (see SoilLaw)
+  double anchor_time_ = 0.0;      // when anchor_ was set
+  // The anchor at t: fixed in the machine, or carried rearward with the soil.
+  Eigen::Vector2d anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const;
   bool full_teeth_at(double t) const;
 
   Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part

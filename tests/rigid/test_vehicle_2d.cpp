@@ -1373,6 +1373,9 @@ TEST(StudyReader, EveryErrorNamesTheFileTheLineAndTheKeyPath) {
       {"toggle linkage", {{"upper_joint: [112, 4]", "upper_joint: [130, -13]"}}, "plow.linkage", "    upper_pivot: [82, 6]"},
       {"unknown fixed coordinate", {{"fixed_coordinates: [x, w]", "fixed_coordinates: [x, phi]"}}, "analysis.fixed_coordinates", "fixed_coordinates:"},
       {"cab without pitch inertia", {{"  radius_of_gyration: 16", "  radius_of_gyration: 0"}}, "cab.radius_of_gyration", "radius_of_gyration: 0"},
+      {"unknown modal soil", {{"  modes: true\n", "  modes: true\n  modal_soil: wet\n"}}, "analysis.modal_soil", "modal_soil: wet"},
+      {"unknown soil spring reference", {{"damping_reduction: 0.25}", "damping_reduction: 0.25, spring_reference: furrow}"}}, "soil.spring_reference",
+       "spring_reference: furrow"},
       // A document that does not parse has no key path: the message names the
       // file and yaml-cpp's line.
       {"YAML syntax error", {{"contact: [72, -26]", "contact: [72, -26]]"}}, "", "contact: [72, -26]]"},
