@@ -14,6 +14,8 @@
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
+#include "coupling/rigid_study_3d.h"
+#include "apps/run_3d.h"
 
 namespace framedyn::apps {
 
@@ -36,6 +38,7 @@ double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
 }
 
 int run_study(const RunOptions& opt) {
+  if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
   Progress progress(opt.progress);
   if (opt.figures) require_gnuplot();
   progress.stage("reading " + opt.study);

@@ -177,7 +177,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   }
   YamlMap root(doc, "", file, &s.units);
   const std::string model = root.text("model");
-  if (model != "rigid_2d") throw root.error("model", "rigid_2d (the 3-D model comes with a later version)", "'" + model + "'");
+  if (model != "rigid_2d") throw root.error("model", "rigid_2d (rigid_3d studies are read by read_rigid_study_3d)", "'" + model + "'");
 
   rigid::Machine2DParameters& p = s.machine;
   const std::string attachment = root.text("attachment");

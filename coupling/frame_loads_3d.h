@@ -1,0 +1,38 @@
+// Frame loads of the 3-D machine (thesis Chapter III, "Frame Loads"): three
+// forces and three moments over time at the eight load points — 24 reel and
+// reel carrier, 25 front axle pin (no TX), 26 rear axle pin (no TX), 27
+// leveling cylinder (vertical FZ27), 28-31 cab mounts — each from Newton's
+// laws on the attached body with its own inertia taken out (reel, front axle,
+// rear axle) or from the mount elements (Eqs. 3.13-3.15). Loads are ON the
+// frame, in the fixed vehicle axes, moments about the load point. Dynamic
+// parts only, as in the 2-D frame loads (the static weight distribution is
+// left out). The plow's or chain's loads on the frame at point 19 are
+// returned too (`direct`), so that the frame's free body can be checked.
+// docs/theory/coupling.md, "3-D frame loads".
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+#include "coupling/load_history.h"
+#include "rigid/machine_3d.h"
+#include "rigid/time_integration.h"
+
+namespace framedyn::coupling {
+
+struct FrameLoads3D {
+  LoadHistory points;  // P24_REEL, P25_FRONT_AXLE_PIN, P26_REAR_AXLE_PIN, P27_LEVELING_CYLINDER, P28..P31 cab mounts
+  // Other loads acting directly on the frame: the plow assembly at its swing
+  // pin (point 19), or the chain (RCH, RMCH at point 19) and the soil on the
+  // boom; same layout as `points`.
+  LoadHistory direct;
+};
+
+// Names of the load points, in file order (the node sets of meshes/r100_frame.inp).
+std::vector<std::string> frame_load_point_names();
+
+FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajectory& trajectory);
+
+}  // namespace framedyn::coupling

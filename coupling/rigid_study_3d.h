@@ -1,0 +1,67 @@
+// 3-D rigid-body studies (the thesis's CMW3D runs, `model: rigid_3d`): read a
+// YAML study into rigid::Machine3DParameters (SI), and run it — natural
+// frequencies with dominant coordinates, a forced response, the frame loads
+// at the eight load points (coupling/frame_loads_3d.h). Reading is strict in
+// the way of coupling/rigid_study.h (file, line, key path, expected, found).
+// The keys: docs/user-guide.md, "3-D rigid-body studies".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "coupling/frame_loads_3d.h"
+#include "coupling/rigid_study.h"
+#include "rigid/calibration.h"
+#include "rigid/machine_3d.h"
+#include "rigid/rigid_modes.h"
+#include "rigid/time_integration.h"
+
+namespace framedyn::coupling {
+
+// The `model:` key of a study file ("rigid_2d", "rigid_3d", ...); throws
+// core::InputError if the file cannot be read or has no such key.
+std::string study_model(const std::string& file);
+
+struct RigidStudy3D {
+  std::string file;
+  std::string name;
+  core::UnitSystem units;
+  rigid::Machine3DParameters machine;
+  bool modes = true;
+  std::vector<std::string> fixed_coordinates;
+  std::optional<ResponseRequest> response;
+  std::optional<CalibrationRequest> calibration;  // parameter names of calibratable_parameters_3d()
+};
+
+RigidStudy3D read_rigid_study_3d(const std::string& file);
+
+// Parameters a 3-D calibration may adjust (SI values). Names:
+//   tires.<front|rear>.<vertical|longitudinal|lateral>.stiffness  (both tires of the axle)
+//   tires.contact_depth (all four contacts), cab.<mounts|front_mounts|rear_mounts>.<x|y|z>.stiffness
+//   (all four, the two ahead of or behind the mounts' mean X), cab.mass, cab.inertia.<xx|yy|zz>
+//   frame.parts.mass_scale, frame.parts.inertia_scale.<xx|yy|zz> (the parts' total; setting it scales every part alike)
+//   front_axle.inertia.xx, plow.swing_spring.stiffness, soil.stiffness, soil.lateral.stiffness,
+//   plow.bounce_tire.stiffness, plow.lift_cylinder.stiffness, plow.mass
+std::vector<std::string> calibratable_parameters_3d();
+double get_parameter_3d(const rigid::Machine3DParameters& p, const std::string& name);
+void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, double value);
+core::Quantity parameter_quantity_3d(const std::string& name);
+
+struct RigidResults3D {
+  std::vector<std::string> coordinates;
+  std::optional<rigid::CalibrationResult> calibration;
+  rigid::Machine3DParameters machine;  // as analysed (after any calibration)
+  std::vector<rigid::RigidMode> modes;
+  rigid::Trajectory trajectory;
+  std::vector<Series> series;          // blade motion and plow force, chain force
+  std::optional<double> plow_vertical_peak_to_peak;  // m, average over whole shaker cycles
+  std::optional<double> peak_cutting_force;          // N: largest soil force magnitude while the blade cuts
+  std::optional<double> peak_backing_force;          // N: while it backs off
+  std::optional<FrameLoads3D> frame_loads;           // with a response
+};
+
+RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);
+
+}  // namespace framedyn::coupling

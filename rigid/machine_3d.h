@@ -1,0 +1,261 @@
+// The 3-D vehicle model of the thesis's Chapter III (program CMW3D) on the
+// multibody assembly (rigid/multibody.h): frame assembly (6 DOF), cab on
+// four mounts with spring-dampers in X, Y, Z (6 DOF), front axle pinned to
+// the frame at point 20 and free to roll (eta; Eq. 3.4, Appendix F), rear
+// axle rigid with the frame (pin 26 plus leveling cylinder 27), four tires
+// with vertical, longitudinal and lateral spring-dampers turned exactly by
+// the steering angles deltaF, deltaR; and either the vibratory plow (boom
+// swing alpha about a vertical pin at point 19, four-bar linkage in the
+// boom plane, blade plane turned by beta; Appendix E, Table II; rotational
+// spring K30, lift cylinder, bounce tire; shaker at point 22, Eq. 3.12) or
+// the digging chain (boom rigid on the frame, parallel to X-Z and offset in
+// Y; RCH and RMCH at point 19, Appendix D). The soil law is the 2-D one
+// (Eq. 2.36) along the direction of travel. docs/theory/rigid.md, section 10.
+//
+// Coordinates (fixed axes X rearward, Y right, Z up; rotations right-handed
+// about the fixed axes; SI):
+//   plow:  q = (x, y, z, theta_x, theta_y, theta_z, u, v, w, theta_u, theta_v, theta_w, eta, psi, alpha)
+//   chain: q = (x, y, z, theta_x, theta_y, theta_z, u, v, w, theta_u, theta_v, theta_w, eta)
+//   x, y, z           frame displacement at its reference point, m
+//   theta_x, _y, _z   frame roll, pitch, yaw, rad
+//   u, v, w           cab c.g. displacement, m
+//   theta_u, _v, _w   cab roll, pitch, yaw, rad
+//   eta               front axle roll about the pin axis (parallel to X), absolute, rad
+//   psi               upper plow arm rotation about the arm pin axis, absolute, rad
+//   alpha             plow boom yaw about the vertical swing pin, absolute, rad
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rigid/ground_input.h"
+#include "rigid/machine_2d.h"
+#include "rigid/multibody.h"
+#include "rigid/plow_linkage.h"
+#include "rigid/switched_system.h"
+
+namespace framedyn::rigid {
+
+// Inertia tensor about a body's c.g. in the fixed axes from its moments and
+// products of inertia, the products as integrals (P_xy = integral of x y dm,
+// the convention of Eqs. F.7-F.9): I = [[Ixx, -Pxy, -Pxz], [-Pxy, Iyy, -Pyz], [-Pxz, -Pyz, Izz]].
+Eigen::Matrix3d inertia_tensor(double ixx, double iyy, double izz, double pxy = 0.0, double pxz = 0.0, double pyz = 0.0);
+
+// A rigid body's mass properties: mass (kg), c.g. (m, fixed axes), inertia
+// tensor about the c.g. (kg m^2, fixed axes, products included).
+struct RigidPart3D {
+  std::string name;
+  double mass = 0.0;
+  Eigen::Vector3d cg{0, 0, 0};
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+};
+
+// Mass, c.g. and inertia of several rigid parts taken as one body (the
+// parallel-axis theorem with products, Eqs. F.1-F.12 done as a tensor sum).
+RigidPart3D combine(const std::vector<RigidPart3D>& parts, const std::string& name);
+
+struct FrameAssembly3D {
+  // Everything rigidly attached to the frame (frame tubes, engine, ballast,
+  // hitch, digging-chain boom, ...), each with its own mass properties.
+  std::vector<RigidPart3D> parts;
+  // The two attached bodies whose connection loads are recovered separately
+  // (frame loads 24, 26/27): also rigid with the frame.
+  RigidPart3D reel_and_carrier;
+  Eigen::Vector3d reel_attachment{0, 0, 0};      // point 24
+  RigidPart3D rear_axle;                          // axle, drive and both rear wheels
+  Eigen::Vector3d rear_pin{0, 0, 0};              // point 26 (pin axis parallel to X)
+  Eigen::Vector3d leveling_cylinder{0, 0, 0};     // point 27, where the cylinder acts on the frame (vertical)
+  // Where x, y, z are measured; unset: the c.g. of the frame assembly with
+  // the front axle (Eqs. F.1, F.2, F.4).
+  std::optional<Eigen::Vector3d> reference;
+};
+
+struct FrontAxle3D {
+  RigidPart3D axle;                     // M4, [I4]: axle and both front wheels
+  Eigen::Vector3d pin{0, 0, 0};         // point 20 on the frame; the pin axis is parallel to X
+};
+
+struct Tire3D {
+  Eigen::Vector3d contact{0, 0, 0};     // contact point
+  SpringDamperValues vertical;          // along the ground normal
+  SpringDamperValues longitudinal;      // along the wheel's rolling direction (steered)
+  SpringDamperValues lateral;           // along the wheel's axle direction (steered)
+  GroundInput vertical_input, longitudinal_input;
+};
+
+struct Axle3D {
+  Tire3D left, right;                   // -Y and +Y tires
+  double steering_angle = 0.0;          // delta, rad, positive steered to the right (+Y)
+};
+
+struct CabMount3D {
+  std::string name;
+  Eigen::Vector3d position{0, 0, 0};    // on frame and cab alike at equilibrium (points 28-31)
+  SpringDamperValues x, y, z;
+};
+
+struct Cab3D {
+  RigidPart3D body;                     // M3, [I3]
+  std::vector<CabMount3D> mounts;       // four in the thesis
+};
+
+// The plow (Appendix E). Every position is given in the machine's axes for
+// the boom straight (alpha' = 0) and the blade in the boom plane (beta = 0);
+// the model turns the blade-plane points (cg, blade, shaker, bounce tire) by
+// beta about the shank (link l2, pin 10 to pin 9) and then every plow point
+// by alpha' about the vertical through the swing pin. The linkage pins'
+// X, Z are those of the four-bar in the boom plane (plow_linkage.h).
+struct Plow3D {
+  Eigen::Vector3d swing_pin{0, 0, 0};   // point 19 on the frame; vertical axis
+  double boom_angle = 0.0;              // alpha', rad, positive turning the boom's rear end to +Y
+  double blade_angle = 0.0;             // beta, rad, positive turning the blade's rear edge to -Y
+  double boom_offset = 0.0;             // Y of the boom plane at alpha' = 0, m
+  double mass = 0.0;                    // M2, all on the shank
+  Eigen::Vector2d cg{0, 0};             // (X, Z) in the boom plane
+  Eigen::Matrix3d inertia_boom_axes = Eigen::Matrix3d::Zero();  // [I2] about the cg: x along the boom, z vertical
+  FourBarGeometry linkage;              // (X, Z) of pins 6, 11, 9, 10
+  Eigen::Vector2d blade_point{0, 0};    // point 5, where the soil acts
+  Eigen::Vector2d shaker_point{0, 0};   // point 22
+  double shaker_amplitude = 0.0;        // N
+  double shaker_frequency = 0.0;        // Hz
+  double shaker_phase = 0.0;            // rad
+  Eigen::Vector2d bounce_tire_point{0, 0};
+  SpringDamperValues bounce_tire;       // along the ground normal
+  GroundInput bounce_input;
+  Eigen::Vector2d cylinder_base{0, 0};  // lift cylinder on the swing carrier
+  Eigen::Vector2d cylinder_arm_point{0, 0};  // point 8, on the upper arm
+  SpringDamperValues lift_cylinder;
+  SpringDamperValues swing_spring;      // K30 (N m/rad), C30 (N m s/rad): boom yaw against the frame
+};
+
+struct Chain3D {
+  Eigen::Vector3d boom_point{0, 0, 0};  // where the soil acts on the boom
+  Eigen::Vector3d chain_pin{0, 0, 0};   // point 19: RCH and RMCH act on the frame here
+  double chain_angle = 0.0;             // theta_ch, rad, in a plane parallel to X-Z
+  double moment_arm = 0.0;              // m
+  double tooth_static_force = 0.0;      // FTG, N
+  double tooth_damping = 0.0;           // CCH, N s/m
+  double chain_speed = 0.0;             // VCH, m/s
+  double static_reduction = 1.0;        // REH
+  double damping_reduction = 1.0;       // RED
+  double tooth_spacing = 0.0;           // TS, m
+  double length_in_ground = 0.0;        // LC, m
+  double ramp_time = 0.0;               // s
+};
+
+struct Machine3DParameters {
+  double ground_slope = 0.0;            // theta_g, rad (pitch of the ground about Y)
+  double forward_speed = 0.0;           // VS, m/s, positive forward
+  double travel_angle = 0.0;            // tau, rad: heading of travel from -X towards +Y (crab steering: the steering angle)
+  double gravity = 9.80665;
+  FrameAssembly3D frame;
+  FrontAxle3D front_axle;
+  Cab3D cab;
+  Axle3D front_tires, rear_tires;
+  Attachment attachment = Attachment::plow;  // none, plow or chain
+  Plow3D plow;
+  Chain3D chain;
+  SoilLaw soil;                         // K5, C5 along and normal to the travel; REK, REC
+  SpringDamperValues soil_lateral;      // K15, C15: across the travel, at the blade / boom point
+};
+
+class Machine3D : public SwitchedSystem {
+ public:
+  explicit Machine3D(const Machine3DParameters& p);
+
+  const Multibody& model() const { return model_; }
+  const Machine3DParameters& parameters() const { return p_; }
+  int coordinate(const std::string& name) const;  // -1 if absent
+  const Eigen::Vector3d& reference() const { return reference_; }
+
+  Eigen::MatrixXd mass_matrix() const { return m_; }
+  Eigen::MatrixXd stiffness_matrix() const { return k_full_; }  // soil at full value
+  Eigen::MatrixXd damping_matrix() const { return c_full_; }
+
+  Eigen::VectorXd static_deflection() const;
+
+  // SwitchedSystem
+  int size() const override { return model_.size(); }
+  void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
+  int event_count() const override { return blade_point_ >= 0 ? 1 : 0; }
+  void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
+  std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
+                       const std::vector<int>& directions) override;
+  double next_scheduled_change(double t) const override;
+  std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
+  void reset(double t, const Eigen::VectorXd& q);
+
+  struct SoilState {
+    double time = 0.0;
+    bool cutting = true;
+    double line = 0.0;                  // blade displacement along the travel where the soil is unpenetrated, m
+    Eigen::Vector3d anchor{0, 0, 0};    // blade displacement where the soil springs are unstretched, m
+  };
+  const std::vector<SoilState>& soil_history() const { return soil_history_; }
+  SoilState soil_state_at(double t) const;
+  bool cutting() const { return cutting_; }
+
+  // Recovery.
+  Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const;
+  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  Eigen::Vector3d shaker_force(double t) const;      // N, fixed axes
+  Eigen::Vector3d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;  // soil on the blade/boom reversed: Eq. 2.37 in 3-D
+  double chain_force(double t) const;                 // RCH, N
+  Eigen::Vector3d chain_force_vector(double t) const; // RCH along the chain, N
+  Eigen::Vector3d chain_moment(double t) const;       // RMCH about +Y, N m
+  const GroundInput* ground_input_of(int element) const;
+
+  // Where the model put things (machine axes, m), and unit directions.
+  int blade_point() const { return blade_point_; }
+  int shaker_point() const { return shaker_point_; }
+  int chain_point() const { return chain_point_; }
+  const std::vector<int>& soil_elements() const { return soil_elements_; }
+  Eigen::Vector3d travel_direction() const { return cut_direction_; }  // horizontal, rearward relative to the ground (-travel)
+  // Exact positions of the plow's points after beta and alpha' (for tests and recovery).
+  struct PlowPlacement {
+    Eigen::Vector3d pin6, pin11, pin9, pin10, cg, blade, shaker, bounce, cylinder_base, cylinder_arm;
+    Eigen::Vector3d pin_axis;           // arm pin axis (horizontal, normal to the boom plane)
+    Eigen::Matrix3d inertia;            // [I2] in the fixed axes
+  };
+  const PlowPlacement& plow_placement() const { return placement_; }
+  double linkage_ratio() const { return cb_; }
+  // Body indices in model().bodies().
+  int frame_body() const { return frame_body_; }
+  int reel_body() const { return reel_body_; }
+  int rear_axle_body() const { return rear_axle_body_; }
+  int front_axle_body() const { return front_axle_body_; }
+  int cab_body() const { return cab_body_; }
+  int plow_body() const { return plow_body_; }
+
+ private:
+  Machine3DParameters p_;
+  Eigen::Vector3d reference_{0, 0, 0};
+  Multibody model_;
+  PlowPlacement placement_{};
+  double cb_ = 0.0;
+  Eigen::MatrixXd m_, k_full_, c_full_, k_back_, c_back_;
+  Eigen::LDLT<Eigen::MatrixXd> m_solver_;
+  int frame_body_ = -1, reel_body_ = -1, rear_axle_body_ = -1, front_axle_body_ = -1, cab_body_ = -1, plow_body_ = -1;
+  int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
+  std::vector<int> soil_elements_;      // along travel, across, normal
+  std::vector<int> inputs_;             // elements with a reference ground input (looked up by ground_input_of: copy-safe)
+  Eigen::Vector3d cut_direction_{1, 0, 0}, soil_flow_{0, 0, 0};
+  double soil_velocity_ = 0.0;          // VS cos(theta_g) along cut_direction_
+  // Discrete state.
+  bool cutting_ = true;
+  double soil_line_ = 0.0, soil_line_time_ = 0.0;
+  Eigen::Vector3d anchor_{0, 0, 0};
+  bool full_teeth_ = true;
+  std::vector<SoilState> soil_history_;
+  std::vector<std::pair<double, bool>> teeth_history_;  // (time, all MTIG teeth digging) from each change on
+  bool teeth_state_at(double t) const;
+
+  bool full_teeth_at(double t) const;
+  double chain_force(double t, bool cutting, bool full_teeth) const;
+  Eigen::VectorXd forcing(double t) const;
+};
+
+}  // namespace framedyn::rigid

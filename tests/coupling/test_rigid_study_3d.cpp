@@ -1,0 +1,152 @@
+// 3-D rigid-body studies (coupling/rigid_study_3d.h, apps/run_3d.cpp):
+//   1. the thesis's 3-D cases from their case files: Table IV cases 2 and 3 and
+//      Table V's 3-D columns of cases 4-6, each fitted within 1 % with the
+//      thesis's dominant coordinates (targets from thesis-figures.md);
+//   2. the shipped 3-D examples read and build (15 and 13 coordinates);
+//   3. every error path of the reader names the file, line and key path;
+//   4. `framedyn run` on a 3-D study writes frame_loads.csv in the load-history
+//      format and summary.json's rigid.frame_loads.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "coupling/load_history.h"
+#include "coupling/rigid_study_3d.h"
+#include "tests/support/temp_dir.h"
+
+namespace {
+
+namespace coupling = framedyn::coupling;
+using framedyn::core::InputError;
+
+std::string source(const std::string& relative) { return std::string(FRAMEDYN_SOURCE_DIR) + "/" + relative; }
+
+std::string read_text(const std::string& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A thesis case: the calibration must bring every target within 1 % (the
+// issue's acceptance) with the target's dominant coordinate; the modes the run
+// reports afterwards must contain each target with that label.
+void check_case(const std::string& file, std::size_t targets) {
+  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(source(file));
+  ASSERT_TRUE(study.calibration.has_value());
+  ASSERT_EQ(study.calibration->targets.size(), targets);
+  const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
+  ASSERT_TRUE(r.calibration.has_value());
+  std::printf("%s: largest error %.3g %% after %d iterations; fitted/initial:", file.c_str(), 100 * r.calibration->max_relative_error,
+              r.calibration->iterations);
+  for (std::size_t i = 0; i < r.calibration->fitted.size(); ++i)
+    std::printf(" %s x%.4f", study.calibration->parameters[i].c_str(), r.calibration->fitted[i] / r.calibration->initial[i]);
+  std::printf("\n");
+  EXPECT_LT(r.calibration->max_relative_error, 0.01);
+  EXPECT_TRUE(r.calibration->labels_match);
+  for (const auto& t : study.calibration->targets) {
+    bool found = false;
+    for (const auto& m : r.modes)
+      if (m.dominant == t.dominant && std::abs(m.frequency_hz / t.frequency_hz - 1.0) < 0.01) found = true;
+    EXPECT_TRUE(found) << t.frequency_hz << " Hz " << t.dominant;
+  }
+}
+
+TEST(ThesisCases3D, Case2FrameAloneMatchesTableIV) { check_case("examples/thesis/case2.yaml", 6); }
+TEST(ThesisCases3D, Case3CabAloneMatchesTableIV) { check_case("examples/thesis/case3.yaml", 6); }
+TEST(ThesisCases3D, Case4EtaMatchesTableV) { check_case("examples/thesis/case4_eta.yaml", 1); }
+TEST(ThesisCases3D, Case4AlphaMatchesTableV) { check_case("examples/thesis/case4_alpha.yaml", 1); }
+TEST(ThesisCases3D, Case4Psi3DMatchesTableV) { check_case("examples/thesis/case4_psi_3d.yaml", 1); }
+TEST(ThesisCases3D, Case5PlowMatchesTableV3DColumn) { check_case("examples/thesis/case5_3d.yaml", 6); }
+TEST(ThesisCases3D, Case6ChainMatchesTableV3DColumn) { check_case("examples/thesis/case6_3d.yaml", 5); }
+
+TEST(ShippedExamples3D, PlowStudiesHave15AndChainStudies13Coordinates) {
+  for (const char* f : {"examples/r100_plow_straight.yaml", "examples/r100_plow_offset.yaml"})
+    EXPECT_EQ(framedyn::rigid::Machine3D(coupling::read_rigid_study_3d(source(f)).machine).size(), 15) << f;
+  for (const char* f : {"examples/r100_chain_center.yaml", "examples/r100_chain_offset.yaml"})
+    EXPECT_EQ(framedyn::rigid::Machine3D(coupling::read_rigid_study_3d(source(f)).machine).size(), 13) << f;
+  const auto offset = coupling::read_rigid_study_3d(source("examples/r100_plow_offset.yaml")).machine;
+  EXPECT_NEAR(offset.front_tires.steering_angle, 22 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(offset.rear_tires.steering_angle, 22 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(offset.plow.blade_angle, 22 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(offset.plow.boom_angle, -1 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(offset.travel_angle, 22 * M_PI / 180, 1e-15);
+  const auto chain = coupling::read_rigid_study_3d(source("examples/r100_chain_offset.yaml")).machine;
+  EXPECT_NEAR(chain.chain.chain_pin.y(), 35 * 0.0254, 1e-15);
+}
+
+// Each edit of the straight-plow example must fail with the file, the line and the key path.
+std::string edited(const std::string& from, const std::string& to) {
+  std::string t = read_text(source("examples/r100_plow_straight.yaml"));
+  const std::size_t at = t.find(from);
+  if (at == std::string::npos) throw std::logic_error("no '" + from + "'");
+  return t.substr(0, at) + to + t.substr(at + from.size());
+}
+
+void expect_error(const std::string& text, const std::string& where, const std::string& expected) {
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const std::string file = dir.write("study.yaml", text).string();
+  try {
+    (void)coupling::read_rigid_study_3d(file);
+    ADD_FAILURE() << "no error for " << where;
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find(file), std::string::npos) << m;
+    EXPECT_NE(m.find(where), std::string::npos) << m;
+    EXPECT_NE(m.find(expected), std::string::npos) << m;
+  }
+}
+
+TEST(StudyReader3D, EveryErrorNamesTheFileTheLineAndTheKeyPath) {
+  expect_error(edited("  blade_angle_deg: 0", "  blade_angle_deg: 0\n  blade_angel: 3"), "plow", "blade_angel");
+  expect_error(edited("steering_deg: 0\n    left", "steering_deg: [1, 2]\n    left"), "tires.front.steering_deg", "number");
+  expect_error(edited("vertical: {stiffness: 2500, damping: 7.5}, longitudinal", "vertical: {stiffness: -2500, damping: 7.5}, longitudinal"),
+               "tires.front.left.vertical.stiffness", "-2500");
+  expect_error(edited("pin: [72, 0, 0]", "pin: [72, 0]"), "frame.rear_axle.pin", "[X, Y, Z]");
+  expect_error(edited("  swing_spring: {stiffness: 2.0e6, damping: 2000}", "  swing_spring: {stiffness: -1}"), "plow.swing_spring.stiffness", "-1");
+  expect_error(edited("leveling_cylinder: [68, 15, 0]", "leveling_cylinder: [68, 0, 0]"), "frame.rear_axle.leveling_cylinder", "beside the pin");
+}
+
+TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {
+  const framedyn::testing::TempDir dir("framedyn_test_run_3d");
+  const std::string study = dir.write("offset.yaml", [] {
+    std::string t = read_text(source("examples/r100_plow_offset.yaml"));
+    const std::string from = "duration: 0.5";
+    return t.replace(t.find(from), from.size(), "duration: 0.05");
+  }()).string();
+  const std::string out = (dir / "results").string();
+  ASSERT_EQ(std::system((std::string(FRAMEDYN_BINARY) + " run " + study + " -o " + out + " > " + (dir / "log").string()).c_str()), 0);
+  const std::string csv = read_text(out + "/frame_loads.csv");
+  std::istringstream lines(csv);
+  std::string l;
+  std::getline(lines, l);
+  EXPECT_EQ(l, "# framedyn load history, version 1");
+  std::getline(lines, l);
+  EXPECT_EQ(l, "# units: in-lbf-s");
+  std::getline(lines, l);
+  EXPECT_EQ(l, "# point P24_REEL -25 0 0");
+  for (int i = 0; i < 7; ++i) std::getline(lines, l);
+  EXPECT_EQ(l, "# point P31_CAB_MOUNT_RR 52 15 0");
+  std::getline(lines, l);
+  EXPECT_EQ(l.rfind("time [s],P24_REEL.FX [lbf],P24_REEL.FY [lbf],P24_REEL.FZ [lbf],P24_REEL.MX [lbf*in],P24_REEL.MY [lbf*in],P24_REEL.MZ [lbf*in],"
+                    "P25_FRONT_AXLE_PIN.FX [lbf],",
+                    0),
+            0u);
+  // The reader of the format (coupling/load_history.h) takes it back.
+  const coupling::LoadHistory h = coupling::read_load_history(out + "/frame_loads.csv");
+  EXPECT_EQ(h.points.size(), 8u);
+  EXPECT_EQ(h.time_count(), 101);
+  const auto j = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(j["rigid"]["model"], "rigid_3d");
+  EXPECT_EQ(j["rigid"]["dofs"], 15);
+  EXPECT_EQ(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["unit"], "lbf");
+  EXPECT_GT(std::abs(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["peak"].get<double>()), 0.0);
+  EXPECT_EQ(j["rigid"]["frame_loads"]["P25_FRONT_AXLE_PIN"]["MX"]["unit"], "lbf*in");
+}
+
+}  // namespace
