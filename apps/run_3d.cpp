@@ -11,6 +11,9 @@
 
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
+#include "apps/response_figures.h"
+#include "core/plot.h"
+#include "coupling/frame_study.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
 
@@ -18,10 +21,32 @@ namespace framedyn::apps {
 
 namespace {
 using core::Quantity;
+
+// Thesis Figure 25: the envelope of the bending moment along the left and
+// right rails over the run (largest resultant |M| at each station).
+void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  core::LinePlot plot;
+  plot.title = "Bending moment along the rails (envelope over the run; thesis Figure 25)";
+  plot.x_label = "X along the frame";
+  plot.x_unit = u.label(Quantity::length);
+  plot.y_label = "peak bending moment";
+  plot.y_unit = u.label(Quantity::moment);
+  for (const coupling::RailRecovery& rail : f.rails) {
+    core::PlotSeries series;
+    series.name = rail.spec.name;
+    for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
+      series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
+      series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
+    }
+    plot.series.push_back(series);
+  }
+  core::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
+}
 bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha"; }
 }  // namespace
 
 int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
+  if (figures) require_gnuplot();
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(study_file);
   const core::UnitSystem& u = study.units;
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
@@ -115,6 +140,15 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     }
   }
   j["rigid"] = rigid;
+
+  // The pipeline: this run's frame loads into the beam model of the frame.
+  std::optional<coupling::FrameStudyResults> frame;
+  if (study.frame_response) {
+    frame = coupling::run_frame_study(*study.frame_response, &r.frame_loads->points);
+    coupling::write_frame_outputs(*frame, *study.frame_response, folder);
+    j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(*frame, *study.frame_response));
+    if (figures) write_rail_moment_figure(*frame, u, folder);
+  }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
 
@@ -129,7 +163,18 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                100 * c.max_relative_error, c.labels_match ? "as targeted" : "NOT all as targeted");
     for (std::size_t i = 0; i < c.fitted.size(); ++i) fmt::print("  {:32s} x {:.4f}\n", study.calibration->parameters[i], c.fitted[i] / c.initial[i]);
   }
-  if (figures) fmt::print("\nfigures: not yet drawn for 3-D studies (the CSV files hold every series)\n");
+  if (frame) {
+    const coupling::FrameStudyResults& f = *frame;
+    fmt::print("\nframe ({}): {} nodes, {} beam elements, {} elastic modes used, lowest {:.2f} Hz; {} output times in {:.3f} s\n",
+               study.frame_response->mesh.filename().string(), f.model.nodes.size(), f.model.beams.size(), f.frequencies_hz.size(),
+               f.frequencies_hz.size() > 0 ? f.frequencies_hz(0) : 0.0, f.response.times.size(), f.wall_seconds);
+    for (const coupling::RailRecovery& rail : f.rails)
+      fmt::print("{}: peak bending moment {:.5g} {} at X = {:.4g} {}, t = {:.4f} s; peak normal stress {:.5g} {} ({:.0f} % from bending)\n",
+                 rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment),
+                 rail.peak_bending_moment.point.x() * lf, u.label(Quantity::length), rail.peak_bending_moment.time,
+                 u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), 100.0 * rail.bending_share);
+  }
+  if (figures) fmt::print("\nfigures: {}\n", frame ? "fig25_rail_bending_moment.png (the rigid-body series are in the CSV files)" : "not yet drawn for 3-D rigid-body series (the CSV files hold them)");
   fmt::print("\nresults in {}/\n", out_dir);
   return 0;
 }

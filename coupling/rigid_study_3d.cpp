@@ -228,7 +228,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   YamlMap top(doc, "", file, &si);
   if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
   top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle", "cab", "tires", "plow", "chain", "soil",
-                  "analysis", "calibration"});
+                  "analysis", "calibration", "frame_response"});
   RigidStudy3D s;
   s.file = file;
   s.name = top.text_or("name", file);
@@ -442,6 +442,15 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
       if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
   } catch (const std::invalid_argument& e) {
     throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
+  }
+  if (root.has("frame_response")) {
+    const YamlMap block = root.map("frame_response");
+    if (block.has("loads"))
+      throw block.error("loads", "no load-history file (the loads are this study's own frame loads at points 24-31)", "loads: " + block.text("loads"));
+    if (!s.response) throw root.error("frame_response", "analysis.response as well (the frame loads come from the forced response)", "no response");
+    FrameStudyRequest q = read_frame_block(block, std::filesystem::path(file).parent_path());
+    q.name = s.name;
+    s.frame_response = q;
   }
   return s;
 }

@@ -12,6 +12,7 @@
 
 #include "core/units.h"
 #include "coupling/frame_loads_3d.h"
+#include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_3d.h"
@@ -33,6 +34,10 @@ struct RigidStudy3D {
   std::vector<std::string> fixed_coordinates;
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;  // parameter names of calibratable_parameters_3d()
+  // The pipeline (issue 5): the `frame_response:` block sends this run's
+  // frame loads at points 24-31 into the beam model of the frame
+  // (coupling/frame_study.h). Needs analysis.response; takes no `loads` key.
+  std::optional<FrameStudyRequest> frame_response;
 };
 
 RigidStudy3D read_rigid_study_3d(const std::string& file);

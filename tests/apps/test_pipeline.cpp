@@ -1,0 +1,112 @@
+// The end-to-end pipeline as a user runs it: `framedyn run
+// examples/offset_plowing.yaml` goes from the 3-D machine to the rail
+// stresses in one command. Cross-check: the frame loads the run writes,
+// read back from its frame_loads.csv by `framedyn frame-response` with the
+// same frame settings, give the same frame response as the loads handed over
+// in memory (the file carries 10 significant digits, so the two agree to
+// about 1e-9, not to round-off).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "tests/support/temp_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kBinary = FRAMEDYN_BINARY;
+const fs::path kSource = FRAMEDYN_SOURCE_DIR;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int run(const std::string& args, const fs::path& log) {
+  const std::string cmd = kBinary + " " + args + " > '" + log.string() + "' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+// The offset-plowing pipeline, run once for the suite.
+class OffsetPlowingPipeline : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new framedyn::testing::TempDir("framedyn_test_pipeline");
+    status_ = run("run " + (kSource / "examples" / "offset_plowing.yaml").string() + " -o " + (*dir_ / "out").string() + " -q",
+                  *dir_ / "run.log");
+    if (status_ == 0) summary_ = nlohmann::json::parse(slurp(*dir_ / "out" / "summary.json"));
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static framedyn::testing::TempDir* dir_;
+  static int status_;
+  static nlohmann::json summary_;
+};
+framedyn::testing::TempDir* OffsetPlowingPipeline::dir_ = nullptr;
+int OffsetPlowingPipeline::status_ = -1;
+nlohmann::json OffsetPlowingPipeline::summary_;
+
+TEST_F(OffsetPlowingPipeline, OneCommandGoesFromTheMachineToTheRailStresses) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  EXPECT_EQ(summary_["rigid"]["model"], "rigid_3d");
+  EXPECT_EQ(summary_["rigid"]["dofs"], 15);
+  EXPECT_TRUE(summary_["rigid"]["frame_loads"].contains("P26_REAR_AXLE_PIN"));
+  const nlohmann::json& frame = summary_["frame"];
+  ASSERT_FALSE(frame["modes"].empty());
+  EXPECT_GT(frame["modes"][0]["frequency_hz"].get<double>(), 0.0);
+  for (const char* rail : {"left_rail", "right_rail"}) {
+    EXPECT_EQ(frame["peak_bending_moment"][rail]["unit"], "lbf*in") << rail;
+    EXPECT_GT(frame["peak_bending_moment"][rail]["value"].get<double>(), 0.0) << rail;
+  }
+  EXPECT_EQ(frame["peak_normal_stress"]["unit"], "psi");
+  EXPECT_TRUE(std::isfinite(frame["peak_normal_stress"]["value"].get<double>()));
+  for (const char* file : {"frame_loads.csv", "frame_modes.csv", "frame_rails_envelope.csv", "frame_rails_series.csv", "frame_response.pvd"})
+    EXPECT_TRUE(fs::exists(*dir_ / "out" / file)) << file;
+}
+
+TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  // The frame_response block of examples/offset_plowing.yaml, as a frame study on the written loads.
+  const fs::path study = dir_->write("frame.yaml", "framedyn_study: 1\nname: read back\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n"
+                                                   "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string() +
+                                                   "\n  loads: out/frame_loads.csv\n  supports: fixed_rear_end\n  modes: all\n"
+                                                   "  method: mode_acceleration\n  damping: {modal_ratio: 0.02}\n  output_interval: 0.001\n"
+                                                   "  stations: 5\n");
+  ASSERT_EQ(run("frame-response " + study.string() + " -o " + (*dir_ / "again").string(), *dir_ / "again.log"), 0) << slurp(*dir_ / "again.log");
+  const nlohmann::json again = nlohmann::json::parse(slurp(*dir_ / "again" / "summary.json"))["frame"];
+  const nlohmann::json& frame = summary_["frame"];
+  ASSERT_EQ(again["modes"].size(), frame["modes"].size());
+  for (std::size_t i = 0; i < again["modes"].size(); ++i)
+    EXPECT_DOUBLE_EQ(again["modes"][i]["frequency_hz"].get<double>(), frame["modes"][i]["frequency_hz"].get<double>());
+  for (const char* rail : {"left_rail", "right_rail"}) {
+    const double in_memory = frame["peak_bending_moment"][rail]["value"], from_file = again["peak_bending_moment"][rail]["value"];
+    EXPECT_NEAR(from_file / in_memory, 1.0, 1e-8) << rail;
+    EXPECT_EQ(again["peak_bending_moment"][rail]["time"], frame["peak_bending_moment"][rail]["time"]) << rail;
+  }
+  EXPECT_NEAR(again["peak_normal_stress"]["value"].get<double>() / frame["peak_normal_stress"]["value"].get<double>(), 1.0, 1e-8);
+}
+
+TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
+  framedyn::testing::TempDir dir;
+  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
+  text.replace(text.find("  supports: fixed_rear_end"), 0, "  loads: other.csv\n");
+  const fs::path study = dir.write("examples/bad.yaml", text);
+  EXPECT_EQ(run("run " + study.string() + " -o " + (dir / "out").string(), dir / "log"), 1);
+  const std::string log = slurp(dir / "log");
+  EXPECT_NE(log.find("bad.yaml:"), std::string::npos) << log;
+  EXPECT_NE(log.find("frame_response.loads"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
