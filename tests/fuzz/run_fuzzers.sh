@@ -7,7 +7,7 @@
 #   tests/fuzz/run_fuzzers.sh build  SOURCE_DIR BUILD_DIR
 #   tests/fuzz/run_fuzzers.sh run    SOURCE_DIR BUILD_DIR SECONDS HARNESS
 #
-# HARNESS: fuzz_inp_reader | fuzz_study_reader. A finding is kept in
+# HARNESS: fuzz_inp_reader | fuzz_study_reader | fuzz_load_history_reader. A finding is kept in
 # BUILD_DIR/findings/; rerun it with `BUILD_DIR/tests/fuzz/HARNESS FILE`.
 set -euo pipefail
 what=$1 source_dir=$(cd "$2" && pwd) build_dir=$3
@@ -20,7 +20,7 @@ case "$what" in
     fi
     cmake -S "$source_dir" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DFRAMEDYN_FUZZ=ON -DFRAMEDYN_BUILD_TESTS=OFF -DFRAMEDYN_NATIVE=OFF >/dev/null
-    cmake --build "$build_dir" -j2 --target fuzz_inp_reader fuzz_study_reader
+    cmake --build "$build_dir" -j2 --target fuzz_inp_reader fuzz_study_reader fuzz_load_history_reader
     ;;
   run)
     seconds=$4 harness=$5
@@ -29,6 +29,7 @@ case "$what" in
     case "$harness" in
       fuzz_inp_reader)   cp "$source_dir"/meshes/*.inp "$source_dir"/tests/fuzz/seeds/inp/*.inp "$corpus"/ ;;
       fuzz_study_reader) find "$source_dir/examples" -name '*.yaml' -exec cp {} "$corpus"/ \; ;;
+      fuzz_load_history_reader) cp "$source_dir"/tests/fuzz/seeds/loads/*.csv "$corpus"/ ;;
       *) echo "run_fuzzers: unknown harness '$harness'" >&2; exit 2 ;;
     esac
     # -timeout: an input that takes 10 s is a hang, a finding too.
