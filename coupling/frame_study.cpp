@@ -302,8 +302,9 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
   std::string j = "{\n";
   j += fmt::format("  \"model\": \"frame_transient\",\n  \"mesh\": {},\n  \"supports\": \"{}\",\n  \"method\": \"{}\",\n", json_string(q.mesh.string()),
                    supports_name(q.supports), method_name(q.method));
-  j += fmt::format("  \"nodes\": {},\n  \"elements\": {},\n  \"output_times\": {},\n  \"wall_time\": {{\"value\": {}, \"unit\": \"s\"}},\n",
-                   r.model.nodes.size(), r.model.beams.size(), r.response.times.size(), json_number(r.wall_seconds));
+  // No wall time here: the same study must give byte-identical files (the console prints it).
+  j += fmt::format("  \"nodes\": {},\n  \"elements\": {},\n  \"output_times\": {},\n", r.model.nodes.size(), r.model.beams.size(),
+                   r.response.times.size());
   j += "  \"modes\": [";
   for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
     const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)

@@ -97,6 +97,21 @@ TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) 
   EXPECT_NEAR(again["peak_normal_stress"]["value"].get<double>() / frame["peak_normal_stress"]["value"].get<double>(), 1.0, 1e-8);
 }
 
+TEST_F(OffsetPlowingPipeline, SameStudyTwiceGivesByteIdenticalFiles) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  ASSERT_EQ(run("run " + (kSource / "examples" / "offset_plowing.yaml").string() + " -o " + (*dir_ / "twice").string() + " -q",
+                *dir_ / "twice.log"),
+            0);
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(*dir_ / "out")) {
+    const fs::path other = *dir_ / "twice" / entry.path().filename();
+    ASSERT_TRUE(fs::exists(other)) << other;
+    EXPECT_TRUE(slurp(entry.path()) == slurp(other)) << entry.path().filename();
+    ++files;
+  }
+  EXPECT_EQ(files, static_cast<int>(std::distance(fs::directory_iterator(*dir_ / "twice"), fs::directory_iterator())));
+}
+
 TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
   framedyn::testing::TempDir dir;
   std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
