@@ -4,6 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <sys/resource.h>
+
+#include <chrono>
 #include <cstdio>
 #include <functional>
 
@@ -28,7 +31,14 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    return run();
+    const auto start = std::chrono::steady_clock::now();
+    const int status = run();
+    // Every run ends with what it cost: wall time and peak resident memory.
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    fmt::print("run time {:.2f} s, peak memory {:.0f} MiB\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               usage.ru_maxrss / 1024.0);
+    return status;
   } catch (const framedyn::core::InputError& e) {
     fmt::print(stderr, "framedyn: error: {}\n", e.what());
     return 1;
