@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "coupling/study_blocks.h"
 #include "coupling/yaml_input.h"
 
 namespace framedyn::coupling {
@@ -15,12 +16,6 @@ namespace {
 using core::Quantity;
 constexpr double kGravity = 9.80665;
 constexpr double kDegree = M_PI / 180.0;
-
-Eigen::Vector3d point3(const YamlMap& m, const std::string& key) {
-  const std::vector<double> v = m.numbers(key, Quantity::length);
-  if (!m.has(key) || v.size() != 3) throw m.error(key, "a point [X, Y, Z]", m.has(key) ? fmt::format("{} numbers", v.size()) : "nothing");
-  return {v[0], v[1], v[2]};
-}
 
 Eigen::Vector3d triple(const YamlMap& m, const std::string& key, Quantity q, bool non_negative) {
   const std::vector<double> v = m.numbers(key, q);
@@ -48,45 +43,20 @@ rigid::RigidPart3D part(const YamlMap& m, const std::string& name) {
   rigid::RigidPart3D r;
   r.name = name;
   r.mass = m.mass(kGravity);
-  r.cg = point3(m, "position");
+  r.cg = read_point3(m, "position");
   r.inertia = inertia3(m, r.mass, name);
   return r;
-}
-
-rigid::SpringDamperValues spring_damper(const YamlMap& m) {
-  m.allow_only({"stiffness", "damping"});
-  return {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)};
-}
-
-rigid::GroundInput ground_input(const YamlMap& m) {
-  m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration"});
-  rigid::GroundInput g;
-  const std::string kind = m.text("kind");
-  if (kind == "sine") {
-    g.kind = rigid::GroundInput::Kind::sine;
-    g.amplitude = m.number("amplitude", Quantity::length);
-    g.frequency = m.positive("frequency_hz", Quantity::frequency);
-    g.phase = m.number_or("phase_deg", Quantity::dimensionless, 0.0) * kDegree;
-  } else if (kind == "bump") {
-    g.kind = rigid::GroundInput::Kind::bump;
-    g.amplitude = m.number("amplitude", Quantity::length);
-    g.start = m.non_negative("start", Quantity::time);
-    g.duration = m.positive("duration", Quantity::time);
-  } else {
-    throw m.error("kind", "sine or bump", "'" + kind + "'");
-  }
-  return g;
 }
 
 rigid::Tire3D tire(const YamlMap& m) {
   m.allow_only({"contact", "vertical", "longitudinal", "lateral", "vertical_input", "longitudinal_input"});
   rigid::Tire3D t;
-  t.contact = point3(m, "contact");
-  t.vertical = spring_damper(m.map("vertical"));
-  t.longitudinal = spring_damper(m.map("longitudinal"));
-  t.lateral = spring_damper(m.map("lateral"));
-  if (auto in = m.optional_map("vertical_input")) t.vertical_input = ground_input(*in);
-  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = ground_input(*in);
+  t.contact = read_point3(m, "contact");
+  t.vertical = read_spring_damper(m.map("vertical"));
+  t.longitudinal = read_spring_damper(m.map("longitudinal"));
+  t.lateral = read_spring_damper(m.map("lateral"));
+  if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in, /*with_table=*/false);
+  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in, /*with_table=*/false);
   return t;
 }
 
@@ -224,29 +194,17 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
 
 RigidStudy3D read_rigid_study_3d(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
-  core::UnitSystem si = core::UnitSystem::si();
-  YamlMap top(doc, "", file, &si);
-  if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
-  top.allow_only({"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle", "cab", "tires", "plow", "chain", "soil",
-                  "analysis", "calibration", "frame_response"});
+  const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
+                                                          "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "frame_response"});
   RigidStudy3D s;
   s.file = file;
-  s.name = top.text_or("name", file);
-  const std::string units = top.text("units");
-  try {
-    s.units = core::UnitSystem::from_name(units);
-  } catch (const std::invalid_argument&) {
-    throw top.error("units", "in-lbf-s, m-N-s (or SI) or mm-N-s", "'" + units + "'");
-  }
+  s.name = header.name;
+  s.units = header.units;
   YamlMap root(doc, "", file, &s.units);
   const std::string model = root.text("model");
   if (model != "rigid_3d") throw root.error("model", "rigid_3d", "'" + model + "'");
   rigid::Machine3DParameters& p = s.machine;
-  const std::string attachment = root.text("attachment");
-  if (attachment == "plow") p.attachment = rigid::Attachment::plow;
-  else if (attachment == "chain") p.attachment = rigid::Attachment::chain;
-  else if (attachment == "none") p.attachment = rigid::Attachment::none;
-  else throw root.error("attachment", "plow, chain or none", "'" + attachment + "'");
+  p.attachment = read_attachment(root);
 
   const YamlMap tires = root.map("tires");
   tires.allow_only({"front", "rear"});
@@ -262,7 +220,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
 
   const YamlMap frame = root.map("frame");
   frame.allow_only({"reference", "parts", "reel_and_carrier", "rear_axle"});
-  if (frame.has("reference")) p.frame.reference = point3(frame, "reference");
+  if (frame.has("reference")) p.frame.reference = read_point3(frame, "reference");
   for (const YamlMap& a : frame.list_of_maps("parts")) {
     a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products"});
     p.frame.parts.push_back(part(a, a.text("name")));
@@ -271,19 +229,19 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   const YamlMap reel = frame.map("reel_and_carrier");
   reel.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "attachment"});
   p.frame.reel_and_carrier = part(reel, "reel_and_carrier");
-  p.frame.reel_attachment = point3(reel, "attachment");
+  p.frame.reel_attachment = read_point3(reel, "attachment");
   const YamlMap rear = frame.map("rear_axle");
   rear.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "leveling_cylinder"});
   p.frame.rear_axle = part(rear, "rear_axle");
-  p.frame.rear_pin = point3(rear, "pin");
-  p.frame.leveling_cylinder = point3(rear, "leveling_cylinder");
+  p.frame.rear_pin = read_point3(rear, "pin");
+  p.frame.leveling_cylinder = read_point3(rear, "leveling_cylinder");
   if (p.frame.leveling_cylinder.y() == p.frame.rear_pin.y())
     throw rear.error("leveling_cylinder", "a point beside the pin in Y (the cylinder holds the axle's roll)", "the pin's Y");
 
   const YamlMap front = root.map("front_axle");
   front.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin"});
   p.front_axle.axle = part(front, "front_axle");
-  p.front_axle.pin = point3(front, "pin");
+  p.front_axle.pin = read_point3(front, "pin");
   if (!(p.front_axle.axle.inertia(0, 0) > 0 || p.front_axle.axle.mass > 0))
     throw front.error("", "a mass and roll inertia (eta needs inertia)", "none");
 
@@ -294,36 +252,27 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     m.allow_only({"name", "position", "x", "y", "z"});
     rigid::CabMount3D mount;
     mount.name = m.text("name");
-    mount.position = point3(m, "position");
-    mount.x = spring_damper(m.map("x"));
-    mount.y = spring_damper(m.map("y"));
-    mount.z = spring_damper(m.map("z"));
+    mount.position = read_point3(m, "position");
+    mount.x = read_spring_damper(m.map("x"));
+    mount.y = read_spring_damper(m.map("y"));
+    mount.z = read_spring_damper(m.map("z"));
     p.cab.mounts.push_back(mount);
   }
   if (p.cab.mounts.size() != 4) throw cab.error("mounts", "four mounts (load points 28-31: FL, FR, RL, RR)", fmt::format("{}", p.cab.mounts.size()));
 
-  if (p.attachment != rigid::Attachment::none) {
-    const YamlMap soil = root.map("soil");
-    soil.allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference", "lateral"});
-    p.soil.stiffness = soil.non_negative("stiffness", Quantity::translational_stiffness);
-    p.soil.damping = soil.non_negative("damping", Quantity::translational_damping);
-    p.soil.stiffness_reduction = soil.fraction("stiffness_reduction", 0.0);
-    p.soil.damping_reduction = soil.fraction("damping_reduction", 1.0);
-    const std::string reference = soil.text_or("spring_reference", "equilibrium");
-    if (reference != "equilibrium" && reference != "contact")
-      throw soil.error("spring_reference", "equilibrium (Eq. 2.37 as printed) or contact (the soil pushed from the point of contact)", "'" + reference + "'");
-    p.soil.spring_from_contact = reference == "contact";
-    p.soil_lateral = spring_damper(soil.map("lateral"));
-  } else if (root.has("soil")) {
-    throw root.error("soil", "no soil data without an attachment", "a soil map");
+  if (auto soil = attachment_block(root, "soil", p.attachment != rigid::Attachment::none, "no soil data without an attachment", "a soil map")) {
+    soil->allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference", "lateral"});
+    // spring_reference: soil_line (the anchor moving with the soil) is 2-D only.
+    read_soil_law(*soil, p.soil, /*with_soil_line=*/false);
+    p.soil_lateral = read_spring_damper(soil->map("lateral"));
   }
 
-  if (p.attachment == rigid::Attachment::plow) {
-    const YamlMap plow = root.map("plow");
+  if (auto plow_block = attachment_block(root, "plow", p.attachment == rigid::Attachment::plow, "no plow data unless attachment is plow", "a plow map")) {
+    const YamlMap& plow = *plow_block;
     plow.allow_only({"swing_pin", "boom_angle_deg", "blade_angle_deg", "boom_offset", "mass", "weight", "inertia", "radii_of_gyration", "products",
                      "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder", "swing_spring"});
     rigid::Plow3D& pl = p.plow;
-    pl.swing_pin = point3(plow, "swing_pin");
+    pl.swing_pin = read_point3(plow, "swing_pin");
     pl.boom_angle = plow.number_or("boom_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
     pl.blade_angle = plow.number_or("blade_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
     if (std::abs(pl.boom_angle) >= M_PI / 2) throw plow.error("boom_angle_deg", "an angle between -90 and 90 degrees", "out of range");
@@ -332,26 +281,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     pl.mass = plow.mass(kGravity);
     pl.inertia_boom_axes = inertia3(plow, pl.mass, "plow");
     pl.cg = plow.point("cg");
-    const YamlMap link = plow.map("linkage");
-    link.allow_only({"upper_pivot", "lower_pivot", "upper_joint", "lower_joint"});
-    pl.linkage = {link.point("upper_pivot"), link.point("lower_pivot"), link.point("upper_joint"), link.point("lower_joint")};
-    try {
-      (void)rigid::four_bar_velocity_ratios(pl.linkage);
-    } catch (const std::invalid_argument& e) {
-      throw link.error("", "a linkage with a unique small motion", e.what());
-    }
-    pl.blade_point = plow.point("blade_point");
-    const YamlMap shaker = plow.map("shaker");
-    shaker.allow_only({"point", "force", "frequency_hz", "phase_deg"});
-    pl.shaker_point = shaker.point("point");
-    pl.shaker_amplitude = shaker.non_negative("force", Quantity::force);
-    pl.shaker_frequency = shaker.non_negative("frequency_hz", Quantity::frequency);
-    pl.shaker_phase = shaker.number_or("phase_deg", Quantity::dimensionless, 0.0) * kDegree;
-    const YamlMap bounce = plow.map("bounce_tire");
-    bounce.allow_only({"point", "stiffness", "damping", "input"});
-    pl.bounce_tire_point = bounce.point("point");
-    pl.bounce_tire = {bounce.non_negative("stiffness", Quantity::translational_stiffness), bounce.non_negative_or("damping", Quantity::translational_damping, 0.0)};
-    if (auto in = bounce.optional_map("input")) pl.bounce_input = ground_input(*in);
+    read_plow_linkage_to_bounce_tire(plow, pl, /*with_table=*/false);
     const YamlMap cyl = plow.map("lift_cylinder");
     cyl.allow_only({"base", "arm_point", "stiffness", "damping"});
     pl.cylinder_base = cyl.point("base");
@@ -361,88 +291,19 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     swing.allow_only({"stiffness", "damping"});
     // K30 in moment per radian; C30 in moment * time per radian (time is seconds in every unit system).
     pl.swing_spring = {swing.non_negative("stiffness", Quantity::rotational_stiffness), swing.non_negative_or("damping", Quantity::rotational_stiffness, 0.0)};
-  } else if (root.has("plow")) {
-    throw root.error("plow", "no plow data unless attachment is plow", "a plow map");
   }
-
-  if (p.attachment == rigid::Attachment::chain) {
-    const YamlMap chain = root.map("chain");
-    chain.allow_only({"boom_point", "chain_pin", "chain_angle_deg", "moment_arm", "tooth_static_force", "tooth_damping", "chain_speed",
-                      "static_reduction", "damping_reduction", "tooth_spacing", "length_in_ground", "ramp_time"});
-    rigid::Chain3D& c = p.chain;
-    c.boom_point = point3(chain, "boom_point");
-    c.chain_pin = point3(chain, "chain_pin");
-    c.chain_angle = chain.number("chain_angle_deg", Quantity::dimensionless) * kDegree;
-    c.moment_arm = chain.number("moment_arm", Quantity::length);
-    c.tooth_static_force = chain.non_negative("tooth_static_force", Quantity::force);
-    c.tooth_damping = chain.non_negative("tooth_damping", Quantity::translational_damping);
-    c.chain_speed = chain.positive("chain_speed", Quantity::velocity);
-    c.static_reduction = chain.fraction("static_reduction", 1.0);
-    c.damping_reduction = chain.fraction("damping_reduction", 1.0);
-    c.tooth_spacing = chain.positive("tooth_spacing", Quantity::length);
-    c.length_in_ground = chain.positive("length_in_ground", Quantity::length);
-    if (c.length_in_ground < c.tooth_spacing) throw chain.error("length_in_ground", "at least one tooth spacing of chain in the ground", "less");
-    c.ramp_time = chain.non_negative_or("ramp_time", Quantity::time, 0.0);
-  } else if (root.has("chain")) {
-    throw root.error("chain", "no chain data unless attachment is chain", "a chain map");
-  }
+  if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
+    read_chain(*chain, p.chain);
 
   if (auto analysis = root.optional_map("analysis")) {
     analysis->allow_only({"modes", "fixed_coordinates", "response"});
     s.modes = analysis->boolean_or("modes", true);
     s.fixed_coordinates = analysis->strings("fixed_coordinates");
-    if (auto r = analysis->optional_map("response")) {
-      r->allow_only({"duration", "output_interval", "method", "rk4_step", "relative_tolerance"});
-      ResponseRequest req;
-      req.duration = r->positive("duration", Quantity::time);
-      req.output_interval = r->positive("output_interval", Quantity::time);
-      const std::string method = r->text_or("method", "event_located");
-      if (method == "event_located") req.method = ResponseRequest::Method::event_located;
-      else if (method == "rk4") req.method = ResponseRequest::Method::rk4;
-      else throw r->error("method", "event_located or rk4", "'" + method + "'");
-      if (req.method == ResponseRequest::Method::rk4) {
-        req.rk4_step = r->positive("rk4_step", Quantity::time);
-        const double ratio = req.output_interval / req.rk4_step;
-        if (std::abs(ratio - std::round(ratio)) > 1e-9 * ratio || std::round(ratio) < 1)
-          throw r->error("rk4_step", "a step that divides output_interval a whole number of times",
-                         fmt::format("{} s against an output interval of {} s", req.rk4_step, req.output_interval));
-      }
-      req.relative_tolerance = r->number_or("relative_tolerance", Quantity::dimensionless, 1e-8);
-      if (!(req.relative_tolerance > 0 && req.relative_tolerance < 1e-2)) throw r->error("relative_tolerance", "a tolerance between 0 and 0.01", "out of range");
-      s.response = req;
-    }
+    if (auto r = analysis->optional_map("response")) s.response = read_response_request(*r);
   }
-  if (auto cal = root.optional_map("calibration")) {
-    cal->allow_only({"parameters", "targets", "fit_labels"});
-    CalibrationRequest req;
-    req.parameters = cal->strings("parameters");
-    if (req.parameters.empty()) throw cal->error("parameters", "a list of parameter names to fit", "none");
-    for (const std::string& name : req.parameters) {
-      double value = 0;
-      try {
-        value = get_parameter_3d(p, name);
-      } catch (const std::invalid_argument&) {
-        std::string known;
-        for (const std::string& k : calibratable_parameters_3d()) known += (known.empty() ? "" : ", ") + k;
-        throw cal->error("parameters", "one of " + known, "'" + name + "'");
-      }
-      if (!(value > 0)) throw cal->error("parameters", "parameters with a positive starting value", name + " <= 0");
-    }
-    for (const YamlMap& t : cal->list_of_maps("targets")) {
-      t.allow_only({"frequency_hz", "dominant"});
-      req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
-    }
-    if (req.targets.empty()) throw cal->error("targets", "a list of {frequency_hz, dominant}", "none");
-    req.fit_labels = cal->boolean_or("fit_labels", false);
-    s.calibration = req;
-  }
-  try {
-    rigid::Machine3D check(p);
-    for (const std::string& f : s.fixed_coordinates)
-      if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
-  } catch (const std::invalid_argument& e) {
-    throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
-  }
+  if (auto cal = root.optional_map("calibration"))
+    s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, calibratable_parameters_3d());
+  check_machine(p, s.fixed_coordinates, root, file);
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
     if (block.has("loads"))
@@ -458,21 +319,10 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   RigidStudy3D study = study_in;
   RigidResults3D r;
-  if (study.calibration) {
-    const CalibrationRequest& c = *study.calibration;
-    std::vector<double> initial;
-    for (const std::string& name : c.parameters) initial.push_back(get_parameter_3d(study.machine, name));
-    const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
-      rigid::Machine3DParameters p = study.machine;
-      for (std::size_t i = 0; i < values.size(); ++i) set_parameter_3d(p, c.parameters[i], values[i]);
-      rigid::Machine3D m(p);
+  if (study.calibration)
+    r.calibration = calibrate_parameters<rigid::Machine3D>(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::Machine3D& m) {
       return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), study.fixed_coordinates);
-    };
-    rigid::CalibrationOptions options;
-    if (c.fit_labels) options.coordinates = rigid::Machine3D(study.machine).model().coordinate_names();
-    r.calibration = rigid::calibrate(modes_of, initial, c.targets, options);
-    for (std::size_t i = 0; i < c.parameters.size(); ++i) set_parameter_3d(study.machine, c.parameters[i], r.calibration->fitted[i]);
-  }
+    });
   r.machine = study.machine;
   rigid::Machine3D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
@@ -480,17 +330,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   if (!study.response) return r;
 
   const ResponseRequest& req = *study.response;
-  const int n = machine.size();
-  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n), v0 = Eigen::VectorXd::Zero(n);
-  machine.reset(0.0, q0);
-  rigid::IntegrationOptions o;
-  o.end_time = req.duration;
-  o.output_interval = req.output_interval;
-  o.relative_tolerance = req.relative_tolerance;
-  o.absolute_tolerance = 1e-12;
-  o.velocity_scale = 100.0;
-  r.trajectory = req.method == ResponseRequest::Method::event_located ? rigid::integrate_event_located(machine, q0, v0, o)
-                                                                      : rigid::integrate_rk4(machine, q0, v0, req.rk4_step, o);
+  r.trajectory = response_from_rest(machine, req);
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
   if (machine.blade_point() >= 0) {
@@ -514,31 +354,12 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
     r.peak_cutting_force = cut;
     r.peak_backing_force = back;
     if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
-      const double period = 1.0 / study.machine.plow.shaker_frequency;
-      const int cycles = static_cast<int>(std::floor(req.duration / period + 1e-9));
-      double sum = 0.0;
-      int counted = 0;
-      for (int c = 0; c < cycles; ++c) {
-        double lo = 1e300, hi = -1e300;
-        for (std::size_t i = 0; i < ns; ++i)
-          if (tr.time[i] >= c * period - 1e-12 && tr.time[i] <= (c + 1) * period + 1e-12) {
-            lo = std::min(lo, bz.values[i]);
-            hi = std::max(hi, bz.values[i]);
-          }
-        if (hi >= lo) {
-          sum += hi - lo;
-          ++counted;
-        }
-      }
-      if (counted > 0) r.plow_vertical_peak_to_peak = sum / counted;
+      // Average peak-to-peak vertical blade motion over whole shaker cycles.
+      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, 1.0 / study.machine.plow.shaker_frequency, req.duration);
     }
     for (Series* s : {&bx, &by, &bz, &fx, &fy, &fz}) r.series.push_back(std::move(*s));
   }
-  if (study.machine.attachment == rigid::Attachment::chain) {
-    Series c{"chain_force", Quantity::force, {}};
-    for (std::size_t i = 0; i < ns; ++i) c.values.push_back(machine.chain_force(tr.time[i]));
-    r.series.push_back(std::move(c));
-  }
+  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(machine, tr));
   r.frame_loads = frame_loads_3d(machine, tr);
   return r;
 }

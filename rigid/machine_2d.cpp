@@ -99,7 +99,8 @@ Machine2D::Machine2D(const Machine2DParameters& p)
 
   const Eigen::Vector3d ground_normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));
   const Eigen::Vector3d ground_tangent(std::cos(p.ground_slope), 0.0, -std::sin(p.ground_slope));  // rearward along the ground
-  soil_velocity_ = p.forward_speed * std::cos(p.ground_slope);
+  soil_.configure(p.forward_speed * std::cos(p.ground_slope), p.soil.spring_from_contact);
+  if (p.attachment == Attachment::chain) teeth_ = ToothCount(p.chain);
 
   // Cab mounts (elements 12 and 14): vertical between frame and cab.
   for (const auto& [name, mount] : {std::pair<std::string, const CabMount*>{"cab_mount_front", &p.cab.front}, {"cab_mount_rear", &p.cab.rear}}) {
@@ -206,33 +207,16 @@ std::vector<double> Machine2D::static_element_forces() const {
   return f;
 }
 
-double Machine2D::soil_line_at(double t) const {
-  return cutting_ ? soil_line_ : soil_line_ + soil_velocity_ * (t - soil_line_time_);
-}
+double Machine2D::soil_line_at(double t) const { return soil_.line_at(t); }
 
 void Machine2D::reset(double t, const Eigen::VectorXd& q) {
-  cutting_ = true;
-  soil_line_time_ = t;
-  soil_line_ = blade_point_ >= 0 ? model_.points()[static_cast<std::size_t>(blade_point_)].displacement.row(X).dot(q) : 0.0;
-  anchor_.setZero();
-  anchor_time_ = t;
-  if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
+  if (blade_point_ >= 0) {
     const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
-    anchor_ = {j.row(X).dot(q), j.row(Z).dot(q)};
+    soil_.reset(t, j.row(X).dot(q), {j.row(X).dot(q), j.row(Z).dot(q)});
+  } else {
+    soil_.reset(t, 0.0, Eigen::Vector2d::Zero());
   }
-  soil_history_.assign(1, {t, true, soil_line_, anchor_, anchor_time_});
-  full_teeth_ = full_teeth_at(t);
-}
-
-bool Machine2D::full_teeth_at(double t) const {
-  const Chain2D& c = p_.chain;
-  if (p_.attachment != Attachment::chain || !(c.chain_speed > 0) || !(c.tooth_spacing > 0)) return true;
-  // Appendix D: within each tooth period TPCH, MTIG teeth dig for the first ATCH.
-  const double period = c.tooth_spacing / c.chain_speed;
-  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
-  const double tau = t - std::floor(t / period + 1e-9) * period;
-  return tau < atch - 1e-12 * period;
+  teeth_.reset(t);
 }
 
 Eigen::Vector2d Machine2D::anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const {
@@ -241,30 +225,13 @@ Eigen::Vector2d Machine2D::anchor_at(const Eigen::Vector2d& anchor, double ancho
   return anchor + soil_flow * (t - anchor_time);
 }
 
-Machine2D::SoilState Machine2D::soil_state_at(double t) const {
-  SoilState s = soil_history_.empty() ? SoilState{} : soil_history_.front();
-  for (const SoilState& h : soil_history_)
-    if (h.time <= t) s = h;
-  return s;
-}
-
-double Machine2D::tooth_force(bool cutting) const {
-  const Chain2D& c = p_.chain;
-  const double reh = cutting ? 1.0 : c.static_reduction, red = cutting ? 1.0 : c.damping_reduction;
-  return c.tooth_static_force * reh + c.chain_speed * c.tooth_damping * red;  // FTH, Appendix D
-}
+Machine2D::SoilState Machine2D::soil_state_at(double t) const { return soil_.state_at(t); }
 
 double Machine2D::chain_force(double t) const {
   if (p_.attachment != Attachment::chain) return 0.0;
-  return chain_force(t, soil_state_at(t).cutting, full_teeth_at(t));
-}
-
-double Machine2D::chain_force(double t, bool cutting, bool full_teeth) const {
-  const Chain2D& c = p_.chain;
-  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double teeth = mtig - 1.0 + (full_teeth ? 1.0 : 0.0);  // NTD = MTIG - 1 + XNN (Eq. D.3)
-  const double ramp = c.ramp_time > 0.0 ? std::min(1.0, std::max(0.0, t / c.ramp_time)) : 1.0;
-  return ramp * tooth_force(cutting) * teeth;  // RCH (Eq. 2.41)
+  // The tooth count logged by the integration (not the schedule at t): a sample a hair before a
+  // scheduled change must see the count in force then, as the equations of motion did.
+  return teeth_.law().chain_force(t, soil_state_at(t).cutting, teeth_.full_at(t));
 }
 
 Jacobian Machine2D::frame_point_jacobian(const Eigen::Vector2d& point) const {
@@ -283,9 +250,8 @@ double Machine2D::element_tension(int element, double t, const Eigen::VectorXd& 
   }
   if (std::find(soil_elements_.begin(), soil_elements_.end(), element) != soil_elements_.end()) {
     const SoilState state = soil_state_at(t);
-    const bool cutting = state.cutting;
-    k *= cutting ? 1.0 : p_.soil.stiffness_reduction;
-    c *= cutting ? 1.0 : p_.soil.damping_reduction;
+    k *= p_.soil.stiffness_factor(state.cutting);
+    c *= p_.soil.damping_factor(state.cutting);
     // Unstretched at the anchor (zero unless spring_from_contact), as in plow_force.
     const Eigen::Vector2d anchor = anchor_at(state.anchor, state.anchor_time, t);
     xr = el.direction.dot(Eigen::Vector3d(anchor.x(), 0.0, anchor.y()));
@@ -327,7 +293,7 @@ Eigen::VectorXd Machine2D::forcing(double t) const {
     // The shaker's in-plane component acts along the shank (n*, Eq. 2.28).
     f += model_.generalized_force(shaker_point_, in_3d(shaker_force(t)));
   } else if (p_.attachment == Attachment::chain) {
-    const double rch = chain_force(t, cutting_, full_teeth_);
+    const double rch = teeth_.law().chain_force(t, soil_.cutting(), teeth_.full());
     const Eigen::Vector3d force = rch * Eigen::Vector3d(std::cos(p_.chain.chain_angle), 0.0, -std::sin(p_.chain.chain_angle));
     f += model_.generalized_force(chain_point_, force);
     f(coordinate("theta_y")) -= rch * p_.chain.moment_arm;  // -RMCH (Eq. 2.33)
@@ -336,20 +302,21 @@ Eigen::VectorXd Machine2D::forcing(double t) const {
 }
 
 void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const {
-  const Eigen::MatrixXd& k = cutting_ ? k_cut_ : k_back_;
-  const Eigen::MatrixXd& c = cutting_ ? c_cut_ : c_back_;
+  const bool cutting = soil_.cutting();
+  const Eigen::MatrixXd& k = cutting ? k_cut_ : k_back_;
+  const Eigen::MatrixXd& c = cutting ? c_cut_ : c_back_;
   Eigen::VectorXd f = forcing(t) - k * q - c * v;
   // Soil springs unstretched at the anchor (nonzero only with spring_from_contact).
   if (blade_point_ >= 0 && p_.soil.spring_from_contact) {
-    const double scale = cutting_ ? 1.0 : p_.soil.stiffness_reduction;
-    const Eigen::Vector2d anchor = anchor_at(anchor_, anchor_time_, t);
+    const double scale = p_.soil.stiffness_factor(cutting);
+    const Eigen::Vector2d anchor = anchor_at(soil_.anchor(), soil_.anchor_time(), t);
     f += scale * p_.soil.stiffness *
          (model_.elongation_map(soil_elements_[0]).transpose() * anchor.x() + model_.elongation_map(soil_elements_[1]).transpose() * anchor.y());
   }
   // The soil moves rearward past the machine at VS: the blade dampers see the
   // blade velocity relative to it (Eq. 2.23), a reference velocity (VS cos, -VS sin).
   if (blade_point_ >= 0 && p_.forward_speed != 0.0) {
-    const double scale = cutting_ ? 1.0 : p_.soil.damping_reduction;
+    const double scale = p_.soil.damping_factor(cutting);
     const Eigen::Vector3d v_soil(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope));
     f += model_.points()[static_cast<std::size_t>(blade_point_)].displacement.transpose() * (scale * p_.soil.damping * v_soil);
   }
@@ -359,11 +326,10 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
 Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
   if (blade_point_ < 0) return Eigen::Vector2d::Zero();
   const SoilState state = soil_state_at(t);
-  const bool cutting = state.cutting;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const Eigen::Vector3d d = j * q, vel = j * v;
-  const double rk = p_.soil.stiffness * (cutting ? 1.0 : p_.soil.stiffness_reduction);
-  const double rc = p_.soil.damping * (cutting ? 1.0 : p_.soil.damping_reduction);
+  const double rk = p_.soil.stiffness * p_.soil.stiffness_factor(state.cutting);
+  const double rc = p_.soil.damping * p_.soil.damping_factor(state.cutting);
   const Eigen::Vector2d anchor = anchor_at(state.anchor, state.anchor_time, t);
   // Eq. 2.37: RPF = [dX5 RK5 + (VX5 - VS cos) RC5] l + [dZ5 RK5 + (VZ5 + VS sin) RC5] n
   return {(d(X) - anchor.x()) * rk + (vel(X) - p_.forward_speed * std::cos(p_.ground_slope)) * rc,
@@ -375,20 +341,7 @@ int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
 void Machine2D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
   if (blade_point_ < 0) return;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
-  // Each event function starts a hair (1e-10 m or m/s) on its own side of
-  // zero when its state begins, because a switch leaves the other function
-  // exactly at zero with zero slope (the soil line is set at the blade, the
-  // relative velocity is zero): an exact zero at a restart hides the next
-  // crossing from the root finder, as when the blade only grazes free and
-  // cuts again at once.
-  constexpr double kHair = 1e-10;
-  if (cutting_) {
-    // Cutting ends when the blade moves rearward faster than the soil flows past.
-    g[0] = j.row(X).dot(v) - soil_velocity_ - kHair;
-  } else {
-    // Cutting resumes when the blade reaches the unpenetrated soil line again.
-    g[0] = j.row(X).dot(q) - soil_line_at(t) + kHair;
-  }
+  g[0] = soil_.event_value(t, j.row(X).dot(q), j.row(X).dot(v));  // Eq. 2.36 along X
 }
 
 std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
@@ -397,55 +350,24 @@ std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
   if (fired.empty() || fired[0] != 0) return {};
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const double x5 = j.row(X).dot(q);
-  if (cutting_ && directions[0] > 0) {
-    cutting_ = false;
-    soil_line_ = x5;
-    soil_line_time_ = t;
-    soil_history_.push_back({t, false, x5, anchor_, anchor_time_});
-    return fmt::format("blade backs off at x5 = {:.6g} m", x5);
-  }
-  if (!cutting_ && directions[0] < 0) {
-    cutting_ = true;
-    soil_line_ = x5;
-    soil_line_time_ = t;
-    if (p_.soil.spring_from_contact) {
-      anchor_ = {x5, j.row(Z).dot(q)};
-      anchor_time_ = t;
-    }
-    soil_history_.push_back({t, true, x5, anchor_, anchor_time_});
-    return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
+  switch (soil_.on_event(t, directions[0], x5, {x5, j.row(Z).dot(q)})) {
+    case SoilContact<Eigen::Vector2d>::Switch::backs_off: return fmt::format("blade backs off at x5 = {:.6g} m", x5);
+    case SoilContact<Eigen::Vector2d>::Switch::cuts_again: return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
+    case SoilContact<Eigen::Vector2d>::Switch::none: break;
   }
   return {};
 }
 
 double Machine2D::next_scheduled_change(double t) const {
   if (p_.attachment != Attachment::chain) return std::numeric_limits<double>::infinity();
-  const Chain2D& c = p_.chain;
-  double next = std::numeric_limits<double>::infinity();
-  if (c.ramp_time > t) next = c.ramp_time;
-  if (c.chain_speed > 0 && c.tooth_spacing > 0) {
-    const double period = c.tooth_spacing / c.chain_speed;
-    const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-    const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
-    const double k = std::floor(t / period);
-    for (double candidate : {k * period + atch, (k + 1) * period, (k + 1) * period + atch})
-      if (candidate > t * (1 + 1e-14) + 1e-15) next = std::min(next, candidate);
-  }
-  return next;
+  return teeth_.law().next_change(t);
 }
 
 std::string Machine2D::on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   (void)q;
   (void)v;
   if (p_.attachment != Attachment::chain) return {};
-  const Chain2D& c = p_.chain;
-  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const bool full = full_teeth_at(t);
-  if (full != full_teeth_) {
-    full_teeth_ = full;
-    return fmt::format("{} teeth digging", static_cast<int>(mtig - 1 + (full ? 1 : 0)));
-  }
-  return {};
+  return teeth_.on_scheduled_change(t);
 }
 
 }  // namespace framedyn::rigid

@@ -25,6 +25,7 @@
 #include "rigid/ground_input.h"
 #include "rigid/multibody.h"
 #include "rigid/plow_linkage.h"
+#include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
 
 namespace framedyn::rigid {
@@ -67,24 +68,7 @@ struct Tire2D {
   GroundInput normal_input, tractive_input;
 };
 
-struct SoilLaw {
-  double stiffness = 0.0;            // K5, N/m (both X and Z at the blade point)
-  double damping = 0.0;              // C5, N s/m
-  double stiffness_reduction = 0.0;  // REK, 0..1, while the blade moves in soil already cut
-  double damping_reduction = 1.0;    // REC, 0..1
-  // Where the soil springs are unstretched: at the blade's equilibrium
-  // position (Eq. 2.37 as printed, the default), or where the blade was when
-  // the current cut began ("soil in compression only": the soil is pushed
-  // from the point of contact on).
-  bool spring_from_contact = false;
-  // With spring_from_contact: the springs' ground end is fixed in the soil,
-  // which streams rearward past the machine at VS (Eq. 2.23), so the
-  // unstretched position moves with the unpenetrated soil line at
-  // (VS cos theta_g, -VS sin theta_g) from the instant the cut began; the
-  // spring then acts on the blade's penetration into the soil it is cutting,
-  // as the damper acts on its velocity relative to that soil.
-  bool contact_moves_with_soil = false;
-};
+// SoilLaw (K5, C5, REK, REC, where the soil springs are unstretched): rigid/soil_contact.h.
 
 struct Plow2D {
   double mass = 0.0, inertia = 0.0;  // M2, I2: all on the shank (link l2)
@@ -103,19 +87,13 @@ struct Plow2D {
   SpringDamperValues lift_cylinder;            // K7, C7
 };
 
-struct Chain2D {
+// The digging chain: where it acts, and its tooth law (FTG, CCH, VCH, REH,
+// RED, TS, LC, ramp time: rigid::ChainTeeth, Appendix D).
+struct Chain2D : ChainTeeth {
   Eigen::Vector2d boom_point{0, 0};  // point 5, where the soil acts on the boom
   Eigen::Vector2d chain_pin{0, 0};   // point 6, where RCH and RMCH act on the frame
   double chain_angle = 0.0;          // theta_ch, rad
   double moment_arm = 0.0;           // l2 of Eq. 2.32, m
-  double tooth_static_force = 0.0;   // FTG, N
-  double tooth_damping = 0.0;        // CCH, N s/m
-  double chain_speed = 0.0;          // VCH, m/s
-  double static_reduction = 1.0;     // REH, while the teeth back off
-  double damping_reduction = 1.0;    // RED
-  double tooth_spacing = 0.0;        // TS, m
-  double length_in_ground = 0.0;     // LC, m
-  double ramp_time = 0.0;            // linear start-up, s
 };
 
 enum class Attachment { none, plow, chain };
@@ -184,23 +162,20 @@ class Machine2D : public SwitchedSystem {
   // Resets the discrete state for a run starting at t with (q, v): blade cutting, soil line at the blade.
   void reset(double t, const Eigen::VectorXd& q);
 
-  // The soil law's state: set at reset and at every located switch, so that
-  // forces can be recovered afterwards at any sample time.
-  struct SoilState {
-    double time = 0.0;       // when it began, s
-    bool cutting = true;
-    double line = 0.0;       // x of the unpenetrated soil line at `time`, m
-    Eigen::Vector2d anchor{0, 0};  // (X, Z) displacement at which the soil springs are unstretched, m
-    double anchor_time = 0.0;      // when the anchor was set (it moves with the soil from then on if contact_moves_with_soil), s
-  };
-  const std::vector<SoilState>& soil_history() const { return soil_history_; }
+  // The soil law's state (rigid/soil_contact.h): set at reset and at every
+  // located switch, so that forces can be recovered afterwards at any sample
+  // time. anchor: the (X, Z) blade displacement at which the soil springs are
+  // unstretched, set at anchor_time (it moves with the soil from then on if
+  // contact_moves_with_soil); line: x of the unpenetrated soil line at time.
+  using SoilState = SoilContactState<Eigen::Vector2d>;
+  const std::vector<SoilState>& soil_history() const { return soil_.history(); }
   SoilState soil_state_at(double t) const;  // the state in force at t (after a switch at exactly t)
 
   // Forces for recovery. Plow resultant RPF (Eq. 2.37), N, in (X, Z), with
   // the soil law in force at t.
   Eigen::Vector2d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   double chain_force(double t) const;  // RCH, N, with the teeth and soil law in force at t
-  bool cutting() const { return cutting_; }
+  bool cutting() const { return soil_.cutting(); }
   double soil_line_at(double t) const;
 
   // Displacement Jacobian of a point fixed to the frame at (X, Z).
@@ -226,21 +201,14 @@ class Machine2D : public SwitchedSystem {
   Eigen::LDLT<Eigen::MatrixXd> m_solver_;
   int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
   std::vector<int> soil_elements_;
-  // Discrete state.
-  bool cutting_ = true;
-  double soil_line_ = 0.0, soil_line_time_ = 0.0;  // x_s at soil_line_time_ (moving at VS cos theta_g while backing)
-  double soil_velocity_ = 0.0;                     // VS cos theta_g, m/s along +X
-  bool full_teeth_ = true;                         // XNN = 1
-  std::vector<SoilState> soil_history_;
-  Eigen::Vector2d anchor_{0, 0};  // soil springs' unstretched blade displacement (see SoilLaw)
-  double anchor_time_ = 0.0;      // when anchor_ was set
+  // Discrete state: the soil law (x of the blade along X, moving at VS cos theta_g
+  // while backing) and the chain's tooth count (XNN).
+  SoilContact<Eigen::Vector2d> soil_;
+  ToothCount teeth_;
   // The anchor at t: fixed in the machine, or carried rearward with the soil.
   Eigen::Vector2d anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const;
-  bool full_teeth_at(double t) const;
 
   Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part
-  double tooth_force(bool cutting) const;
-  double chain_force(double t, bool cutting, bool full_teeth) const;
 };
 
 }  // namespace framedyn::rigid

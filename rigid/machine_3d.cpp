@@ -153,7 +153,8 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
     throw std::invalid_argument("the 3-D model does not yet have the soil law's 'soil_line' spring reference (use equilibrium or contact)");
   // Soil directions: along the travel (rearward relative to the ground), across it, vertical.
   cut_direction_ = Eigen::Vector3d(std::cos(p.travel_angle), -std::sin(p.travel_angle), 0.0);
-  soil_velocity_ = p.forward_speed * std::cos(g);
+  soil_.configure(p.forward_speed * std::cos(g), p.soil.spring_from_contact);
+  if (p.attachment == Attachment::chain) teeth_ = ToothCount(p.chain);
   soil_flow_ = p.forward_speed * (std::cos(g) * cut_direction_ + Eigen::Vector3d(0.0, 0.0, -std::sin(g)));
 
   if (p.attachment == Attachment::plow) {
@@ -286,8 +287,8 @@ double Machine3D::element_tension(int element, double t, const Eigen::VectorXd& 
   }
   if (std::find(soil_elements_.begin(), soil_elements_.end(), element) != soil_elements_.end()) {
     const SoilState state = soil_state_at(t);
-    k *= state.cutting ? 1.0 : p_.soil.stiffness_reduction;
-    c *= state.cutting ? 1.0 : p_.soil.damping_reduction;
+    k *= p_.soil.stiffness_factor(state.cutting);
+    c *= p_.soil.damping_factor(state.cutting);
     xr = el.direction.dot(state.anchor);
     vr = el.direction.dot(soil_flow_);
   }
@@ -307,46 +308,13 @@ Eigen::Vector3d Machine3D::plow_force(double t, const Eigen::VectorXd& q, const 
   return f;
 }
 
-// --- the digging chain (Appendix D; the same tooth law as Machine2D) --------
-// These functions repeat Machine2D's private ones (and the soil-law event
-// logic below repeats Machine2D's): that class is being changed concurrently,
-// so the shared helper (a rigid/soil_law.h with the tooth schedule, the
-// tooth force and the switching state) is left for when both can move to it.
-// One difference: the tooth count in force is logged (teeth_history_) and
-// recovery reads the log, see chain_force(t).
-
-bool Machine3D::full_teeth_at(double t) const {
-  const Chain3D& c = p_.chain;
-  if (p_.attachment != Attachment::chain || !(c.chain_speed > 0) || !(c.tooth_spacing > 0)) return true;
-  const double period = c.tooth_spacing / c.chain_speed;
-  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
-  const double tau = t - std::floor(t / period + 1e-9) * period;
-  return tau < atch - 1e-12 * period;
-}
-
-double Machine3D::chain_force(double t, bool cutting, bool full_teeth) const {
-  const Chain3D& c = p_.chain;
-  const double reh = cutting ? 1.0 : c.static_reduction, red = cutting ? 1.0 : c.damping_reduction;
-  const double tooth = c.tooth_static_force * reh + c.chain_speed * c.tooth_damping * red;  // FTH
-  const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-  const double teeth = mtig - 1.0 + (full_teeth ? 1.0 : 0.0);  // NTD (Eq. D.3)
-  const double ramp = c.ramp_time > 0.0 ? std::min(1.0, std::max(0.0, t / c.ramp_time)) : 1.0;
-  return ramp * tooth * teeth;  // RCH (Eq. 2.41)
-}
+// --- the digging chain (Appendix D; the tooth law of rigid/soil_contact.h) --------
 
 double Machine3D::chain_force(double t) const {
   if (p_.attachment != Attachment::chain) return 0.0;
-  // The tooth count logged by the integration (not full_teeth_at(t)): a sample an ulp before a
+  // The tooth count logged by the integration (not the schedule at t): a sample an ulp before a
   // scheduled change must see the count in force then, as the equations of motion did.
-  return chain_force(t, soil_state_at(t).cutting, teeth_state_at(t));
-}
-
-bool Machine3D::teeth_state_at(double t) const {
-  bool full = teeth_history_.empty() ? full_teeth_at(t) : teeth_history_.front().second;
-  for (const auto& [time, state] : teeth_history_)
-    if (time <= t) full = state;
-  return full;
+  return teeth_.law().chain_force(t, soil_state_at(t).cutting, teeth_.full_at(t));
 }
 
 Eigen::Vector3d Machine3D::chain_force_vector(double t) const {
@@ -357,65 +325,30 @@ Eigen::Vector3d Machine3D::chain_moment(double t) const { return Eigen::Vector3d
 
 double Machine3D::next_scheduled_change(double t) const {
   if (p_.attachment != Attachment::chain) return std::numeric_limits<double>::infinity();
-  const Chain3D& c = p_.chain;
-  double next = std::numeric_limits<double>::infinity();
-  if (c.ramp_time > t) next = c.ramp_time;
-  if (c.chain_speed > 0 && c.tooth_spacing > 0) {
-    const double period = c.tooth_spacing / c.chain_speed;
-    const double mtig = std::floor(c.length_in_ground / c.tooth_spacing);
-    const double atch = (c.length_in_ground - c.tooth_spacing * mtig) / c.tooth_spacing * period;
-    const double k = std::floor(t / period);
-    for (double candidate : {k * period + atch, (k + 1) * period, (k + 1) * period + atch})
-      if (candidate > t * (1 + 1e-14) + 1e-15) next = std::min(next, candidate);
-  }
-  return next;
+  return teeth_.law().next_change(t);
 }
 
 std::string Machine3D::on_scheduled_change(double t, const Eigen::VectorXd&, const Eigen::VectorXd&) {
   if (p_.attachment != Attachment::chain) return {};
-  const bool full = full_teeth_at(t);
-  if (full != full_teeth_) {
-    full_teeth_ = full;
-    teeth_history_.push_back({t, full});
-    const double mtig = std::floor(p_.chain.length_in_ground / p_.chain.tooth_spacing);
-    return fmt::format("{} teeth digging", static_cast<int>(mtig - 1 + (full ? 1 : 0)));
-  }
-  return {};
+  return teeth_.on_scheduled_change(t);
 }
 
-// --- the soil law (Eq. 2.36, along the travel) ---------------------------------
+// --- the soil law (Eq. 2.36 along the travel; rigid/soil_contact.h) -------------
 
 void Machine3D::reset(double t, const Eigen::VectorXd& q) {
-  cutting_ = true;
-  soil_line_time_ = t;
-  anchor_.setZero();
-  soil_line_ = 0.0;
   if (blade_point_ >= 0) {
     const Eigen::Vector3d d = model_.points()[static_cast<std::size_t>(blade_point_)].displacement * q;
-    soil_line_ = cut_direction_.dot(d);
-    if (p_.soil.spring_from_contact) anchor_ = d;
+    soil_.reset(t, cut_direction_.dot(d), d);
+  } else {
+    soil_.reset(t, 0.0, Eigen::Vector3d::Zero());
   }
-  soil_history_.assign(1, {t, true, soil_line_, anchor_});
-  full_teeth_ = full_teeth_at(t);
-  teeth_history_.assign(1, {t, full_teeth_});
-}
-
-Machine3D::SoilState Machine3D::soil_state_at(double t) const {
-  SoilState s = soil_history_.empty() ? SoilState{} : soil_history_.front();
-  for (const SoilState& h : soil_history_)
-    if (h.time <= t) s = h;
-  return s;
+  teeth_.reset(t);
 }
 
 void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
   if (blade_point_ < 0) return;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
-  constexpr double kHair = 1e-10;  // see Machine2D::events
-  if (cutting_) {
-    g[0] = cut_direction_.dot(j * v) - soil_velocity_ - kHair;
-  } else {
-    g[0] = cut_direction_.dot(j * q) - (soil_line_ + soil_velocity_ * (t - soil_line_time_)) + kHair;
-  }
+  g[0] = soil_.event_value(t, cut_direction_.dot(j * q), cut_direction_.dot(j * v));
 }
 
 std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd&, const std::vector<int>& fired,
@@ -423,20 +356,10 @@ std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
   if (fired.empty() || fired[0] != 0) return {};
   const Eigen::Vector3d d = model_.points()[static_cast<std::size_t>(blade_point_)].displacement * q;
   const double s5 = cut_direction_.dot(d);
-  if (cutting_ && directions[0] > 0) {
-    cutting_ = false;
-    soil_line_ = s5;
-    soil_line_time_ = t;
-    soil_history_.push_back({t, false, s5, anchor_});
-    return fmt::format("blade backs off at s5 = {:.6g} m", s5);
-  }
-  if (!cutting_ && directions[0] < 0) {
-    cutting_ = true;
-    soil_line_ = s5;
-    soil_line_time_ = t;
-    if (p_.soil.spring_from_contact) anchor_ = d;
-    soil_history_.push_back({t, true, s5, anchor_});
-    return fmt::format("blade cuts again at s5 = {:.6g} m", s5);
+  switch (soil_.on_event(t, directions[0], s5, d)) {
+    case SoilContact<Eigen::Vector3d>::Switch::backs_off: return fmt::format("blade backs off at s5 = {:.6g} m", s5);
+    case SoilContact<Eigen::Vector3d>::Switch::cuts_again: return fmt::format("blade cuts again at s5 = {:.6g} m", s5);
+    case SoilContact<Eigen::Vector3d>::Switch::none: break;
   }
   return {};
 }
@@ -451,7 +374,7 @@ Eigen::VectorXd Machine3D::forcing(double t) const {
   if (p_.attachment == Attachment::plow) {
     f += model_.generalized_force(shaker_point_, shaker_force(t));
   } else if (p_.attachment == Attachment::chain) {
-    const double rch = chain_force(t, cutting_, full_teeth_);
+    const double rch = teeth_.law().chain_force(t, soil_.cutting(), teeth_.full());
     f += model_.generalized_force(chain_point_, rch * Eigen::Vector3d(std::cos(p_.chain.chain_angle), 0.0, -std::sin(p_.chain.chain_angle)));
     // RMCH about +Y on the frame: Q = R_frame^T M.
     f += model_.bodies()[static_cast<std::size_t>(frame_body_)].rotation.transpose() * Eigen::Vector3d(0.0, -rch * p_.chain.moment_arm, 0.0);
@@ -460,15 +383,16 @@ Eigen::VectorXd Machine3D::forcing(double t) const {
 }
 
 void Machine3D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const {
-  const Eigen::MatrixXd& k = cutting_ ? k_full_ : k_back_;
-  const Eigen::MatrixXd& c = cutting_ ? c_full_ : c_back_;
+  const bool cutting = soil_.cutting();
+  const Eigen::MatrixXd& k = cutting ? k_full_ : k_back_;
+  const Eigen::MatrixXd& c = cutting ? c_full_ : c_back_;
   Eigen::VectorXd f = forcing(t) - k * q - c * v;
   for (int e : soil_elements_) {
     const SpringDamper& el = model_.elements()[static_cast<std::size_t>(e)];
-    const double ks = el.stiffness * (cutting_ ? 1.0 : p_.soil.stiffness_reduction);
-    const double cs = el.damping * (cutting_ ? 1.0 : p_.soil.damping_reduction);
+    const double ks = el.stiffness * p_.soil.stiffness_factor(cutting);
+    const double cs = el.damping * p_.soil.damping_factor(cutting);
     // Soil springs unstretched at the anchor; the soil streams past at VS (Eq. 2.23).
-    f += model_.elongation_map(e).transpose() * (ks * el.direction.dot(anchor_) + cs * el.direction.dot(soil_flow_));
+    f += model_.elongation_map(e).transpose() * (ks * el.direction.dot(soil_.anchor()) + cs * el.direction.dot(soil_flow_));
   }
   a = m_solver_.solve(f);
 }

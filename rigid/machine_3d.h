@@ -35,6 +35,7 @@
 #include "rigid/machine_2d.h"
 #include "rigid/multibody.h"
 #include "rigid/plow_linkage.h"
+#include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
 
 namespace framedyn::rigid {
@@ -131,19 +132,12 @@ struct Plow3D {
   SpringDamperValues swing_spring;      // K30 (N m/rad), C30 (N m s/rad): boom yaw against the frame
 };
 
-struct Chain3D {
+// The digging chain; its tooth law is rigid::ChainTeeth (Appendix D), as in 2-D.
+struct Chain3D : ChainTeeth {
   Eigen::Vector3d boom_point{0, 0, 0};  // where the soil acts on the boom
   Eigen::Vector3d chain_pin{0, 0, 0};   // point 19: RCH and RMCH act on the frame here
   double chain_angle = 0.0;             // theta_ch, rad, in a plane parallel to X-Z
   double moment_arm = 0.0;              // m
-  double tooth_static_force = 0.0;      // FTG, N
-  double tooth_damping = 0.0;           // CCH, N s/m
-  double chain_speed = 0.0;             // VCH, m/s
-  double static_reduction = 1.0;        // REH
-  double damping_reduction = 1.0;       // RED
-  double tooth_spacing = 0.0;           // TS, m
-  double length_in_ground = 0.0;        // LC, m
-  double ramp_time = 0.0;               // s
 };
 
 struct Machine3DParameters {
@@ -188,15 +182,14 @@ class Machine3D : public SwitchedSystem {
   std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
   void reset(double t, const Eigen::VectorXd& q);
 
-  struct SoilState {
-    double time = 0.0;
-    bool cutting = true;
-    double line = 0.0;                  // blade displacement along the travel where the soil is unpenetrated, m
-    Eigen::Vector3d anchor{0, 0, 0};    // blade displacement where the soil springs are unstretched, m
-  };
-  const std::vector<SoilState>& soil_history() const { return soil_history_; }
-  SoilState soil_state_at(double t) const;
-  bool cutting() const { return cutting_; }
+  // The soil law's state (rigid/soil_contact.h): line, the blade displacement
+  // along the travel where the soil is unpenetrated, m; anchor, the blade
+  // displacement where the soil springs are unstretched, m (fixed in the
+  // machine: SoilLaw::contact_moves_with_soil is not supported in 3-D).
+  using SoilState = SoilContactState<Eigen::Vector3d>;
+  const std::vector<SoilState>& soil_history() const { return soil_.history(); }
+  SoilState soil_state_at(double t) const { return soil_.state_at(t); }
+  bool cutting() const { return soil_.cutting(); }
 
   // Recovery.
   Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const;
@@ -243,18 +236,10 @@ class Machine3D : public SwitchedSystem {
   std::vector<int> soil_elements_;      // along travel, across, normal
   std::vector<int> inputs_;             // elements with a reference ground input (looked up by ground_input_of: copy-safe)
   Eigen::Vector3d cut_direction_{1, 0, 0}, soil_flow_{0, 0, 0};
-  double soil_velocity_ = 0.0;          // VS cos(theta_g) along cut_direction_
-  // Discrete state.
-  bool cutting_ = true;
-  double soil_line_ = 0.0, soil_line_time_ = 0.0;
-  Eigen::Vector3d anchor_{0, 0, 0};
-  bool full_teeth_ = true;
-  std::vector<SoilState> soil_history_;
-  std::vector<std::pair<double, bool>> teeth_history_;  // (time, all MTIG teeth digging) from each change on
-  bool teeth_state_at(double t) const;
-
-  bool full_teeth_at(double t) const;
-  double chain_force(double t, bool cutting, bool full_teeth) const;
+  // Discrete state: the soil law along cut_direction_ (the soil line moving at
+  // VS cos theta_g while backing) and the chain's tooth count (XNN), both logged.
+  SoilContact<Eigen::Vector3d> soil_;
+  ToothCount teeth_;
   Eigen::VectorXd forcing(double t) const;
 };
 

@@ -1144,6 +1144,78 @@ TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEn
   EXPECT_NEAR(m.next_scheduled_change(0.0), std::min(c.ramp_time, atch), 1e-15);
 }
 
+// A sample a hair (an ulp) before a scheduled change of the tooth count sees
+// the count the equations of motion used up to the change, not the one the
+// schedule's clock arithmetic gives there: the tooth count is logged at each
+// change (rigid/soil_contact.h, ToothCount), as in the 3-D machine. Before
+// the shared law, Machine2D recomputed the count from t and got the next
+// period's MTIG teeth for t within 1e-9 TPCH before a period boundary, and
+// MTIG - 1 for t within 1e-12 TPCH before the end of ATCH.
+TEST(ChainForce, ASampleAnUlpBeforeAToothCountChangeSeesTheCountInForce) {
+  const rigid::Machine2DParameters p = chain_machine();
+  rigid::Machine2D m(p);
+  const rigid::Chain2D& c = p.chain;
+  const double fth_cut = c.tooth_static_force + c.chain_speed * c.tooth_damping;
+  const VectorXd zero = VectorXd::Zero(m.size());
+  m.reset(0.0, zero);
+  double teeth = 4.0;  // MTIG: the fifth tooth digs at t = 0, within ATCH
+  double t = 0.0;
+  int changes = 0;
+  while (true) {
+    const double tc = m.next_scheduled_change(t);
+    if (tc > 0.5) break;
+    m.on_scheduled_change(tc, zero, zero);
+    const double before = std::nextafter(tc, 0.0);
+    const double ramp_before = std::min(1.0, before / c.ramp_time), ramp_at = std::min(1.0, tc / c.ramp_time);
+    // Products of three numbers: round-off 1e-15 relative.
+    EXPECT_NEAR(m.chain_force(before), ramp_before * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "an ulp before t = " << tc;
+    const double tau = tc - std::floor(tc / 0.08 + 1e-9) * 0.08;
+    if (tc != c.ramp_time) teeth = tau < 0.04 - 1e-9 ? 4.0 : 3.0;  // the count from tc on (TPCH = 0.08 s, ATCH = 0.04 s)
+    EXPECT_NEAR(m.chain_force(tc), ramp_at * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "at t = " << tc;
+    t = tc;
+    ++changes;
+  }
+  EXPECT_GE(changes, 12);
+}
+
+// The same in an integrated run: with the output interval an ulp short of the
+// tooth period TPCH, every sample falls a hair before a period boundary,
+// where MTIG - 1 teeth dig until the boundary. The frame loads recovered
+// there (RCH and RMCH at the chain pin) must balance the frame's free body
+// with the accelerations the integrator wrote (d'Alembert, as in
+// FrameLoads2D.FrameFreeBodyBalancesAtEveryInstant).
+TEST(ChainForce, FrameFreeBodyBalancesAtSamplesAHairBeforeToothCountChanges) {
+  const rigid::Machine2DParameters p = chain_machine();
+  rigid::Machine2D m(p);
+  const double tpch = p.chain.tooth_spacing / p.chain.chain_speed;  // as the machine computes it
+  const VectorXd zero = VectorXd::Zero(m.size());
+  m.reset(0.0, zero);
+  rigid::IntegrationOptions o;
+  o.output_interval = std::nextafter(tpch, 0.0);
+  o.end_time = 5.5 * tpch;
+  const rigid::Trajectory tr = rigid::integrate_event_located(m, zero, zero, o);
+  ASSERT_EQ(tr.time.size(), 7u);  // 0, TPCH - ulp, ..., 5 (TPCH - ulp) and the end time
+  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(m, tr);
+  const coupling::StressResultants sr = coupling::frame_stress_resultants(m, tr, loads, {10.0});  // behind everything
+  double scale = 0.0;
+  for (const auto& l : loads)
+    for (const auto& f : l.force) scale = std::max(scale, f.norm());
+  ASSERT_GT(scale, 1e3);
+  const rigid::Chain2D& c = p.chain;
+  for (std::size_t i = 1; i <= 5; ++i) {
+    const double t = tr.time[i];
+    ASSERT_LT(t, static_cast<double>(i) * tpch) << "sample " << i;  // a hair before the boundary
+    ASSERT_GT(t, static_cast<double>(i) * tpch - 1e-12) << "sample " << i;
+    // MTIG - 1 teeth until the boundary (past the ramp, the soil law aside).
+    const bool cutting = m.soil_state_at(t).cutting;
+    const double fth = c.tooth_static_force * (cutting ? 1.0 : c.static_reduction) + c.chain_speed * c.tooth_damping * (cutting ? 1.0 : c.damping_reduction);
+    EXPECT_NEAR(m.chain_force(t), 3.0 * fth, 1e-13 * fth) << "t = " << t;
+    EXPECT_NEAR(sr.srx[i][0], 0.0, 1e-9 * scale) << "t = " << t;
+    EXPECT_NEAR(sr.srz[i][0], 0.0, 1e-9 * scale) << "t = " << t;
+    EXPECT_NEAR(sr.srmy[i][0], 0.0, 1e-9 * scale * 5.0) << "t = " << t;  // moment arms up to ~5 m
+  }
+}
+
 // ===========================================================================
 // 8. Free and forced vibration
 

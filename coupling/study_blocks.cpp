@@ -1,0 +1,274 @@
+// Readers of the blocks shared by the 2-D and 3-D study files; see study_blocks.h.
+#include "coupling/study_blocks.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace framedyn::coupling {
+
+namespace {
+
+using core::Quantity;
+constexpr double kDegree = M_PI / 180.0;
+
+template <class Chain, class ReadPoint>
+void read_chain_into(const YamlMap& chain, Chain& c, ReadPoint point) {
+  chain.allow_only({"boom_point", "chain_pin", "chain_angle_deg", "moment_arm", "tooth_static_force", "tooth_damping", "chain_speed",
+                    "static_reduction", "damping_reduction", "tooth_spacing", "length_in_ground", "ramp_time"});
+  c.boom_point = point(chain, "boom_point");
+  c.chain_pin = point(chain, "chain_pin");
+  c.chain_angle = chain.number("chain_angle_deg", Quantity::dimensionless) * kDegree;
+  c.moment_arm = chain.number("moment_arm", Quantity::length);
+  c.tooth_static_force = chain.non_negative("tooth_static_force", Quantity::force);
+  c.tooth_damping = chain.non_negative("tooth_damping", Quantity::translational_damping);
+  c.chain_speed = chain.positive("chain_speed", Quantity::velocity);
+  c.static_reduction = chain.fraction("static_reduction", 1.0);
+  c.damping_reduction = chain.fraction("damping_reduction", 1.0);
+  c.tooth_spacing = chain.positive("tooth_spacing", Quantity::length);
+  c.length_in_ground = chain.positive("length_in_ground", Quantity::length);
+  if (c.length_in_ground < c.tooth_spacing) throw chain.error("length_in_ground", "at least one tooth spacing of chain in the ground", "less");
+  c.ramp_time = chain.non_negative_or("ramp_time", Quantity::time, 0.0);
+}
+
+template <class Plow>
+void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool with_table) {
+  const YamlMap link = plow.map("linkage");
+  link.allow_only({"upper_pivot", "lower_pivot", "upper_joint", "lower_joint"});
+  pl.linkage = {link.point("upper_pivot"), link.point("lower_pivot"), link.point("upper_joint"), link.point("lower_joint")};
+  try {
+    (void)rigid::four_bar_velocity_ratios(pl.linkage);
+  } catch (const std::invalid_argument& e) {
+    throw link.error("", "a linkage with a unique small motion", e.what());
+  }
+  pl.blade_point = plow.point("blade_point");
+  const YamlMap shaker = plow.map("shaker");
+  shaker.allow_only({"point", "force", "frequency_hz", "phase_deg"});
+  pl.shaker_point = shaker.point("point");
+  pl.shaker_amplitude = shaker.non_negative("force", Quantity::force);
+  pl.shaker_frequency = shaker.non_negative("frequency_hz", Quantity::frequency);
+  pl.shaker_phase = shaker.number_or("phase_deg", Quantity::dimensionless, 0.0) * kDegree;
+  const YamlMap bounce = plow.map("bounce_tire");
+  bounce.allow_only({"point", "stiffness", "damping", "input"});
+  pl.bounce_tire_point = bounce.point("point");
+  pl.bounce_tire = {bounce.non_negative("stiffness", Quantity::translational_stiffness), bounce.non_negative_or("damping", Quantity::translational_damping, 0.0)};
+  if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in, with_table);
+}
+
+template <class Machine, class Parameters>
+void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
+  try {
+    Machine check(p);
+    for (const std::string& f : fixed_coordinates)
+      if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
+  }
+}
+
+}  // namespace
+
+std::optional<YamlMap> attachment_block(const YamlMap& root, const std::string& key, bool wanted, const std::string& refusal,
+                                        const std::string& found) {
+  if (wanted) return root.map(key);
+  if (root.has(key)) throw root.error(key, refusal, found);
+  return std::nullopt;
+}
+
+Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key) {
+  const std::vector<double> v = m.numbers(key, Quantity::length);
+  if (!m.has(key) || v.size() != 3) throw m.error(key, "a point [X, Y, Z]", m.has(key) ? fmt::format("{} numbers", v.size()) : "nothing");
+  return {v[0], v[1], v[2]};
+}
+
+void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
+                   const std::string& file) {
+  check_machine_of<rigid::Machine2D>(p, fixed_coordinates, root, file);
+}
+void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
+                   const std::string& file) {
+  check_machine_of<rigid::Machine3D>(p, fixed_coordinates, root, file);
+}
+
+StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, std::initializer_list<const char*> top_keys) {
+  core::UnitSystem si = core::UnitSystem::si();
+  YamlMap top(doc, "", file, &si);
+  if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
+  top.allow_only(top_keys);
+  StudyHeader h;
+  h.name = top.text_or("name", file);
+  const std::string units = top.text("units");
+  try {
+    h.units = core::UnitSystem::from_name(units);
+  } catch (const std::invalid_argument&) {
+    throw top.error("units", "in-lbf-s, m-N-s (or SI) or mm-N-s", "'" + units + "'");
+  }
+  return h;
+}
+
+rigid::Attachment read_attachment(const YamlMap& root) {
+  const std::string attachment = root.text("attachment");
+  if (attachment == "plow") return rigid::Attachment::plow;
+  if (attachment == "chain") return rigid::Attachment::chain;
+  if (attachment == "none") return rigid::Attachment::none;
+  throw root.error("attachment", "plow, chain or none", "'" + attachment + "'");
+}
+
+rigid::SpringDamperValues read_spring_damper(const YamlMap& m) {
+  m.allow_only({"stiffness", "damping"});
+  return {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)};
+}
+
+rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
+  if (with_table) m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values"});
+  else m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration"});
+  rigid::GroundInput g;
+  const std::string kind = m.text("kind");
+  if (kind == "sine") {
+    g.kind = rigid::GroundInput::Kind::sine;
+    g.amplitude = m.number("amplitude", Quantity::length);
+    g.frequency = m.positive("frequency_hz", Quantity::frequency);
+    g.phase = m.number_or("phase_deg", Quantity::dimensionless, 0.0) * kDegree;
+  } else if (kind == "bump") {
+    g.kind = rigid::GroundInput::Kind::bump;
+    g.amplitude = m.number("amplitude", Quantity::length);
+    g.start = m.non_negative("start", Quantity::time);
+    g.duration = m.positive("duration", Quantity::time);
+  } else if (kind == "table" && with_table) {
+    g.kind = rigid::GroundInput::Kind::table;
+    g.times = m.numbers("times", Quantity::time);
+    g.values = m.numbers("values", Quantity::length);
+    if (g.times.size() < 2 || g.times.size() != g.values.size())
+      throw m.error("values", "as many values as times (at least two)", fmt::format("{} times and {} values", g.times.size(), g.values.size()));
+    for (std::size_t i = 1; i < g.times.size(); ++i)
+      if (!(g.times[i] > g.times[i - 1])) throw m.error("times", "increasing times", "a time that does not increase");
+  } else {
+    throw m.error("kind", with_table ? "sine, bump or table" : "sine or bump", "'" + kind + "'");
+  }
+  return g;
+}
+
+void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line) {
+  law.stiffness = soil.non_negative("stiffness", Quantity::translational_stiffness);
+  law.damping = soil.non_negative("damping", Quantity::translational_damping);
+  law.stiffness_reduction = soil.fraction("stiffness_reduction", 0.0);
+  law.damping_reduction = soil.fraction("damping_reduction", 1.0);
+  const std::string reference = soil.text_or("spring_reference", "equilibrium");
+  const bool soil_line = with_soil_line && reference == "soil_line";
+  if (reference != "equilibrium" && reference != "contact" && !soil_line) {
+    if (with_soil_line)
+      throw soil.error("spring_reference",
+                       "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or soil_line (from the point of "
+                       "contact, carried rearward with the unpenetrated soil at VS)",
+                       "'" + reference + "'");
+    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil).
+    throw soil.error("spring_reference", "equilibrium (Eq. 2.37 as printed) or contact (the soil pushed from the point of contact)", "'" + reference + "'");
+  }
+  law.spring_from_contact = reference == "contact" || soil_line;
+  if (with_soil_line) law.contact_moves_with_soil = soil_line;
+}
+
+void read_chain(const YamlMap& chain, rigid::Chain2D& c) {
+  read_chain_into(chain, c, [](const YamlMap& m, const std::string& key) { return m.point(key); });
+}
+void read_chain(const YamlMap& chain, rigid::Chain3D& c) { read_chain_into(chain, c, read_point3); }
+
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+}
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+}
+
+ResponseRequest read_response_request(const YamlMap& r) {
+  r.allow_only({"duration", "output_interval", "method", "rk4_step", "relative_tolerance"});
+  ResponseRequest req;
+  req.duration = r.positive("duration", Quantity::time);
+  req.output_interval = r.positive("output_interval", Quantity::time);
+  const std::string method = r.text_or("method", "event_located");
+  if (method == "event_located") req.method = ResponseRequest::Method::event_located;
+  else if (method == "rk4") req.method = ResponseRequest::Method::rk4;
+  else throw r.error("method", "event_located or rk4", "'" + method + "'");
+  if (req.method == ResponseRequest::Method::rk4) {
+    req.rk4_step = r.positive("rk4_step", Quantity::time);
+    const double ratio = req.output_interval / req.rk4_step;
+    if (std::abs(ratio - std::round(ratio)) > 1e-9 * ratio || std::round(ratio) < 1)
+      throw r.error("rk4_step", "a step that divides output_interval a whole number of times",
+                    fmt::format("{} s against an output interval of {} s", req.rk4_step, req.output_interval));
+  }
+  req.relative_tolerance = r.number_or("relative_tolerance", Quantity::dimensionless, 1e-8);
+  if (!(req.relative_tolerance > 0 && req.relative_tolerance < 1e-2)) throw r.error("relative_tolerance", "a tolerance between 0 and 0.01", "out of range");
+  return req;
+}
+
+CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
+                                            const std::vector<std::string>& known) {
+  cal.allow_only({"parameters", "targets", "fit_labels"});
+  CalibrationRequest req;
+  req.parameters = cal.strings("parameters");
+  if (req.parameters.empty()) throw cal.error("parameters", "a list of parameter names to fit", "none");
+  for (const std::string& name : req.parameters) {
+    double v = 0;
+    try {
+      v = value(name);
+    } catch (const std::invalid_argument&) {
+      std::string names;
+      for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+      throw cal.error("parameters", "one of " + names, "'" + name + "'");
+    }
+    if (!(v > 0)) throw cal.error("parameters", "parameters with a positive starting value", name + " <= 0");
+  }
+  for (const YamlMap& t : cal.list_of_maps("targets")) {
+    t.allow_only({"frequency_hz", "dominant"});
+    req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
+  }
+  if (req.targets.empty()) throw cal.error("targets", "a list of {frequency_hz, dominant}", "none");
+  req.fit_labels = cal.boolean_or("fit_labels", false);
+  return req;
+}
+
+rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
+                                         const rigid::ModesOfParameters& modes_of, const std::function<std::vector<std::string>()>& coordinates) {
+  std::vector<double> initial;
+  for (const std::string& name : c.parameters) initial.push_back(value(name));
+  rigid::CalibrationOptions options;
+  if (c.fit_labels) options.coordinates = coordinates();
+  return rigid::calibrate(modes_of, initial, c.targets, options);
+}
+
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req) {
+  const int n = machine.size();
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n), v0 = Eigen::VectorXd::Zero(n);
+  rigid::IntegrationOptions o;
+  o.end_time = req.duration;
+  o.output_interval = req.output_interval;
+  o.relative_tolerance = req.relative_tolerance;
+  o.absolute_tolerance = 1e-12;
+  o.velocity_scale = 100.0;
+  return req.method == ResponseRequest::Method::event_located ? rigid::integrate_event_located(machine, q0, v0, o)
+                                                              : rigid::integrate_rk4(machine, q0, v0, req.rk4_step, o);
+}
+
+std::optional<double> average_peak_to_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration) {
+  const int cycles = static_cast<int>(std::floor(duration / period + 1e-9));
+  double sum = 0.0;
+  int counted = 0;
+  for (int c = 0; c < cycles; ++c) {
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = 0; i < time.size(); ++i)
+      if (time[i] >= c * period - 1e-12 && time[i] <= (c + 1) * period + 1e-12) {
+        lo = std::min(lo, values[i]);
+        hi = std::max(hi, values[i]);
+      }
+    if (hi >= lo) {
+      sum += hi - lo;
+      ++counted;
+    }
+  }
+  if (counted > 0) return sum / counted;
+  return std::nullopt;
+}
+
+}  // namespace framedyn::coupling

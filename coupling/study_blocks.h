@@ -1,0 +1,132 @@
+// Readers of the YAML blocks that the 2-D and the 3-D rigid-body study files
+// share (coupling/rigid_study.h, coupling/rigid_study_3d.h): the header
+// (format version, name, units), the attachment, spring-dampers, ground
+// inputs, the soil law, the chain, the plow's linkage, shaker and bounce
+// tire, analysis.response and the calibration block. Each reads strictly in
+// the way of coupling/yaml_input.h and throws core::InputError naming the
+// file, line, key path, what was expected and what was found; the messages
+// are those of the study readers (tests check them word for word).
+// Also the steps both runners share: the calibration, the forced response's
+// integration and the blade's average peak-to-peak motion.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/units.h"
+#include "rigid/calibration.h"
+#include "rigid/rigid_modes.h"
+#include "rigid/switched_system.h"
+#include "rigid/time_integration.h"
+#include "coupling/rigid_study.h"
+#include "coupling/yaml_input.h"
+#include "rigid/machine_2d.h"
+#include "rigid/machine_3d.h"
+
+namespace framedyn::coupling {
+
+// `framedyn_study: 1`, the top-level keys, `name` (default: the file) and `units`.
+struct StudyHeader {
+  std::string name;
+  core::UnitSystem units;
+};
+StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, std::initializer_list<const char*> top_keys);
+
+// `attachment: plow | chain | none`.
+rigid::Attachment read_attachment(const YamlMap& root);
+
+// The block `key` of an attachment (soil, plow, chain): required if `wanted`,
+// else refused with expected `refusal` ("no chain data unless attachment is
+// chain") and found `found` ("a chain map"); empty if neither.
+std::optional<YamlMap> attachment_block(const YamlMap& root, const std::string& key, bool wanted, const std::string& refusal,
+                                        const std::string& found);
+
+// A point [X, Y, Z] (length units).
+Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key);
+
+// {stiffness, damping} (damping optional, 0).
+rigid::SpringDamperValues read_spring_damper(const YamlMap& m);
+
+// A reference ground input: kind sine or bump, and with `with_table` also table.
+rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table);
+
+// The soil law's keys (after the caller's allow_only): stiffness, damping,
+// stiffness_reduction, damping_reduction, spring_reference (equilibrium,
+// contact, and with `with_soil_line` soil_line: 2-D only).
+void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line);
+
+// The chain block: boom_point, chain_pin ([X, Z] in 2-D, [X, Y, Z] in 3-D),
+// angle, moment arm and the tooth law of Appendix D.
+void read_chain(const YamlMap& chain, rigid::Chain2D& c);
+void read_chain(const YamlMap& chain, rigid::Chain3D& c);
+
+// The plow's keys from linkage to bounce_tire (after cg): the four-bar
+// linkage, blade point, shaker and bounce tire (ground input `with_table`).
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table);
+
+// Builds the machine once so that geometric errors (a toggle linkage, a
+// massless coordinate) are reported against the study file, and checks the
+// names of analysis.fixed_coordinates.
+void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
+                   const std::string& file);
+void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
+                   const std::string& file);
+
+// analysis.response.
+ResponseRequest read_response_request(const YamlMap& r);
+
+// The calibration block; `value` gives a parameter's starting value and
+// throws std::invalid_argument for a name not in `known`.
+CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
+                                            const std::vector<std::string>& known);
+
+// Runs the calibration request: `value` and `set` read and write a named
+// parameter of the machine, modes_of gives the modes for a set of values of
+// c.parameters, `coordinates` the machine's coordinate names (asked for with fit_labels only).
+rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
+                                         const rigid::ModesOfParameters& modes_of, const std::function<std::vector<std::string>()>& coordinates);
+
+// Calibrates `parameters` in place (run_calibration, then the fitted values
+// set): get(p, name) and set(p, name, value) read and write a named
+// parameter, modes(machine) gives a Machine's modes as the analysis sees them.
+template <class Machine, class Parameters, class Get, class Set, class Modes>
+rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const CalibrationRequest& c, Get get, Set set, Modes modes) {
+  const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
+    Parameters p = parameters;
+    for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
+    return modes(Machine(p));
+  };
+  rigid::CalibrationResult result = run_calibration(
+      c, [&](const std::string& name) { return get(parameters, name); }, modes_of, [&] { return Machine(parameters).model().coordinate_names(); });
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) set(parameters, c.parameters[i], result.fitted[i]);
+  return result;
+}
+
+// The forced response from rest (q = v = 0 at t = 0), event-located or RK4
+// as requested; response_from_rest resets the machine's discrete state first.
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req);
+template <class Machine>
+rigid::Trajectory response_from_rest(Machine& machine, const ResponseRequest& req) {
+  machine.reset(0.0, Eigen::VectorXd::Zero(machine.size()));
+  return integrate_response(machine, req);
+}
+
+// The chain force RCH at every sample of a response.
+template <class Machine>
+Series chain_force_series(const Machine& machine, const rigid::Trajectory& tr) {
+  Series c{"chain_force", core::Quantity::force, {}};
+  for (std::size_t i = 0; i < tr.time.size(); ++i) c.values.push_back(machine.chain_force(tr.time[i]));
+  return c;
+}
+
+// The average over whole periods (of `period`, within `duration`) of the
+// peak-to-peak of `values` sampled at `time`; empty if no period has a sample.
+std::optional<double> average_peak_to_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration);
+
+}  // namespace framedyn::coupling
