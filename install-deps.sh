@@ -3,7 +3,8 @@
 # else): the compiler and CMake, the numerical libraries, the test framework,
 # and CalculiX (ccx), the peer FE code the tests compare the beam model with.
 # gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`;
-# clang with its runtime (libFuzzer, sanitizers) builds the fuzz harnesses of tests/fuzz.
+# clang with its runtime (libFuzzer, sanitizers) and its OpenMP (SUNDIALS's CMake
+# package asks for OpenMP) builds the fuzz harnesses of tests/fuzz.
 set -euo pipefail
 packages=(
   g++ make cmake pkg-config
@@ -12,7 +13,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   calculix-ccx
   gnuplot-nox
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev libomp-dev
 )
 missing=()
 for p in "${packages[@]}"; do
