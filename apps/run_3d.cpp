@@ -1,12 +1,20 @@
 // `framedyn run STUDY.yaml` for model: rigid_3d (thesis CMW3D, Chapter III):
 // modes with dominant coordinates, a forced response, and the frame loads at
 // the eight load points 24-31 as a load-history file (frame_loads.csv).
+// With --figures, every run draws its own Chapter V load-point figures: the
+// front axle pin's forces (thesis Figure 22 for the chain) and the rear axle
+// pin's and leveling cylinder's forces (Figure 23 chain, Figure 24 plow), each
+// PNG with a CSV of exactly the plotted series beside it.
 #include "apps/run_3d.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "core/csv_writer.h"
@@ -42,6 +50,57 @@ void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::
   }
   core::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
 }
+// Thesis Figures 22-24: forces at load points over time, one figure per
+// group. `file` names both the PNG and the CSV of the plotted values.
+struct LoadPointFigure {
+  std::string file, title;
+  std::vector<std::pair<std::string, int>> series;  // (load point, component 0..2 = FX, FY, FZ)
+};
+
+std::vector<LoadPointFigure> load_point_figures(rigid::Attachment attachment) {
+  const bool chain = attachment == rigid::Attachment::chain, plow = attachment == rigid::Attachment::plow;
+  return {
+      {"front_pin_forces", std::string(chain ? "Figure 22: " : "") + "front axle pin 25",
+       {{"P25_FRONT_AXLE_PIN", 0}, {"P25_FRONT_AXLE_PIN", 1}, {"P25_FRONT_AXLE_PIN", 2}}},
+      {"rear_pin_and_leveling_cylinder_forces", std::string(chain ? "Figure 23: " : plow ? "Figure 24: " : "") + "rear axle pin 26, leveling cylinder 27",
+       {{"P26_REAR_AXLE_PIN", 0}, {"P26_REAR_AXLE_PIN", 1}, {"P26_REAR_AXLE_PIN", 2}, {"P27_LEVELING_CYLINDER", 2}}},
+  };
+}
+
+// Draws the load-point figures of one run; returns the PNG file names.
+std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h, rigid::Attachment attachment, const std::string& run_name,
+                                                  const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  std::vector<std::string> written;
+  std::vector<double> time(h.times.data(), h.times.data() + h.times.size());
+  for (const LoadPointFigure& f : load_point_figures(attachment)) {
+    core::LinePlot plot;
+    plot.title = f.title + "; " + run_name;  // "Figure N" is the thesis's
+    plot.width = 1200;
+    plot.x_label = "time";
+    plot.x_unit = "s";
+    plot.y_label = "force on the frame";
+    plot.y_unit = u.label(Quantity::force);
+    std::vector<std::string> header = {"time [s]"};
+    for (const auto& [point, c] : f.series) {
+      const auto it = std::find_if(h.points.begin(), h.points.end(), [&](const coupling::LoadPointHistory& p) { return p.name == point; });
+      if (it == h.points.end()) throw std::logic_error("the frame loads have no load point " + point);
+      core::PlotSeries ps{point + " " + coupling::kLoadComponents[c], time, {}};
+      for (Eigen::Index i = 0; i < it->values.rows(); ++i) ps.y.push_back(u.from_si(it->values(i, c), Quantity::force));
+      header.push_back(core::column(point + "." + coupling::kLoadComponents[c], u.label(Quantity::force)));
+      plot.series.push_back(std::move(ps));
+    }
+    core::CsvTable csv(header);
+    for (std::size_t i = 0; i < time.size(); ++i) {
+      csv.row().add(time[i]);
+      for (const core::PlotSeries& ps : plot.series) csv.add(ps.y[i]);
+    }
+    folder.write_text(f.file + ".csv", csv.str());
+    core::write_png(plot, folder.path_of(f.file + ".png"));
+    written.push_back(f.file + ".png");
+  }
+  return written;
+}
+
 bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha"; }
 }  // namespace
 
@@ -54,6 +113,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   core::ResultsFolder folder(out_dir);
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
 
+  std::vector<std::string> figure_files;
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
   j["input"] = {{"study", study_file}, {"name", study.name}, {"units", u.name()}};
@@ -124,6 +184,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
 
     if (r.frame_loads) {
       folder.write_text("frame_loads.csv", coupling::format_load_history(r.frame_loads->points, u));
+      if (figures) {
+        const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads->points, study.machine.attachment, study.name, u, folder);
+        figure_files.insert(figure_files.end(), drawn.begin(), drawn.end());
+      }
       nlohmann::ordered_json loads;
       for (const coupling::LoadPointHistory& p : r.frame_loads->points.points) {
         nlohmann::ordered_json jp;
@@ -147,7 +211,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     frame = coupling::run_frame_study(*study.frame_response, &r.frame_loads->points);
     coupling::write_frame_outputs(*frame, *study.frame_response, folder);
     j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(*frame, *study.frame_response));
-    if (figures) write_rail_moment_figure(*frame, u, folder);
+    if (figures) {
+      write_rail_moment_figure(*frame, u, folder);
+      figure_files.push_back("fig25_rail_bending_moment.png");
+    }
   }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
@@ -174,7 +241,11 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                  rail.peak_bending_moment.point.x() * lf, u.label(Quantity::length), rail.peak_bending_moment.time,
                  u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), 100.0 * rail.bending_share);
   }
-  if (figures) fmt::print("\nfigures: {}\n", frame ? "fig25_rail_bending_moment.png (the rigid-body series are in the CSV files)" : "not yet drawn for 3-D rigid-body series (the CSV files hold them)");
+  if (figures) {
+    std::string list;
+    for (const std::string& f : figure_files) list += (list.empty() ? "" : ", ") + f;
+    fmt::print("\nfigures: {}\n", list.empty() ? std::string("none (the study has no response)") : list);
+  }
   fmt::print("\nresults in {}/\n", out_dir);
   return 0;
 }
