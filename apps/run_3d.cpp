@@ -17,6 +17,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
 #include "apps/response_figures.h"
@@ -122,22 +123,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
-  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
-  core::CsvTable mcsv([&] {
-    std::vector<std::string> h = {"mode", core::column("frequency", "Hz"), "dominant"};
-    for (const std::string& c : r.coordinates) h.push_back("energy_share_" + c);
-    return h;
-  }());
-  for (std::size_t i = 0; i < r.modes.size(); ++i) {
-    const rigid::RigidMode& m = r.modes[i];
-    nlohmann::ordered_json share;
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) share[r.coordinates[c]] = m.energy_share(static_cast<Eigen::Index>(c));
-    modes.push_back({{"mode", i + 1}, {"frequency_hz", m.frequency_hz}, {"dominant", m.dominant}, {"energy_share", share}});
-    mcsv.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(m.dominant);
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) mcsv.add(m.energy_share(static_cast<Eigen::Index>(c)));
-  }
-  rigid["modes"] = modes;
-  folder.write_text("rigid_modes.csv", mcsv.str());
+  rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
 
   if (r.calibration && study.calibration) {
     const rigid::CalibrationResult& c = *r.calibration;

@@ -11,6 +11,7 @@
 #include "apps/commands.h"
 #include "apps/progress.h"
 #include "apps/response_figures.h"
+#include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
@@ -58,27 +59,7 @@ int run_study(const RunOptions& opt) {
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
-  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
-  core::CsvTable mcsv([&] {
-    std::vector<std::string> h = {"mode", core::column("frequency", "Hz"), "dominant"};
-    for (const std::string& c : r.coordinates) h.push_back("energy_share_" + c);
-    return h;
-  }());
-  for (std::size_t i = 0; i < r.modes.size(); ++i) {
-    const rigid::RigidMode& m = r.modes[i];
-    nlohmann::ordered_json jm;
-    jm["mode"] = i + 1;
-    jm["frequency_hz"] = m.frequency_hz;
-    jm["dominant"] = m.dominant;
-    nlohmann::ordered_json share;
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) share[r.coordinates[c]] = m.energy_share(static_cast<Eigen::Index>(c));
-    jm["energy_share"] = share;
-    modes.push_back(jm);
-    mcsv.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(m.dominant);
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) mcsv.add(m.energy_share(static_cast<Eigen::Index>(c)));
-  }
-  rigid["modes"] = modes;
-  folder.write_text("rigid_modes.csv", mcsv.str());
+  rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
 
   if (r.calibration && study.calibration) {
     const rigid::CalibrationResult& c = *r.calibration;
