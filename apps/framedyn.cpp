@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/results_folder.h"
@@ -28,7 +29,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version are "errors" with status 0: CLI11 prints them.
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    // Every other parse error is bad input: one line in framedyn's own form
+    // and status 1, like every other input error (docs/errors.md, CLI rows).
+    const CLI::App* command = app.get_subcommands().empty() ? nullptr : app.get_subcommands().front();
+    fmt::print(stderr, "framedyn: error: {}\n", framedyn::apps::command_line_message(e, command, argc > 1 ? argv[1] : ""));
+    return 1;
   }
   try {
     const auto start = std::chrono::steady_clock::now();

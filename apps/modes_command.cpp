@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
@@ -155,10 +156,10 @@ void add_modes_command(CLI::App& app, std::function<int()>& run) {
   auto opt = std::make_shared<ModesOptions>();
   CLI::App* cmd = app.add_subcommand("modes", "Natural frequencies and mode shapes of a beam frame");
   opt->mesh.add_options(*cmd);
-  cmd->add_option("--modes,-n", opt->modes, "Number of modes (default: the mesh's *FREQUENCY count, else 10)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--modes,-n", opt->modes, "Number of modes (default: the mesh's *FREQUENCY count, else 10)")->check(number_check("a number of modes from 1 to 100000", [](double n) { return n >= 1 && n <= 100000; }, true));
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_modes)");
   cmd->add_flag("--lumped", opt->lumped, "Lumped mass instead of consistent mass");
-  cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(CLI::PositiveNumber);
+  cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(number_check("a positive shift in Hz", [](double hz) { return hz > 0; }, false));
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_modes(*opt); }; });
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
@@ -157,7 +158,7 @@ void add_static_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand("static", "Static displacements, reactions, section forces and fiber stresses under nodal loads");
   opt->mesh.add_options(*cmd);
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_static)");
-  cmd->add_option("--stations", opt->stations, "Section-force stations per element, ends included (default 3)")->check(CLI::Range(2, 101));
+  cmd->add_option("--stations", opt->stations, "Section-force stations per element, ends included (default 3)")->check(number_check("2 to 101 stations (the element's ends and points between)", [](double n) { return n >= 2 && n <= 101; }, true));
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_static(*opt); }; });
 }

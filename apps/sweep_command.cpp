@@ -12,6 +12,7 @@
 #include <optional>
 #include <thread>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/progress.h"
 #include "core/csv_writer.h"
@@ -130,7 +131,7 @@ int run_sweep(const SweepOptions& opt) {
   if (opt.figures && !core::gnuplot_available())
     throw core::PlotError("framedyn sweep draws figures with gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run; "
                           "install it or give --no-figures");
-  if (opt.jobs < 1) throw core::InputError({"", 0, "--jobs"}, "at least 1", fmt::format("{}", opt.jobs));
+  if (opt.jobs < 1) throw core::InputError(command_line("--jobs"), "at least 1 run at a time", fmt::format("{}", opt.jobs));
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
@@ -140,7 +141,7 @@ int run_sweep(const SweepOptions& opt) {
   } catch (const std::invalid_argument&) {
     std::string known;
     for (const std::string& k : coupling::sweepable_parameters()) known += (known.empty() ? "" : ", ") + k;
-    throw core::InputError({"", 0, "--parameter"}, "one of " + known, "'" + opt.parameter + "'");
+    throw core::InputError({opt.study, 0, "--parameter"}, "one of " + known, "'" + opt.parameter + "'");
   }
   std::vector<double> values_si;
   for (double v : opt.values) values_si.push_back(u.to_si(v, q));
@@ -264,7 +265,10 @@ void add_sweep_command(CLI::App& app, std::function<int()>& run) {
   CLI::App* cmd = app.add_subcommand("sweep", "Run a study once per value of a machine parameter (thesis Figures 9 and 10)");
   cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
   cmd->add_option("--parameter,-p", opt->parameter, "Machine parameter to vary, e.g. soil.damping or soil.stiffness")->required();
-  cmd->add_option("--values", opt->values, "Values in the study's units, comma-separated: 100,200,300")->required()->delimiter(',');
+  cmd->add_option("--values", opt->values, "Values in the study's units, comma-separated: 100,200,300")
+      ->required()
+      ->delimiter(',')
+      ->check(number_check("numbers in the study's units", [](double) { return true; }, false));
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_sweep_<parameter>)");
   cmd->add_option("--jobs,-j", opt->jobs, "Runs at the same time (threads); results do not depend on it")->capture_default_str();
   cmd->add_flag("!--no-figures", opt->figures, "Write no PNG figures (gnuplot not needed)");
