@@ -48,6 +48,39 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
+// A load point must lie on the frame: inside the mesh's extent, widened on
+// every side by a tenth of its largest dimension. A point outside (a typo in
+// a coordinate, a mesh in other units, the wrong mesh) would otherwise reach
+// the frame through a spider of any length and move the load's moment arm.
+void check_load_points_on_mesh(const fem::FrameModel& model, const LoadMapping& mapping, const LoadHistory& loads, const FrameStudyRequest& q,
+                               const std::string& loads_file) {
+  Eigen::Vector3d lo = model.nodes.front().position, hi = lo;
+  for (const fem::Node& n : model.nodes) {
+    lo = lo.cwiseMin(n.position);
+    hi = hi.cwiseMax(n.position);
+  }
+  const double margin = 0.1 * (hi - lo).maxCoeff();
+  const core::UnitSystem& u = q.units;
+  const double lf = 1.0 / u.to_si_factor(core::Quantity::length);
+  const std::string L = u.label(core::Quantity::length);
+  for (std::size_t j = 0; j < mapping.points.size(); ++j) {
+    const MappedLoadPoint& m = mapping.points[j];
+    const Eigen::Vector3d x = m.location;
+    if ((x.array() >= lo.array() - margin).all() && (x.array() <= hi.array() + margin).all()) continue;
+    int nearest = 0;
+    for (std::size_t n = 1; n < model.nodes.size(); ++n)
+      if ((model.nodes[n].position - x).norm() < (model.nodes[static_cast<std::size_t>(nearest)].position - x).norm()) nearest = static_cast<int>(n);
+    const fem::Node& near = model.nodes[static_cast<std::size_t>(nearest)];
+    const int line = j < loads.points.size() ? loads.points[j].line : 0;
+    throw core::InputError(
+        {loads_file, line, "point " + m.name},
+        fmt::format("a load point on the frame mesh {} (X {:g} to {:g}, Y {:g} to {:g}, Z {:g} to {:g} {}, give or take {:g} {})", q.mesh.string(),
+                    lo.x() * lf, hi.x() * lf, lo.y() * lf, hi.y() * lf, lo.z() * lf, hi.z() * lf, L, margin * lf, L),
+        fmt::format("{:g} {:g} {:g} {}, {:.4g} {} from the nearest node ({})", x.x() * lf, x.y() * lf, x.z() * lf, L, (near.position - x).norm() * lf, L,
+                    near.id));
+  }
+}
+
 }  // namespace
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir) {
@@ -61,6 +94,10 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     return path.is_absolute() ? path : dir / path;
   };
   r.mesh = resolve(f.text("mesh"));
+  // Here, not in the mesh reader, so that the message names the study's key and line.
+  if (std::error_code ec; !std::filesystem::is_regular_file(r.mesh, ec))
+    throw f.error("mesh", "an .inp mesh file (a path relative to the study file)",
+                  quoted(r.mesh.string()) + (std::filesystem::exists(r.mesh, ec) ? ", not a file" : ", no such file"));
   if (f.has("loads")) r.loads = resolve(f.text("loads"));
   const std::string supports = f.text_or("supports", "fixed_rear_end");
   if (supports == "fixed_rear_end") r.supports = FrameSupports::fixed_rear_end;
@@ -122,6 +159,10 @@ FrameStudyRequest read_frame_study(const std::string& file) {
   core::UnitSystem si = core::UnitSystem::si();
   YamlMap top(doc, "", file, &si);
   if (top.integer("framedyn_study") != 1) throw top.error("framedyn_study", "1 (the study format this framedyn reads)", top.text("framedyn_study"));
+  // The model before the keys: a rigid-body study's keys are not unknown, they are another command's.
+  if (const std::string model = top.text("model"); model != "frame_transient")
+    throw top.error("model", "frame_transient (the study framedyn frame-response runs)",
+                    quoted(model) + (model.rfind("rigid_", 0) == 0 ? " (a rigid-body study: run it with framedyn run)" : ""));
   top.allow_only({"framedyn_study", "name", "units", "model", "frame"});
   const std::string units = top.text("units");
   core::UnitSystem u = si;
@@ -158,11 +199,16 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   if (given) out.loads = *given;
   else if (q.loads) out.loads = read_load_history(*q.loads);
   else throw core::InputError({q.file, 0, "frame.loads"}, "a load-history file", "no 'loads' key and no loads from a rigid-body run");
-  if (out.loads.times.size() < 2) throw core::InputError({q.file, 0, "frame.loads"}, "a load history with at least two times", "one time");
+  // Where the loads came from, for messages: the load-history file, or this study's own run.
+  const std::string loads_file = !given && q.loads ? q.loads->string() : q.file;
+  if (out.loads.times.size() < 2)
+    throw core::InputError({loads_file, 0, given ? "frame_response" : "rows"}, "a load history with at least two times (loads are linear between rows)",
+                           fmt::format("one row, t = {} s", out.loads.times.size() == 1 ? out.loads.times(0) : 0.0));
 
   std::vector<LoadPointLocation> points;
   for (const LoadPointHistory& p : out.loads.points) points.push_back({p.name, p.location});
   out.mapping = map_load_points(model, points);
+  check_load_points_on_mesh(model, out.mapping, out.loads, q, loads_file);
 
   fem::FrameDynamics frame(model);
   const bool free_free = frame.free_free();

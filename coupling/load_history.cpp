@@ -131,6 +131,7 @@ class Reader {
       fail(static_cast<int>(std::min(i, lines.size()) + 1), "point", "at least one '# point NAME x y z' line",
            i < lines.size() ? quoted(trim(lines[i])) : "the end of the file");
     if (i >= lines.size()) fail(static_cast<int>(i + 1), "header", "the CSV header line 'time [s],...'", "the end of the file");
+      p.line = line_no;
 
     // Header.
     const int header_line = static_cast<int>(i + 1);
@@ -226,7 +227,11 @@ LoadHistory parse_load_history(const std::string& text, const std::string& name)
 
 LoadHistory read_load_history(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw core::InputError({path.string(), 0, ""}, "cannot open the load-history file");
+  if (!in) {
+    std::error_code ec;
+    throw core::InputError({path.string(), 0, ""}, std::string("cannot open the load-history file") +
+                                                       (std::filesystem::exists(path, ec) ? " (permission?)" : " (no such file)"));
+  }
   std::ostringstream s;
   s << in.rdbuf();
   return parse_load_history(s.str(), path.string());

@@ -40,6 +40,7 @@ struct LoadPointHistory {
   Eigen::Vector3d location;       // m, vehicle axes (X rearward, Y right, Z up)
   Eigen::MatrixXd values;         // n_times x 6: FX, FY, FZ (N), MX, MY, MZ (N m), vehicle axes;
                                   // the load the vehicle applies TO the frame at `location`
+  int line = 0;                   // its '# point' line in the file (0: made in memory), for messages
 };
 
 struct LoadHistory {

@@ -58,8 +58,13 @@ SweepResult run_parameter_sweep(const RigidStudy& study, const std::string& para
   if (!study.response)
     throw core::InputError({study.file, 0, "analysis.response"}, "a forced response to sweep (the sweep collects its amplitude and forces)", "none");
   if (values.empty()) throw core::InputError(where_values, "at least one value", "none");
+  // A mass must be positive, as in the study file (a body of no mass leaves
+  // its coordinates without inertia); the others may be 0.
+  const bool inertial = result.quantity == core::Quantity::mass;
   for (double v : values)
-    if (!std::isfinite(v) || v < 0) throw core::InputError(where_values, "finite non-negative values", fmt::format("{}", v));
+    if (!std::isfinite(v) || v < 0 || (inertial && v == 0))
+      throw core::InputError(where_values, inertial ? "finite positive values (a mass)" : "finite non-negative values",
+                             fmt::format("{:g} {}", study.units.from_si(v, result.quantity), study.units.label(result.quantity)));
 
   // The runs: the requested values, then the study's own value if it is not among them.
   std::vector<double> run_values = values;

@@ -129,6 +129,15 @@ void set_parameter(rigid::Machine2DParameters& p, const std::string& name, doubl
 
 RigidStudy read_rigid_study(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
+  {
+    // The model first: another model's keys would otherwise be reported as unknown.
+    core::UnitSystem si = core::UnitSystem::si();
+    const YamlMap top(doc, "", file, &si);
+    const std::string model = top.text("model");
+    if (model == "frame_transient")
+      throw top.error("model", "a rigid-body study (rigid_2d; rigid_3d with framedyn run)", "'frame_transient' (a frame study: run it with framedyn frame-response)");
+    if (model == "rigid_3d") throw top.error("model", "rigid_2d (framedyn sweep varies the 2-D machine)", "'rigid_3d'");
+  }
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires",
                                                           "plow", "chain", "soil", "analysis", "calibration", "frame_output"});
   RigidStudy s;
@@ -137,7 +146,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   s.units = header.units;
   YamlMap root(doc, "", file, &s.units);
   const std::string model = root.text("model");
-  if (model != "rigid_2d") throw root.error("model", "rigid_2d (rigid_3d studies are read by read_rigid_study_3d)", "'" + model + "'");
+  if (model != "rigid_2d") throw root.error("model", "rigid_2d or rigid_3d (framedyn run), or frame_transient (framedyn frame-response)", "'" + model + "'");
 
   rigid::Machine2DParameters& p = s.machine;
   p.attachment = read_attachment(root);
@@ -170,6 +179,10 @@ RigidStudy read_rigid_study(const std::string& file) {
     m.attachment = a.has("attachment") ? a.point("attachment") : m.position;
     p.frame.added_masses.push_back(m);
   }
+  // The frame's x, z and theta_y need inertia: the tube or an added mass must weigh something.
+  if (!(p.frame.mass_per_length > 0) && p.frame.added_masses.empty())
+    throw tube.error(tube.has("mass_per_length") ? "mass_per_length" : "weight_per_length",
+                     "a frame with mass (a positive mass or weight per length, or frame.added_masses)", "0 and no added masses");
 
   const YamlMap cab = root.map("cab");
   cab.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "position", "front_mount", "rear_mount"});
@@ -204,6 +217,8 @@ RigidStudy read_rigid_study(const std::string& file) {
     cyl.allow_only({"frame_point", "arm_point", "stiffness", "damping"});
     pl.cylinder_frame_point = cyl.point("frame_point");
     pl.cylinder_arm_point = cyl.point("arm_point");
+    if (pl.cylinder_arm_point == pl.cylinder_frame_point)
+      throw cyl.error("arm_point", "a point apart from frame_point (a lift cylinder of nonzero length)", "frame_point's point");
     pl.lift_cylinder = {cyl.non_negative("stiffness", Quantity::translational_stiffness), cyl.non_negative_or("damping", Quantity::translational_damping, 0.0)};
   }
   if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
@@ -226,6 +241,13 @@ RigidStudy read_rigid_study(const std::string& file) {
     req.points = fo->numbers("points", Quantity::length);
     if (req.points.empty() || req.points.size() > 24)
       throw fo->error("points", "a list of 1 to 24 X positions (the thesis's limit)", fmt::format("{} points", req.points.size()));
+    // The resultants of Eq. 2.47 exist only along the frame tube (FLT from its front end).
+    const double front = p.frame.front_end, rear = p.frame.front_end + p.frame.length, slack = 1e-9 * p.frame.length;
+    for (double x : req.points)
+      if (x < front - slack || x > rear + slack)
+        throw fo->error("points", fmt::format("X positions on the frame, from {:g} to {:g} {}", s.units.from_si(front, Quantity::length),
+                                              s.units.from_si(rear, Quantity::length), s.units.label(Quantity::length)),
+                        fmt::format("{:g}", s.units.from_si(x, Quantity::length)));
     req.height = fo->number_or("height", Quantity::length, 0.0);
     if (auto rail = fo->optional_map("rail")) {
       rail->allow_only({"area", "second_moment", "top_fiber"});

@@ -22,7 +22,7 @@ Eigen::Vector3d triple(const YamlMap& m, const std::string& key, Quantity q, boo
   if (v.size() != 3) throw m.error(key, "three numbers [xx, yy, zz] (or [xy, xz, yz])", fmt::format("{} numbers", v.size()));
   if (non_negative)
     for (double x : v)
-      if (x < 0) throw m.error(key, "values >= 0", fmt::format("{}", x));
+      if (x < 0) throw m.error(key, "values >= 0", fmt::format("{:g} {}", m.units().from_si(x, q), m.units().label(q)));
   return {v[0], v[1], v[2]};
 }
 
@@ -64,7 +64,7 @@ rigid::Axle3D axle(const YamlMap& m) {
   m.allow_only({"steering_deg", "left", "right"});
   rigid::Axle3D a;
   a.steering_angle = m.number_or("steering_deg", Quantity::dimensionless, 0.0) * kDegree;
-  if (std::abs(a.steering_angle) >= M_PI / 2) throw m.error("steering_deg", "an angle between -90 and 90 degrees", "out of range");
+  if (std::abs(a.steering_angle) >= M_PI / 2) throw m.error("steering_deg", "an angle between -90 and 90 degrees", describe(m.node()["steering_deg"]));
   a.left = tire(m.map("left"));
   a.right = tire(m.map("right"));
   return a;
@@ -275,8 +275,8 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     pl.swing_pin = read_point3(plow, "swing_pin");
     pl.boom_angle = plow.number_or("boom_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
     pl.blade_angle = plow.number_or("blade_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
-    if (std::abs(pl.boom_angle) >= M_PI / 2) throw plow.error("boom_angle_deg", "an angle between -90 and 90 degrees", "out of range");
-    if (std::abs(pl.blade_angle) >= M_PI / 2) throw plow.error("blade_angle_deg", "an angle between -90 and 90 degrees", "out of range");
+    if (std::abs(pl.boom_angle) >= M_PI / 2) throw plow.error("boom_angle_deg", "an angle between -90 and 90 degrees", describe(plow.node()["boom_angle_deg"]));
+    if (std::abs(pl.blade_angle) >= M_PI / 2) throw plow.error("blade_angle_deg", "an angle between -90 and 90 degrees", describe(plow.node()["blade_angle_deg"]));
     pl.boom_offset = plow.number_or("boom_offset", Quantity::length, pl.swing_pin.y());
     pl.mass = plow.mass(kGravity);
     pl.inertia_boom_axes = inertia3(plow, pl.mass, "plow");
@@ -286,6 +286,9 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     cyl.allow_only({"base", "arm_point", "stiffness", "damping"});
     pl.cylinder_base = cyl.point("base");
     pl.cylinder_arm_point = cyl.point("arm_point");
+    // Both ends are [X, Z] in the boom plane: equal points are a cylinder of no length.
+    if (pl.cylinder_arm_point == pl.cylinder_base)
+      throw cyl.error("arm_point", "a point apart from base (a lift cylinder of nonzero length)", "the base's point");
     pl.lift_cylinder = {cyl.non_negative("stiffness", Quantity::translational_stiffness), cyl.non_negative_or("damping", Quantity::translational_damping, 0.0)};
     const YamlMap swing = plow.map("swing_spring");
     swing.allow_only({"stiffness", "damping"});

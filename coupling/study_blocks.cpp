@@ -199,7 +199,8 @@ ResponseRequest read_response_request(const YamlMap& r) {
                     fmt::format("{} s against an output interval of {} s", req.rk4_step, req.output_interval));
   }
   req.relative_tolerance = r.number_or("relative_tolerance", Quantity::dimensionless, 1e-8);
-  if (!(req.relative_tolerance > 0 && req.relative_tolerance < 1e-2)) throw r.error("relative_tolerance", "a tolerance between 0 and 0.01", "out of range");
+  if (!(req.relative_tolerance > 0 && req.relative_tolerance < 1e-2))
+    throw r.error("relative_tolerance", "a tolerance between 0 and 0.01", describe(r.node()["relative_tolerance"]));
   return req;
 }
 

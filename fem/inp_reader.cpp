@@ -572,6 +572,8 @@ void Parser::elastic(const Block& b) {
   if (!(v[0] > 0)) throw InputError(at(b.data[0], b.keyword), "Young's modulus E > 0", fmt::format("{}", v[0]));
   if (!(v[1] > -1.0 && v[1] < 0.5)) throw InputError(at(b.data[0], b.keyword), "Poisson's ratio between -1 and 0.5", fmt::format("{}", v[1]));
   RawMaterial& m = materials_[current_material_];
+  // A second *ELASTIC would silently replace the first: which one was meant?
+  if (m.has_elastic) throw InputError(b.keyword.where, "one *ELASTIC per *MATERIAL", "a second *ELASTIC for " + current_material_);
   m.m.youngs_modulus = v[0];
   m.m.poisson_ratio = v[1];
   m.has_elastic = true;
@@ -584,6 +586,7 @@ void Parser::density(const Block& b) {
   const std::vector<double> v = numbers(b.data[0], b.keyword, 1, 2, "density[, temperature]");
   if (v[0] < 0) throw InputError(at(b.data[0], b.keyword), "a density >= 0", fmt::format("{}", v[0]));
   RawMaterial& m = materials_[current_material_];
+  if (m.has_density) throw InputError(b.keyword.where, "one *DENSITY per *MATERIAL", "a second *DENSITY for " + current_material_);
   m.m.density = v[0];
   m.has_density = true;
 }
