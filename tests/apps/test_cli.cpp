@@ -3,6 +3,7 @@
 // The program is FRAMEDYN_BINARY; every run works in a fresh temp folder.
 #include <gtest/gtest.h>
 
+#include "tests/support/run_framedyn.h"
 #include "tests/support/temp_dir.h"
 
 #include <sys/wait.h>
@@ -23,7 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kBinary = FRAMEDYN_BINARY;
 const fs::path kFrame = fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "r100_frame.inp";
 
 // A fresh directory per test (tests/support/temp_dir.h).
@@ -32,34 +32,11 @@ class TempDir : public framedyn::testing::TempDir {
   TempDir() : framedyn::testing::TempDir("framedyn_test_cli") {}
 };
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::string quote(const std::string& s) { return "'" + s + "'"; }
-
-struct RunResult {
-  int status = -1;  // exit status, -1 if the program did not exit normally
-  std::string out, err;
-};
-
-// Runs `framedyn ARGS` from `dir`, capturing stdout and stderr.
-RunResult framedyn(const TempDir& dir, const std::string& args) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd =
-      "cd " + quote(dir.path().string()) + " && " + quote(kBinary) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
-  const int rc = std::system(cmd.c_str());
-  RunResult r;
-  r.status = (rc != -1 && WIFEXITED(rc)) ? WEXITSTATUS(rc) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
+using framedyn::testing::entries_containing;
+using framedyn::testing::framedyn;
+using framedyn::testing::quote;
+using framedyn::testing::read_file;
+using framedyn::testing::RunResult;
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -84,14 +61,6 @@ std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
     rows.push_back(row);
   }
   return rows;
-}
-
-// Names in `dir` that contain `part`.
-std::vector<std::string> entries_containing(const fs::path& dir, const std::string& part) {
-  std::vector<std::string> found;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().find(part) != std::string::npos) found.push_back(e.path().filename().string());
-  return found;
 }
 
 // Every file of a results folder, name -> content.
