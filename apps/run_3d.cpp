@@ -152,6 +152,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
     if (r.peak_cutting_force) resp["peak_cutting_force"] = {{"value", *r.peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
     if (r.peak_backing_force) resp["peak_backing_force"] = {{"value", *r.peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
+    if (r.average_peak_cutting_force)
+      resp["average_peak_cutting_force"] = {{"value", *r.average_peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
+    if (r.average_peak_backing_force)
+      resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
 
     std::vector<std::string> h = {"time [s]"};

@@ -104,6 +104,10 @@ int run_study(const RunOptions& opt) {
     if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
     if (r.peak_cutting_force) resp["peak_cutting_force"] = {{"value", *r.peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
     if (r.peak_backing_force) resp["peak_backing_force"] = {{"value", *r.peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
+    if (r.average_peak_cutting_force)
+      resp["average_peak_cutting_force"] = {{"value", *r.average_peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
+    if (r.average_peak_backing_force)
+      resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
 
     std::vector<std::string> h = {"time [s]"};
@@ -198,6 +202,8 @@ int run_study(const RunOptions& opt) {
     fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));
     fmt::print("peak cutting force {:.5g} {}, peak backing force {:.5g} {}\n", r.peak_cutting_force.value_or(0) * ff, u.label(Quantity::force),
                r.peak_backing_force.value_or(0) * ff, u.label(Quantity::force));
+    fmt::print("average of the shaker cycles' peaks: cutting {:.5g} {}, backing {:.5g} {}\n", r.average_peak_cutting_force.value_or(0) * ff,
+               u.label(Quantity::force), r.average_peak_backing_force.value_or(0) * ff, u.label(Quantity::force));
   }
   if (opt.figures) fmt::print("\nfigures: {}\n", figures.empty() ? std::string("none (the study has no response)") : fmt::format("{}", fmt::join(figures, ", ")));
   fmt::print("\nresults in {}/\n", out_dir);

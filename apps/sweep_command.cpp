@@ -51,6 +51,8 @@ const std::vector<Figure>& figures() {
       {"plow_vertical_pp", "blade vertical motion, peak to peak", Quantity::length, &coupling::SweepPoint::plow_vertical_pp},
       {"peak_cutting_force", "peak cutting force", Quantity::force, &coupling::SweepPoint::peak_cutting_force},
       {"peak_backing_force", "peak backing force", Quantity::force, &coupling::SweepPoint::peak_backing_force},
+      {"average_peak_cutting_force", "average of the cycles' peak cutting force", Quantity::force, &coupling::SweepPoint::average_peak_cutting_force},
+      {"average_peak_backing_force", "average of the cycles' peak backing force", Quantity::force, &coupling::SweepPoint::average_peak_backing_force},
   };
   return f;
 }
@@ -109,6 +111,8 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
   core::LinePlot forces = base("Peak plow forces vs " + s.parameter + " (thesis Figure 10)", "peak plow force", u.label(Quantity::force));
   forces.series.push_back(series_of(f[1], false));
   forces.series.push_back(series_of(f[2], false));
+  forces.series.push_back(series_of(f[3], false));
+  forces.series.push_back(series_of(f[4], false));
   write(forces, "peak_forces.png");
   const double ref = u.from_si(s.reference.value, s.quantity);
   core::LinePlot change = base(fmt::format("Change against the run at {} = {:g} {}", s.parameter, ref, x_unit), "relative change", "%");
@@ -231,8 +235,9 @@ int run_sweep(const SweepOptions& opt) {
   fmt::print("reference: {} = {:g} {} (the study file's value{})\n\n", opt.parameter, reference, unit,
              s.reference_index >= 0 ? "" : ", run on its own");
   const std::string lu = u.label(Quantity::length), fu = u.label(Quantity::force);
-  fmt::print("{:>14s}  {:>12s} {:>8s}  {:>12s} {:>8s}  {:>12s} {:>8s}\n", opt.parameter, "pp [" + lu + "]", "change", "cutting [" + fu + "]",
-             "change", "backing [" + fu + "]", "change");
+  // Peaks over the whole run, then the averages of the shaker cycles' peaks (the thesis's Figure 10).
+  fmt::print("{:>14s}  {:>12s} {:>8s}  {:>12s} {:>8s}  {:>12s} {:>8s}  {:>12s} {:>8s}  {:>12s} {:>8s}\n", opt.parameter, "pp [" + lu + "]", "change",
+             "cutting [" + fu + "]", "change", "backing [" + fu + "]", "change", "avg cut [" + fu + "]", "change", "avg back [" + fu + "]", "change");
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     std::string line = fmt::format("{:14.6g}", x[i]);
     for (const Figure& f : figures()) {

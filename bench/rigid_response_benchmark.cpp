@@ -17,7 +17,7 @@
 //                each integrator; every figure a ratio measured in one run.
 //
 //   rigid_response_benchmark [--part convergence|benchmark|all]
-//                            [--study FILE]          (default examples/r100_plow_2d.yaml)
+//                            [--study FILE]          (default examples/r100_plow_2d_vertical_path.yaml)
 //                            [--chain-study FILE]    (default examples/r100_chain_2d.yaml: timed only)
 //                            [--switching-speed IN_S] [--sliding-speed IN_S]  (the variants' forward speeds; 1.5, 3)
 //                            [--min-cpu SECONDS]     (each timing block at least this long; default 0.25)
@@ -453,7 +453,7 @@ void cost_of_accuracy(const std::string& what, const rigid::Machine2DParameters&
 
 int main(int argc, char** argv) {
   std::string part = "all";
-  std::string study_file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml";
+  std::string study_file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d_vertical_path.yaml";
   std::string chain_file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_chain_2d.yaml";
   double switching_speed = 1.5, sliding_speed = 3.0;  // in/s
   for (int i = 1; i + 1 < argc; i += 2) {

@@ -20,6 +20,8 @@ SweepPoint sweep_point(const RigidResults& r, double value) {
   p.plow_vertical_pp = r.plow_vertical_peak_to_peak;
   p.peak_cutting_force = r.peak_cutting_force;
   p.peak_backing_force = r.peak_backing_force;
+  p.average_peak_cutting_force = r.average_peak_cutting_force;
+  p.average_peak_backing_force = r.average_peak_backing_force;
   for (const rigid::RigidMode& m : r.modes) {
     p.frequencies_hz.push_back(m.frequency_hz);
     p.dominant.push_back(m.dominant);

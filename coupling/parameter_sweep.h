@@ -22,6 +22,8 @@ struct SweepPoint {
   std::optional<double> plow_vertical_pp;           // m, as RigidResults
   std::optional<double> peak_cutting_force;         // N
   std::optional<double> peak_backing_force;         // N
+  std::optional<double> average_peak_cutting_force;  // N, as RigidResults
+  std::optional<double> average_peak_backing_force;  // N
   std::vector<double> frequencies_hz;               // natural frequencies, lowest first
   std::vector<std::string> dominant;                // the dominant coordinate of each
 };

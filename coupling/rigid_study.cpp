@@ -325,7 +325,12 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
     }
     if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
       // Average peak-to-peak vertical blade motion over whole shaker cycles.
-      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, 1.0 / study.machine.plow.shaker_frequency, req.duration);
+      const double period = 1.0 / study.machine.plow.shaker_frequency;
+      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, period, req.duration);
+      std::vector<double> backing(mag.values.size());
+      std::transform(mag.values.begin(), mag.values.end(), backing.begin(), [](double m) { return -m; });
+      r.average_peak_cutting_force = average_cycle_peak(tr.time, mag.values, period, req.duration);
+      r.average_peak_backing_force = average_cycle_peak(tr.time, backing, period, req.duration);
     }
     for (Series* s : {&bx, &bz, &fx, &fz, &mag, &angle}) r.series.push_back(std::move(*s));
   }

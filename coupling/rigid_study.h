@@ -89,6 +89,10 @@ struct RigidResults {
   std::optional<double> plow_vertical_peak_to_peak;  // m, average over shaker cycles
   std::optional<double> peak_cutting_force;          // N, largest signed plow force magnitude (forward travel)
   std::optional<double> peak_backing_force;          // N, largest magnitude while the blade moves back
+  // N: the thesis's "average peak" forces (Figure 10), each shaker cycle's
+  // largest, averaged over the whole cycles in which the blade cuts (backs).
+  std::optional<double> average_peak_cutting_force;
+  std::optional<double> average_peak_backing_force;
   // Frame loads and resultants (with a response and a frame_output request).
   std::vector<FrameLoad2D> frame_loads;
   std::optional<StressResultants> resultants;

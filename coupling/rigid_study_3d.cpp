@@ -341,6 +341,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
     Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
     Series fx{"soil_force_x", Quantity::force, {}}, fy{"soil_force_y", Quantity::force, {}}, fz{"soil_force_z", Quantity::force, {}};
     double cut = 0, back = 0;
+    std::vector<double> cutting_magnitude(ns, 0.0), backing_magnitude(ns, 0.0);  // each zero in the other state
     for (std::size_t i = 0; i < ns; ++i) {
       const Eigen::Vector3d d = j * tr.q[i];
       bx.values.push_back(d.x());
@@ -351,14 +352,18 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
       fx.values.push_back(f.x());
       fy.values.push_back(f.y());
       fz.values.push_back(f.z());
-      if (machine.soil_state_at(tr.time[i]).cutting) cut = std::max(cut, f.norm());
-      else back = std::max(back, f.norm());
+      (machine.soil_state_at(tr.time[i]).cutting ? cutting_magnitude : backing_magnitude)[i] = f.norm();
+      cut = std::max(cut, cutting_magnitude[i]);
+      back = std::max(back, backing_magnitude[i]);
     }
     r.peak_cutting_force = cut;
     r.peak_backing_force = back;
     if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
       // Average peak-to-peak vertical blade motion over whole shaker cycles.
-      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, 1.0 / study.machine.plow.shaker_frequency, req.duration);
+      const double period = 1.0 / study.machine.plow.shaker_frequency;
+      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, period, req.duration);
+      r.average_peak_cutting_force = average_cycle_peak(tr.time, cutting_magnitude, period, req.duration);
+      r.average_peak_backing_force = average_cycle_peak(tr.time, backing_magnitude, period, req.duration);
     }
     for (Series* s : {&bx, &by, &bz, &fx, &fy, &fz}) r.series.push_back(std::move(*s));
   }

@@ -64,6 +64,8 @@ struct RigidResults3D {
   std::optional<double> plow_vertical_peak_to_peak;  // m, average over whole shaker cycles
   std::optional<double> peak_cutting_force;          // N: largest soil force magnitude while the blade cuts
   std::optional<double> peak_backing_force;          // N: while it backs off
+  std::optional<double> average_peak_cutting_force;  // N: each shaker cycle's largest, averaged (as RigidResults)
+  std::optional<double> average_peak_backing_force;  // N
   std::optional<FrameLoads3D> frame_loads;           // with a response
 };
 

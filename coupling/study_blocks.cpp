@@ -157,17 +157,24 @@ void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line
   law.damping_reduction = soil.fraction("damping_reduction", 1.0);
   const std::string reference = soil.text_or("spring_reference", "equilibrium");
   const bool soil_line = with_soil_line && reference == "soil_line";
-  if (reference != "equilibrium" && reference != "contact" && !soil_line) {
+  if (reference != "equilibrium" && reference != "contact" && reference != "cut_face" && !soil_line) {
     if (with_soil_line)
       throw soil.error("spring_reference",
-                       "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or soil_line (from the point of "
-                       "contact, carried rearward with the unpenetrated soil at VS)",
+                       "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact), soil_line (from the point of "
+                       "contact, carried rearward with the unpenetrated soil at VS) or cut_face (no spring while the blade cuts)",
                        "'" + reference + "'");
     // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil).
-    throw soil.error("spring_reference", "equilibrium (Eq. 2.37 as printed) or contact (the soil pushed from the point of contact)", "'" + reference + "'");
+    throw soil.error("spring_reference",
+                     "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or cut_face (no spring while the blade cuts)",
+                     "'" + reference + "'");
   }
-  law.spring_from_contact = reference == "contact" || soil_line;
-  if (with_soil_line) law.contact_moves_with_soil = soil_line;
+  law.cut_face = reference == "cut_face";
+  // 3-D: the cut face's anchor does not stream with the soil, which matters only where springs act while backing.
+  if (law.cut_face && !with_soil_line && law.stiffness_reduction != 0.0)
+    throw soil.error("stiffness_reduction", "0 with spring_reference: cut_face in a 3-D study (the springs act only while backing, from a cut face that "
+                     "the 3-D model does not move with the soil)", fmt::format("{}", law.stiffness_reduction));
+  law.spring_from_contact = reference == "contact" || soil_line || law.cut_face;
+  if (with_soil_line) law.contact_moves_with_soil = soil_line || law.cut_face;
 }
 
 void read_chain(const YamlMap& chain, rigid::Chain2D& c) {
@@ -252,10 +259,12 @@ rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const Respo
                                                               : rigid::integrate_rk4(machine, q0, v0, req.rk4_step, o);
 }
 
-std::optional<double> average_peak_to_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration) {
+namespace {
+// Calls visit(lowest, highest) for each whole period [c T, (c + 1) T] within
+// `duration` that holds a sample (both ends included).
+template <class Visit>
+void for_each_period(const std::vector<double>& time, const std::vector<double>& values, double period, double duration, Visit visit) {
   const int cycles = static_cast<int>(std::floor(duration / period + 1e-9));
-  double sum = 0.0;
-  int counted = 0;
   for (int c = 0; c < cycles; ++c) {
     double lo = 1e300, hi = -1e300;
     for (std::size_t i = 0; i < time.size(); ++i)
@@ -263,11 +272,31 @@ std::optional<double> average_peak_to_peak(const std::vector<double>& time, cons
         lo = std::min(lo, values[i]);
         hi = std::max(hi, values[i]);
       }
-    if (hi >= lo) {
-      sum += hi - lo;
+    if (hi >= lo) visit(lo, hi);
+  }
+}
+}  // namespace
+
+std::optional<double> average_peak_to_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration) {
+  double sum = 0.0;
+  int counted = 0;
+  for_each_period(time, values, period, duration, [&](double lo, double hi) {
+    sum += hi - lo;
+    ++counted;
+  });
+  if (counted > 0) return sum / counted;
+  return std::nullopt;
+}
+
+std::optional<double> average_cycle_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration) {
+  double sum = 0.0;
+  int counted = 0;
+  for_each_period(time, values, period, duration, [&](double, double hi) {
+    if (hi > 0.0) {
+      sum += hi;
       ++counted;
     }
-  }
+  });
   if (counted > 0) return sum / counted;
   return std::nullopt;
 }

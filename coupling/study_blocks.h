@@ -129,4 +129,10 @@ Series chain_force_series(const Machine& machine, const rigid::Trajectory& tr) {
 // peak-to-peak of `values` sampled at `time`; empty if no period has a sample.
 std::optional<double> average_peak_to_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration);
 
+// The thesis's "average peak" plow force (Figures 9-10): the mean, over the
+// whole periods within `duration` in which `values` rises above zero, of each
+// period's largest value; empty if it never does. Pass the signed force
+// magnitude for the cutting force, its negative for the backing force.
+std::optional<double> average_cycle_peak(const std::vector<double>& time, const std::vector<double>& values, double period, double duration);
+
 }  // namespace framedyn::coupling

@@ -99,7 +99,7 @@ Machine2D::Machine2D(const Machine2DParameters& p)
 
   const Eigen::Vector3d ground_normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));
   const Eigen::Vector3d ground_tangent(std::cos(p.ground_slope), 0.0, -std::sin(p.ground_slope));  // rearward along the ground
-  soil_.configure(p.forward_speed * std::cos(p.ground_slope), p.soil.spring_from_contact);
+  soil_.configure(p.forward_speed * std::cos(p.ground_slope), p.soil.spring_from_contact, p.soil.cut_face);
   if (p.attachment == Attachment::chain) teeth_ = ToothCount(p.chain);
 
   // Cab mounts (elements 12 and 14): vertical between frame and cab.
@@ -173,7 +173,7 @@ Machine2D::Machine2D(const Machine2DParameters& p)
     k_soil += p.soil.stiffness * g.transpose() * g;
     c_soil += p.soil.damping * g.transpose() * g;
   }
-  k_cut_ = k_full_;
+  k_cut_ = p.soil.cut_face ? Eigen::MatrixXd(k_full_ - k_soil) : k_full_;  // cut-face reading: no spring while cutting
   c_cut_ = c_full_;
   k_back_ = k_full_ - (1.0 - p.soil.stiffness_reduction) * k_soil;
   c_back_ = c_full_ - (1.0 - p.soil.damping_reduction) * c_soil;

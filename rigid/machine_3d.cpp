@@ -149,11 +149,14 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
   add_tire("rear_left_tire", p.rear_tires.left, p.rear_tires.steering_angle, false);
   add_tire("rear_right_tire", p.rear_tires.right, p.rear_tires.steering_angle, false);
 
-  if (p.soil.contact_moves_with_soil)
+  if (p.soil.contact_moves_with_soil && !p.soil.cut_face)
     throw std::invalid_argument("the 3-D model does not yet have the soil law's 'soil_line' spring reference (use equilibrium or contact)");
+  // The cut face's anchor stays where the cut ended instead of streaming with the soil: exact only without springs while backing.
+  if (p.soil.cut_face && p.soil.stiffness_reduction != 0.0)
+    throw std::invalid_argument("the 3-D model has the soil law's 'cut_face' spring reference only with stiffness_reduction 0");
   // Soil directions: along the travel (rearward relative to the ground), across it, vertical.
   cut_direction_ = Eigen::Vector3d(std::cos(p.travel_angle), -std::sin(p.travel_angle), 0.0);
-  soil_.configure(p.forward_speed * std::cos(g), p.soil.spring_from_contact);
+  soil_.configure(p.forward_speed * std::cos(g), p.soil.spring_from_contact, p.soil.cut_face);
   if (p.attachment == Attachment::chain) teeth_ = ToothCount(p.chain);
   soil_flow_ = p.forward_speed * (std::cos(g) * cut_direction_ + Eigen::Vector3d(0.0, 0.0, -std::sin(g)));
 
@@ -237,11 +240,13 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
   m_ = model_.mass_matrix();
   k_full_ = model_.stiffness_matrix();
   c_full_ = model_.damping_matrix();
+  k_cut_ = k_full_;
   k_back_ = k_full_;
   c_back_ = c_full_;
   for (int e : soil_elements_) {
     const Eigen::RowVectorXd gmap = model_.elongation_map(e);
     const SpringDamper& el = model_.elements()[static_cast<std::size_t>(e)];
+    if (p.soil.cut_face) k_cut_ -= el.stiffness * gmap.transpose() * gmap;
     k_back_ -= (1.0 - p.soil.stiffness_reduction) * el.stiffness * gmap.transpose() * gmap;
     c_back_ -= (1.0 - p.soil.damping_reduction) * el.damping * gmap.transpose() * gmap;
   }
@@ -384,7 +389,7 @@ Eigen::VectorXd Machine3D::forcing(double t) const {
 
 void Machine3D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const {
   const bool cutting = soil_.cutting();
-  const Eigen::MatrixXd& k = cutting ? k_full_ : k_back_;
+  const Eigen::MatrixXd& k = cutting ? k_cut_ : k_back_;
   const Eigen::MatrixXd& c = cutting ? c_full_ : c_back_;
   Eigen::VectorXd f = forcing(t) - k * q - c * v;
   for (int e : soil_elements_) {

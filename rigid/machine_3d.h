@@ -229,7 +229,7 @@ class Machine3D : public SwitchedSystem {
   Multibody model_;
   PlowPlacement placement_{};
   double cb_ = 0.0;
-  Eigen::MatrixXd m_, k_full_, c_full_, k_back_, c_back_;
+  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, k_back_, c_back_;  // k_cut_: k_full_ less the soil springs in the cut-face reading
   Eigen::LDLT<Eigen::MatrixXd> m_solver_;
   int frame_body_ = -1, reel_body_ = -1, rear_axle_body_ = -1, front_axle_body_ = -1, cab_body_ = -1, plow_body_ = -1;
   int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;

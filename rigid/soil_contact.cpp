@@ -13,9 +13,10 @@ namespace framedyn::rigid {
 // --- the soil law (Eq. 2.36) ---------------------------------------------------
 
 template <class Anchor>
-void SoilContact<Anchor>::configure(double soil_velocity, bool spring_from_contact) {
+void SoilContact<Anchor>::configure(double soil_velocity, bool spring_from_contact, bool anchor_at_back_off) {
   soil_velocity_ = soil_velocity;
   spring_from_contact_ = spring_from_contact;
+  anchor_at_back_off_ = anchor_at_back_off;
 }
 
 template <class Anchor>
@@ -48,6 +49,10 @@ typename SoilContact<Anchor>::Switch SoilContact<Anchor>::on_event(double t, int
     cutting_ = false;
     line_ = position;
     line_time_ = t;
+    if (anchor_at_back_off_) {
+      anchor_ = anchor;
+      anchor_time_ = t;
+    }
     history_.push_back({t, false, position, anchor_, anchor_time_});
     return Switch::backs_off;
   }
@@ -55,7 +60,7 @@ typename SoilContact<Anchor>::Switch SoilContact<Anchor>::on_event(double t, int
     cutting_ = true;
     line_ = position;
     line_time_ = t;
-    if (spring_from_contact_) {
+    if (spring_from_contact_ && !anchor_at_back_off_) {
       anchor_ = anchor;
       anchor_time_ = t;
     }

@@ -48,9 +48,19 @@ struct SoilLaw {
   // as the damper acts on its velocity relative to that soil. 2-D only:
   // Machine3D keeps the anchor fixed and its study reader refuses it.
   bool contact_moves_with_soil = false;
+  // The cut-face reading: the cutting blade fails the soil it pushes, so the
+  // springs' ground end stays at the blade while it cuts (they carry
+  // nothing: the soil resists a cutting blade by its damping alone); when it
+  // backs off, the springs (REK K5) act from the cut face it left, where the
+  // unpenetrated soil begins, carried rearward with the soil (2-D; the 3-D
+  // reader takes it only with REK = 0, where the anchor plays no part). The
+  // modes still see K5 at full value (analysis.modal_soil): a blade at rest
+  // in the soil is held by its elasticity. docs/theory/rigid.md section 4.
+  bool cut_face = false;
 
-  // The factors on K5 and C5 in the state `cutting` (1, or REK and REC).
-  double stiffness_factor(bool cutting) const { return cutting ? 1.0 : stiffness_reduction; }
+  // The factors on K5 and C5 in the state `cutting` (1, or REK and REC; 0 on
+  // K5 while cutting in the cut-face reading).
+  double stiffness_factor(bool cutting) const { return cutting ? (cut_face ? 0.0 : 1.0) : stiffness_reduction; }
   double damping_factor(bool cutting) const { return cutting ? 1.0 : damping_reduction; }
 };
 
@@ -75,8 +85,9 @@ class SoilContact {
   enum class Switch { none, backs_off, cuts_again };
 
   // soil_velocity: VS cos theta_g, the rate at which the soil streams
-  // rearward along the cut; spring_from_contact: SoilLaw::spring_from_contact.
-  void configure(double soil_velocity, bool spring_from_contact);
+  // rearward along the cut; spring_from_contact: SoilLaw::spring_from_contact;
+  // anchor_at_back_off: the anchor is set where each cut ends (SoilLaw::cut_face).
+  void configure(double soil_velocity, bool spring_from_contact, bool anchor_at_back_off = false);
 
   // A run starting at t with the blade cutting at `position`; `anchor` is the
   // blade displacement then (used with spring_from_contact, else zero).
@@ -108,6 +119,7 @@ class SoilContact {
  private:
   double soil_velocity_ = 0.0;
   bool spring_from_contact_ = false;
+  bool anchor_at_back_off_ = false;
   bool cutting_ = true;
   double line_ = 0.0, line_time_ = 0.0;
   Anchor anchor_ = Anchor::Zero();

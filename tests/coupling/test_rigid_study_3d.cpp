@@ -110,6 +110,20 @@ TEST(StudyReader3D, EveryErrorNamesTheFileTheLineAndTheKeyPath) {
   expect_error(edited("pin: [72, 0, 0]", "pin: [72, 0]"), "frame.rear_axle.pin", "[X, Y, Z]");
   expect_error(edited("  swing_spring: {stiffness: 2.0e6, damping: 2000}", "  swing_spring: {stiffness: -1}"), "plow.swing_spring.stiffness", "-1");
   expect_error(edited("leveling_cylinder: [68, 15, 0]", "leveling_cylinder: [68, 0, 0]"), "frame.rear_axle.leveling_cylinder", "beside the pin");
+  // The cut-face reading in 3-D: only where no spring acts while backing (its cut face does not stream with the soil there).
+  expect_error(edited("  stiffness_reduction: 0\n", "  stiffness_reduction: 0.2\n  spring_reference: cut_face\n"), "soil.stiffness_reduction",
+               "0 with spring_reference: cut_face");
+  expect_error(edited("  stiffness_reduction: 0\n", "  stiffness_reduction: 0\n  spring_reference: soil_line\n"), "soil.spring_reference", "soil_line");
+}
+
+// ... and with REK = 0 it is taken, and the soil then resists the cutting blade by its damping alone.
+TEST(StudyReader3D, CutFaceReadingIsTakenWithoutSpringsWhileBacking) {
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const std::string file = dir.write("study.yaml", edited("  stiffness_reduction: 0\n", "  stiffness_reduction: 0\n  spring_reference: cut_face\n")).string();
+  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(file);
+  EXPECT_TRUE(study.machine.soil.cut_face);
+  EXPECT_DOUBLE_EQ(study.machine.soil.stiffness_factor(true), 0.0);
+  EXPECT_DOUBLE_EQ(study.machine.soil.damping_factor(true), 1.0);
 }
 
 TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {

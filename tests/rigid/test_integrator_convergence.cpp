@@ -1,10 +1,10 @@
 // The thesis's fixed-step RK4 against the event-located integrator on the
-// shipped plowing machine (examples/r100_plow_2d.yaml), through the study
+// earlier shipped plowing machine (examples/r100_plow_2d_vertical_path.yaml), through the study
 // runner, so that the compared numbers are the ones `framedyn run` reports.
 // The convergence study behind the tolerances: docs/validation_integration.md
 // (bench/rigid_response_benchmark --part convergence).
 //
-// With the shipped data the blade never backs off in the 0.5 s run (its
+// With that plow the blade never backs off in the 0.5 s run (its
 // rearward velocity stays below the forward speed), so the system integrated
 // is linear with harmonic forcing: RK4 converges at fourth order and its
 // error at 0.0001 s is at the reference's round-off level (1.4e-9 in peak
@@ -28,7 +28,7 @@ namespace {
 
 using namespace framedyn;
 
-std::string shipped_plow() { return std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml"; }
+std::string shipped_plow() { return std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d_vertical_path.yaml"; }
 
 coupling::RigidResults respond(coupling::ResponseRequest::Method method, double rk4_step, double rtol) {
   coupling::RigidStudy study = coupling::read_rigid_study(shipped_plow());

@@ -1,11 +1,14 @@
-// The soil springs' reference: the blade's equilibrium (Eq. 2.37 as printed)
-// or the point where the current cut began (soil.spring_reference: contact).
+// The soil springs' reference: the blade's equilibrium (Eq. 2.37 as printed),
+// the point where the current cut began (soil.spring_reference: contact),
+// that point carried with the soil (soil_line), or the cut face (cut_face:
+// no spring while the blade cuts; from the cut face it left while it backs off).
 #include <gtest/gtest.h>
 
 #include "coupling/rigid_study.h"
 #include "rigid/machine_2d.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace framedyn {
 namespace {
@@ -16,7 +19,7 @@ namespace {
 // they carry nothing, and only the soil's relative velocity (the forward
 // speed through C5) remains. Exact by construction: round-off tolerance.
 TEST(SoilReference, ContactReferenceUnloadsTheSpringsAtTheStartOfACut) {
-  coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d_vertical_path.yaml");
   rigid::Machine2DParameters p = study.machine;
   p.forward_speed = 0.0;
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
@@ -55,7 +58,7 @@ TEST(SoilReference, ContactReferenceUnloadsTheSpringsAtTheStartOfACut) {
 // Z spring nothing on level ground. The contact reading, whose anchor stays
 // put in the machine, carries only the damper's part. Exact: round-off.
 TEST(SoilReference, SoilLineAnchorIsCarriedRearwardWithTheSoilFromTheStartOfTheCut) {
-  coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d_vertical_path.yaml");
   rigid::Machine2DParameters p = study.machine;
   p.ground_slope = 0.0;
   p.forward_speed = 0.05;  // m/s
@@ -89,6 +92,100 @@ TEST(SoilReference, SoilLineAnchorIsCarriedRearwardWithTheSoilFromTheStartOfTheC
   const Eigen::VectorXd expected =
       soil_line.mass_matrix().ldlt().solve(soil_line.model().elongation_map(soil[0]).transpose() * (p.soil.stiffness * p.forward_speed * t));
   EXPECT_LT((a_soil - a_fixed - expected).norm(), 1e-9 * expected.norm());
+}
+
+// soil.spring_reference: cut_face, while the blade cuts: the springs' ground
+// end is at the blade, so the soil force is the damper's alone,
+// C5 (v5 - v_soil), whatever the blade's displacement, and the equations of
+// motion are those of the machine without soil springs. Exact: round-off.
+TEST(SoilReference, CutFaceSpringsCarryNothingWhileTheBladeCuts) {
+  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine;
+  ASSERT_TRUE(p.soil.cut_face);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
+  q(3) = 0.01;  // psi: the blade displaced
+  v(3) = 0.3;   // and moving
+  v(0) = -0.02;
+  rigid::Machine2D cut_face(p);
+  cut_face.reset(0.0, Eigen::VectorXd::Zero(6));  // the cut began at equilibrium: the printed reading would load the spring
+  ASSERT_TRUE(cut_face.cutting());
+  const rigid::Jacobian& j = cut_face.model().points()[static_cast<std::size_t>(cut_face.blade_point())].displacement;
+  const Eigen::Vector3d d = j * q, vel = j * v;
+  ASSERT_GT(d.norm(), 1e-4);
+  const double t = 0.01, vs = p.forward_speed * std::cos(p.ground_slope);
+  const Eigen::Vector2d f = cut_face.plow_force(t, q, v);
+  const Eigen::Vector2d damper(p.soil.damping * (vel(0) - vs), p.soil.damping * (vel(2) + p.forward_speed * std::sin(p.ground_slope)));
+  EXPECT_LT((f - damper).norm(), 1e-12 * damper.norm());
+  const std::vector<int>& soil = cut_face.soil_elements();
+  EXPECT_NEAR(cut_face.element_tension(soil[0], t, q, v), f.x(), 1e-12 * damper.norm());
+  EXPECT_NEAR(cut_face.element_tension(soil[1], t, q, v), f.y(), 1e-12 * damper.norm());
+
+  Eigen::VectorXd a_cut_face, a_no_spring;
+  cut_face.acceleration(t, q, v, a_cut_face);
+  p.soil.stiffness = 0.0;
+  p.soil.cut_face = p.soil.spring_from_contact = p.soil.contact_moves_with_soil = false;
+  rigid::Machine2D no_spring(p);
+  no_spring.reset(0.0, Eigen::VectorXd::Zero(6));
+  no_spring.acceleration(t, q, v, a_no_spring);
+  EXPECT_LT((a_cut_face - a_no_spring).norm(), 1e-12 * a_no_spring.norm());
+}
+
+// cut_face, while the blade backs off (REK > 0 here): the springs REK K5 act
+// from the cut face the blade left, a_b + v_soil (t - t_b), a_b being the
+// blade's displacement at the back-off instant t_b. A blade held at a_b is
+// then pulled forward by REK K5 VS (t - t_b) in X, as the soil streams away.
+TEST(SoilReference, CutFaceSpringsActFromTheCutFaceCarriedWithTheSoilWhileBacking) {
+  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine;
+  p.ground_slope = 0.0;
+  p.soil.stiffness_reduction = 0.5;
+  rigid::Machine2D m(p);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
+  q(3) = 0.01;
+  m.reset(0.0, Eigen::VectorXd::Zero(6));
+  const double tb = 0.03, t = 0.05, vs = p.forward_speed;
+  // The located back-off (event 0 crossing upwards) with the blade at q.
+  const std::string what = m.on_event(tb, q, v, {0}, {+1});
+  ASSERT_NE(what.find("backs off"), std::string::npos) << what;
+  ASSERT_FALSE(m.cutting());
+  const Eigen::Vector2d f = m.plow_force(t, q, v);
+  const double rk = p.soil.stiffness * p.soil.stiffness_reduction, rc = p.soil.damping * p.soil.damping_reduction;
+  const double expected_x = -rk * vs * (t - tb) - rc * vs;  // spring toward the receding cut face, damper against the soil's flow
+  EXPECT_NEAR(f.x(), expected_x, 1e-9 * std::abs(expected_x));
+  EXPECT_NEAR(f.y(), 0.0, 1e-9 * std::abs(expected_x));
+  const std::vector<int>& soil = m.soil_elements();
+  EXPECT_NEAR(m.element_tension(soil[0], t, q, v), f.x(), 1e-9 * std::abs(expected_x));
+}
+
+// With REK = 0 the cut-face springs never act in the response, so K5 drops
+// out of it exactly (the thesis's K5 sweep: 0.2 % and 0.25 %), while the
+// natural frequencies, computed with the blade at rest in the soil (K5 at
+// full value), still depend on it.
+TEST(SoilReference, CutFaceResponseIsIndependentOfK5WhileTheModesAreNot) {
+  coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  study.frame_output.reset();
+  study.response->duration = 0.25;
+  ASSERT_EQ(study.machine.soil.stiffness_reduction, 0.0);
+  std::vector<coupling::RigidResults> runs;
+  for (double scale : {0.5, 1.5}) {
+    coupling::RigidStudy s = study;
+    s.machine.soil.stiffness *= scale;
+    runs.push_back(coupling::run_rigid_study(s));
+  }
+  const rigid::Trajectory &a = runs[0].trajectory, &b = runs[1].trajectory;
+  ASSERT_GT(a.events.size(), 2u);  // the blade does back off and cut again
+  ASSERT_EQ(a.time.size(), b.time.size());
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t i = 0; i < a.time.size(); ++i) {
+    largest = std::max(largest, a.q[i].cwiseAbs().maxCoeff());
+    difference = std::max(difference, (a.q[i] - b.q[i]).cwiseAbs().maxCoeff());
+  }
+  // The two runs' matrices differ only by the round-off of taking K5's share
+  // out of K; that can at most tip one of CVODE's step-size decisions, whose
+  // effect its error control keeps near rtol (1e-8): 100 rtol. An acting
+  // spring would move the blade by tens of percent (the printed reading: 50 %).
+  EXPECT_LE(difference, 100 * study.response->relative_tolerance * largest);
+  std::printf("largest coordinate %.6e, difference between K5 x0.5 and x1.5 %.3e\n", largest, difference);
+  ASSERT_EQ(runs[0].modes.size(), runs[1].modes.size());
+  EXPECT_GT(runs[1].modes.back().frequency_hz, 1.05 * runs[0].modes.back().frequency_hz);
 }
 
 }  // namespace

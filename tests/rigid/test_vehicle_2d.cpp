@@ -61,7 +61,10 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // ---------------------------------------------------------------------------
 // Files
 
-std::string example_file() { return std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml"; }
+// The machine with the earlier plow and the soil law as Eq. 2.37 is printed
+// (the reading these hand formulas write out; the shipped file's cut-face
+// reading has its own tests in tests/rigid/test_soil_reference.cpp).
+std::string example_file() { return std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d_vertical_path.yaml"; }
 
 std::string read_text(const std::string& file) {
   std::ifstream in(file);
