@@ -49,9 +49,10 @@ std::string json_string(const std::string& s) {
 }
 
 // A load point must lie on the frame: inside the mesh's extent, widened on
-// every side by a tenth of its largest dimension. A point outside (a typo in
-// a coordinate, a mesh in other units, the wrong mesh) would otherwise reach
-// the frame through a spider of any length and move the load's moment arm.
+// every side by half its largest dimension (loads at the tire contacts, well
+// below a flat frame, are on it). A point outside (a typo in a coordinate, a
+// mesh in other units, the wrong mesh) would otherwise reach the frame
+// through a spider of any length and move the load's moment arm.
 void check_load_points_on_mesh(const fem::FrameModel& model, const LoadMapping& mapping, const LoadHistory& loads, const FrameStudyRequest& q,
                                const std::string& loads_file) {
   Eigen::Vector3d lo = model.nodes.front().position, hi = lo;
@@ -59,7 +60,7 @@ void check_load_points_on_mesh(const fem::FrameModel& model, const LoadMapping& 
     lo = lo.cwiseMin(n.position);
     hi = hi.cwiseMax(n.position);
   }
-  const double margin = 0.1 * (hi - lo).maxCoeff();
+  const double margin = 0.5 * (hi - lo).maxCoeff();
   const core::UnitSystem& u = q.units;
   const double lf = 1.0 / u.to_si_factor(core::Quantity::length);
   const std::string L = u.label(core::Quantity::length);

@@ -404,7 +404,7 @@ std::vector<Row> rows() {
       loads_row("LOADS-13", "0.002,20", "0.001,20", "0.001,20", "column 1 (time [s])"),
       loads_row("LOADS-14", "0,0,0,0,0,0,0,0,0,0,0,0,0\n0.001,10,0,-300,0,0,0,0,0,50,0,0,0\n0.002,20,0,-310,0,0,0,0,0,40,0,0,0\n", "", "", ""),
       loads_row("LOADS-15", "0.001,10,0,-300,0,0,0,0,0,50,0,0,0\n0.002,20,0,-310,0,0,0,0,0,40,0,0,0\n", "", "", "rows"),
-      loads_row("LOADS-16", "# point P25_FRONT_AXLE_PIN 0 0 0", "# point P25_FRONT_AXLE_PIN 0 0 500", "# point P25", "point P25_FRONT_AXLE_PIN"),
+      loads_row("LOADS-16", "# point P25_FRONT_AXLE_PIN 0 0 0", "# point P25_FRONT_AXLE_PIN 0 0 -500", "# point P25", "point P25_FRONT_AXLE_PIN"),
       loads_row("LOADS-17", "# point P25_FRONT_AXLE_PIN 0 0 0\n# point P28_CAB_MOUNT_FL 20 -15 0\n", "", "time [s]", "point"),
       {"LOADS-18", {{"study.yaml", kFrameStudy}, {"frame.inp", shipped_frame()}, {"loads.csv", kLoads}}, "frame-response study.yaml --loads nothere.csv --out results",
        "nothere.csv", false},
