@@ -477,7 +477,9 @@ int main(int argc, char** argv) {
       std::string name, title;
       rigid::Machine2DParameters p;
     };
-    std::vector<Case> cases = {{"plowing, shipped (6 in/s)", "Shipped machine (forward speed 6 in/s)", shipped}};
+    const double shipped_speed = shipped.forward_speed / kInch;
+    std::vector<Case> cases = {{fmt::format("plowing, study file ({:g} in/s)", shipped_speed),
+                                fmt::format("The study file's machine (forward speed {:g} in/s)", shipped_speed), shipped}};
     for (const auto& [speed, kind] : {std::pair<double, const char*>{switching_speed, "switching"}, {sliding_speed, "sliding"}}) {
       Case c{fmt::format("plowing, {:g} in/s", speed),
              fmt::format("{} variant: the shipped machine at a forward speed of {:g} in/s instead of {:g}", kind, speed, shipped.forward_speed / kInch),
