@@ -6,7 +6,7 @@
 //
 //   quasi_static_vs_fe [OUT_DIR]        (default: quasi_static_vs_fe_results)
 //
-// Runs examples/r100_plow_2d_vertical_path.yaml and examples/r100_chain_2d.yaml (2-D, 1.0 s),
+// Runs examples/r100_plow_2d.yaml and examples/r100_chain_2d.yaml (2-D, 1.0 s),
 // examples/straight_plowing.yaml and examples/chain_pipeline.yaml (3-D with
 // the beam frame: fixed rear end, all modes, mode acceleration, 2 % damping,
 // output at every load time; and the same frame free-free with inertia
@@ -239,7 +239,7 @@ int main(int argc, char** argv) {
   const double duration = 1.0, t0 = 0.3, fs = 18.33;
 
   // ---- 2-D plow (Eq. 2.47) ----
-  c::RigidStudy s2 = c::read_rigid_study(src + "/examples/r100_plow_2d_vertical_path.yaml");
+  c::RigidStudy s2 = c::read_rigid_study(src + "/examples/r100_plow_2d.yaml");
   s2.response->duration = duration;
   const c::RigidResults r2 = c::run_rigid_study(s2);
   const c::StressResultants& sr = *r2.resultants;
