@@ -20,6 +20,10 @@ namespace {
 
 constexpr const char* kFirstLine = "# framedyn load history, version 1";
 constexpr const char* kFormatPrefix = "# framedyn load history, version ";
+// The largest magnitude a coordinate, time or load may have: beyond it a value
+// overflows when converted to SI (1 lbf = 4.45 N) or when written back at 10
+// significant digits (1.7976931348e308 rounds up past the largest double).
+constexpr double kLargest = 1e300;
 
 core::Quantity component_quantity(int c) { return c < 3 ? core::Quantity::force : core::Quantity::moment; }
 
@@ -122,6 +126,8 @@ class Reader {
         double v = 0.0;
         if (!parse_double(w[2 + k], v) || !std::isfinite(v))
           fail(line_no, "point " + p.name, fmt::format("a finite number for coordinate {}", "xyz"[k]), quoted(w[2 + k]));
+        if (!(std::abs(v) <= kLargest))
+          fail(line_no, "point " + p.name, fmt::format("a coordinate {} of magnitude at most 1e300", "xyz"[k]), quoted(w[2 + k]));
         p.location(k) = v * length;
       }
       point_line[p.name] = line_no;
@@ -184,9 +190,17 @@ class Reader {
           fail(line_no, fmt::format("column {} ({})", c + 1, header[c]), "a number", quoted(cells[c]));
         if (!std::isfinite(row[c]))
           fail(line_no, fmt::format("column {} ({})", c + 1, header[c]), "a finite number", quoted(cells[c]));
+        if (!(std::abs(row[c]) <= kLargest))
+          fail(line_no, fmt::format("column {} ({})", c + 1, header[c]), "a number of magnitude at most 1e300", quoted(cells[c]));
       }
       if (!times.empty() && !(row[0] > times.back()))
         fail(line_no, "column 1 (time [s])", fmt::format("a time after {} s (times strictly increasing)", core::format_number(times.back())),
+             quoted(cells[0]));
+      // The file holds 10 significant digits: two times that agree in them would be one time when written back.
+      if (!times.empty() && core::format_number(row[0]) == core::format_number(times.back()))
+        fail(line_no, "column 1 (time [s])",
+             fmt::format("a time that differs from the previous one, {} s, in the first 10 significant digits (the file's precision)",
+                         core::format_number(times.back())),
              quoted(cells[0]));
       times.push_back(row[0]);
       rows.push_back(std::move(row));

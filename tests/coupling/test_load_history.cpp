@@ -173,6 +173,32 @@ TEST(LoadHistoryReader, RejectsNanAndInfinity) {
   EXPECT_NE(e4.find("expected a number, found 'x3'"), std::string::npos) << e4;
 }
 
+// Found by fuzz_load_history_reader: 1e308 lbf is finite but overflows to
+// inf in newtons; 1.7976931348e308 is finite but rounds past the largest
+// double when written back at 10 significant digits.
+TEST(LoadHistoryReader, RejectsMagnitudesThatOverflowInSiOrWhenWritten) {
+  const std::string e = error_of(one_point_file("0,1e308,2,3,4,5,6\n"));
+  EXPECT_NE(e.find("loads.csv:5: column 2 (P24_REEL.FX [lbf])"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected a number of magnitude at most 1e300, found '1e308'"), std::string::npos) << e;
+  const std::string e2 = error_of(one_point_file("-1.7976931348e308,1,2,3,4,5,6\n"));
+  EXPECT_NE(e2.find("loads.csv:5: column 1 (time [s])"), std::string::npos) << e2;
+  const std::string e3 = error_of(
+      "# framedyn load history, version 1\n# units: SI\n# point A 1 1.7976931348e308 3\n"
+      "time [s],A.FX [N],A.FY [N],A.FZ [N],A.MX [N*m],A.MY [N*m],A.MZ [N*m]\n0,1,2,3,4,5,6\n");
+  EXPECT_NE(e3.find("loads.csv:3: point A: expected a coordinate y of magnitude at most 1e300"), std::string::npos) << e3;
+  EXPECT_EQ(error_of(one_point_file("0,1e300,2,3,4,5,-1e300\n")), "");
+}
+
+// Found by fuzz_load_history_reader (the round trip): times that differ only
+// past the 10th significant digit are one time in the written file.
+TEST(LoadHistoryReader, RejectsTimesEqualToTenSignificantDigits) {
+  const std::string e = error_of(one_point_file("1,1,2,3,4,5,6\n1.00000000001,1,2,3,4,5,6\n"));
+  EXPECT_NE(e.find("loads.csv:6: column 1 (time [s])"), std::string::npos) << e;
+  EXPECT_NE(e.find("differs from the previous one, 1 s, in the first 10 significant digits"), std::string::npos) << e;
+  EXPECT_NE(e.find("found '1.00000000001'"), std::string::npos) << e;
+  EXPECT_EQ(error_of(one_point_file("1,1,2,3,4,5,6\n1.000000001,1,2,3,4,5,6\n")), "");
+}
+
 TEST(LoadHistoryReader, RejectsRaggedRows) {
   const std::string e = error_of(one_point_file("0,1,2,3,4,5,6\n0.1,1,2,3,4,5\n"));
   EXPECT_NE(e.find("loads.csv:6"), std::string::npos) << e;
