@@ -252,6 +252,15 @@ long parse_int(const std::string& field, const Location& where, const std::strin
   return v;
 }
 
+// The largest magnitude of an SI value or matrix entry the model may hold:
+// beyond it, assembly's sums of a few entries could overflow to inf.
+constexpr double kLargestSi = 1e300;
+
+template <class Matrix>
+bool within_range(const Matrix& m) {
+  return m.allFinite() && m.cwiseAbs().maxCoeff() <= kLargestSi;
+}
+
 bool is_integer(const std::string& s) {
   if (s.empty()) return false;
   std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
@@ -746,6 +755,13 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   model.units = units;
   model.requested_modes = frequency_count_;
   const double L = units.to_si_factor(Quantity::length);
+  // A value in range in the file's units may not be in SI: 1e308 lbf*s^2/in is 1.75e310 kg.
+  auto si = [&](double value, Quantity q, const InputLocation& where, const std::string& what) {
+    const double x = units.to_si(value, q);
+    if (!(std::abs(x) <= kLargestSi))
+      throw InputError(where, what + " of magnitude at most 1e300 in SI units", fmt::format("{:g} ({:g} in SI units)", value, x));
+    return x;
+  };
   model.nodes.reserve(nodes_.size());
   for (const auto& [id, x] : nodes_) model.nodes.push_back({id, x * L});
   model.index();
@@ -851,6 +867,17 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     } catch (const std::invalid_argument& e) {
       throw InputError(elements_[element_index_[b.id]].where, "a valid beam orientation", fmt::format("element {}: {}", b.id, e.what()));
     }
+    // Each value may be finite and its products not: E = 1e300, a section 1e200 wide, an element 1e-200 long.
+    const BeamGeometry g = beam_geometry(model, b);
+    if (!within_range(g.axes) || !within_range(beam_local_stiffness(g.data)) ||
+        !within_range(beam_local_mass(g.data, MassFormulation::consistent)) || !within_range(beam_local_mass(g.data, MassFormulation::lumped)))
+      throw InputError(elements_[element_index_[b.id]].where,
+                       "element stiffness and mass within the range of floating point (entries of at most 1e300 in SI units)",
+                       fmt::format("element {}: length {:g} m, E {:g} Pa, G {:g} Pa, density {:g} kg/m^3, A {:g} m^2, I11 {:g} m^4, "
+                                   "I22 {:g} m^4, J {:g} m^4 (section of ELSET {})",
+                                   b.id, g.data.length, g.data.youngs_modulus, g.data.shear_modulus, g.data.density, g.data.section.area,
+                                   g.data.section.i11, g.data.section.i22, g.data.section.torsion_constant,
+                                   model.sections[static_cast<std::size_t>(b.section)].element_set));
   }
 
   // Point masses, rotary inertia, springs.
@@ -877,13 +904,15 @@ FrameModel Parser::build(const core::UnitSystem& units) {
       if (!has_property.insert(id).second) throw InputError(p.where, "one property per element", fmt::format("element {} twice", id));
       const int n0 = model.node_index(e.node_ids[0]);
       if (p.keyword == "*MASS") {
-        point_mass_at(n0, id).mass += units.to_si(p.values[0], Quantity::mass);
+        point_mass_at(n0, id).mass += si(p.values[0], Quantity::mass, p.where, "a mass");
       } else if (p.keyword == "*ROTARY INERTIA") {
         const double f = units.to_si_factor(Quantity::rotary_inertia);
         Eigen::Matrix3d j;
         j << p.values[0], p.values[3], p.values[4], p.values[3], p.values[1], p.values[5], p.values[4], p.values[5], p.values[2];
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(j);
         if (es.eigenvalues().minCoeff() < 0) throw InputError(p.where, "a positive semi-definite rotary inertia", "a negative principal value");
+        if (!within_range(Eigen::Matrix3d(j * f)))
+          throw InputError(p.where, "a rotary inertia of magnitude at most 1e300 in SI units", fmt::format("element {}: a larger entry", id));
         point_mass_at(n0, id).rotary_inertia += j * f;
       } else {
         Spring s;
@@ -898,7 +927,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
         } else if (p.dofs.size() != 1) {
           throw InputError(p.where, "one DOF for SPRING1 elements", fmt::format("{}", p.dofs.size()));
         }
-        s.stiffness = units.to_si(p.values[0], s.dof_a < 3 ? Quantity::translational_stiffness : Quantity::rotational_stiffness);
+        s.stiffness = si(p.values[0], s.dof_a < 3 ? Quantity::translational_stiffness : Quantity::rotational_stiffness, p.where, "a spring stiffness");
         model.springs.push_back(s);
       }
     }
@@ -917,10 +946,10 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const RawBoundary& b : boundaries_)
     for (int n : targets(b.target, b.where))
       for (int d = b.first_dof; d <= b.last_dof; ++d)
-        model.constraints.push_back({n, d - 1, units.to_si(b.value, d <= 3 ? Quantity::length : Quantity::angle)});
+        model.constraints.push_back({n, d - 1, si(b.value, d <= 3 ? Quantity::length : Quantity::angle, b.where, "a prescribed displacement")});
   for (const RawLoad& l : loads_)
     for (int n : targets(l.target, l.where))
-      model.loads.push_back({n, l.dof - 1, units.to_si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment)});
+      model.loads.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
   if (model.beams.empty() && model.nodes.empty())
     throw InputError({src_.name, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
   return model;

@@ -1138,6 +1138,14 @@ std::vector<ErrorCase> error_cases() {
       {"FrequencyModesText", kModel + "*STEP\n*FREQUENCY\nten\n*END STEP\n", "ten", "*FREQUENCY", {"the number of eigenvalues (an integer)", "found 'ten'"}},
       {"FrequencyUnknownParameter", kModel + "*STEP\n*FREQUENCY, NORMALIZATION=MASS\n5\n*END STEP\n", "*FREQUENCY, NORMALIZATION=MASS", "*FREQUENCY", {"SOLVER, STORAGE", "found parameter NORMALIZATION"}},
       {"StaticUnknownParameter", kModel + "*STEP\n*STATIC, DIRECT\n*END STEP\n", "*STATIC, DIRECT", "*STATIC", {"one of the parameters SOLVER", "found parameter DIRECT"}},
+      // ---- values finite in the file whose SI values or element matrices are not (found by fuzz_inp_reader)
+      {"SectionWhoseAreaOverflows", frame_with_section(kRectOnFrame + "RECT\n1e200, 1e200\n"), "1, 1, 2", "*ELEMENT", {"expected element stiffness and mass within the range of floating point", "found element 1: length 1 m", "A inf m^2", "(section of ELSET FRAME)"}},
+      {"StiffnessBeyondTheRangeOfDouble", kMesh + kSection + "*MATERIAL, NAME=STEEL\n*ELASTIC\n1e307, 0.3\n", "1, 1, 2", "*ELEMENT", {"entries of at most 1e300 in SI units", "E 1e+307 Pa"}},
+      {"ElementTooShortForItsStiffness", one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=RECT\n0.1, 0.2\n", "1e-110, 0, 0"), "1, 1, 2", "*ELEMENT", {"within the range of floating point", "length 1e-110 m"}},
+      {"MassThatOverflowsInSi", "** units: in-lbf-s\n" + kNodes + kBeams + kSection + kSteel + "*ELEMENT, TYPE=MASS, ELSET=PM\n10, 3\n*MASS, ELSET=PM\n1e307\n", "*MASS, ELSET=PM", "*MASS", {"expected a mass of magnitude at most 1e300 in SI units", "found 1e+307 (inf in SI units)"}},
+      {"SpringThatOverflowsInSi", "** units: in-lbf-s\n" + kNodes + kBeams + kSection + kSteel + "*ELEMENT, TYPE=SPRING1, ELSET=S\n10, 3\n*SPRING, ELSET=S\n1\n1e307\n", "*SPRING, ELSET=S", "*SPRING", {"expected a spring stiffness of magnitude at most 1e300 in SI units"}},
+      {"RotaryInertiaThatOverflowsInSi", "** units: in-lbf-s\n" + kNodes + kBeams + kSection + kSteel + "*ELEMENT, TYPE=ROTARYI, ELSET=RI\n11, 3\n*ROTARY INERTIA, ELSET=RI\n1e308, 1, 1\n", "*ROTARY INERTIA, ELSET=RI", "*ROTARY INERTIA", {"expected a rotary inertia of magnitude at most 1e300 in SI units"}},
+      {"LoadThatOverflowsInSi", "** units: in-lbf-s\n" + kNodes + kBeams + kSection + kSteel + "*STEP\n*STATIC\n*CLOAD\n3, 2, 1e308\n*END STEP\n", "3, 2, 1e308", "*CLOAD", {"expected a load of magnitude at most 1e300 in SI units", "found 1e+308 (inf in SI units)"}},
       // ---- units
       {"MissingUnits", kNodes, "", "units", {"expected a unit system: --units in-lbf-s|m-N-s|mm-N-s, or a line '** units: NAME'", "found neither"}},
       {"ConflictingUnitsOption", kModel, "** units: m-N-s", "** units:", {"expected the unit system given on the command line (in-lbf-s)", "found m-N-s"}, "in-lbf-s"},
