@@ -61,6 +61,12 @@ template <class Machine, class Parameters>
 void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
   try {
     Machine check(p);
+    // Each value is in range (yaml_input.cpp); their products need not be: a 1e200 lbf/in spring 1e200 in from the CG.
+    for (const auto& [name, matrix] : {std::pair<const char*, Eigen::MatrixXd>{"mass", check.mass_matrix()},
+                                       {"stiffness", check.stiffness_matrix()}, {"damping", check.damping_matrix()}})
+      if (!matrix.allFinite())
+        throw core::InputError({file, 0, "machine"}, "masses, stiffnesses, dampings and positions whose products are finite",
+                               fmt::format("a {} matrix with an infinite or undefined entry (values too large?)", name));
     for (const std::string& f : fixed_coordinates)
       if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
   } catch (const std::invalid_argument& e) {

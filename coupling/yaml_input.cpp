@@ -102,13 +102,21 @@ bool parse_number(const YAML::Node& n, double& v) {
   v = std::strtod(s.c_str(), &end);
   return !s.empty() && end == s.c_str() + s.size() && std::isfinite(v);
 }
+
+// The largest magnitude of a value in SI units: 1e308 lbf/in is finite in the
+// file and inf in N/m, and beyond 1e300 the machine's matrices (sums of
+// products of these) could overflow.
+constexpr double kLargestSi = 1e300;
+bool in_range(double si) { return std::abs(si) <= kLargestSi; }
 }  // namespace
 
 double YamlMap::number(const std::string& key, Quantity q) const {
   const YAML::Node n = required(key);
   double v = 0;
   if (!parse_number(n, v)) throw error(key, fmt::format("a finite number ({})", units_->label(q)), describe(n));
-  return units_->to_si(v, q);
+  const double si = units_->to_si(v, q);
+  if (!in_range(si)) throw error(key, fmt::format("a number ({}) of magnitude at most 1e300 in SI units", units_->label(q)), describe(n));
+  return si;
 }
 
 double YamlMap::number_or(const std::string& key, Quantity q, double fallback) const { return has(key) ? number(key, q) : fallback; }
@@ -141,7 +149,11 @@ Eigen::Vector2d YamlMap::point(const std::string& key) const {
   double x = 0, z = 0;
   if (!n.IsSequence() || n.size() != 2 || !parse_number(n[0], x) || !parse_number(n[1], z))
     throw error(key, fmt::format("a point [X, Z] of two numbers ({})", units_->label(Quantity::length)), describe(n));
-  return {units_->to_si(x, Quantity::length), units_->to_si(z, Quantity::length)};
+  const Eigen::Vector2d p(units_->to_si(x, Quantity::length), units_->to_si(z, Quantity::length));
+  if (!in_range(p.x()) || !in_range(p.y()))
+    throw error(key, fmt::format("a point [X, Z] of two numbers ({}) of magnitude at most 1e300 in SI units", units_->label(Quantity::length)),
+                fmt::format("[{}, {}]", n[0].Scalar(), n[1].Scalar()));
+  return p;
 }
 
 std::string YamlMap::text(const std::string& key) const {
@@ -188,7 +200,9 @@ std::vector<double> YamlMap::numbers(const std::string& key, Quantity q) const {
   for (const auto& item : n) {
     double v = 0;
     if (!parse_number(item, v)) throw error(key, "a list of numbers", describe(item));
-    out.push_back(units_->to_si(v, q));
+    const double si = units_->to_si(v, q);
+    if (!in_range(si)) throw error(key, fmt::format("a list of numbers ({}) of magnitude at most 1e300 in SI units", units_->label(q)), describe(item));
+    out.push_back(si);
   }
   return out;
 }

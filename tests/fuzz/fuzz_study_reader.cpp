@@ -7,11 +7,24 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
+#include <Eigen/Cholesky>
+
 #include "core/error.h"
 #include "coupling/rigid_study.h"
+#include "rigid/machine_2d.h"
+
+namespace {
+
+[[noreturn]] void finding(const char* what) {
+  std::fprintf(stderr, "study reader: %s\n", what);
+  std::abort();
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 20000) return -1;
@@ -23,7 +36,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     const framedyn::coupling::RigidStudy study = framedyn::coupling::read_rigid_study(file);
-    (void)study;
+    // What was accepted assembles: finite M, K, C and a positive definite M.
+    const framedyn::rigid::Machine2D machine(study.machine);
+    if (!machine.mass_matrix().allFinite()) finding("accepted a study whose mass matrix is not finite");
+    if (!machine.stiffness_matrix().allFinite()) finding("accepted a study whose stiffness matrix is not finite");
+    if (!machine.damping_matrix().allFinite()) finding("accepted a study whose damping matrix is not finite");
+    if (machine.mass_matrix().llt().info() != Eigen::Success) finding("accepted a study whose mass matrix is not positive definite");
   } catch (const framedyn::core::InputError&) {
     // the expected outcome for bad input
   }

@@ -1413,6 +1413,22 @@ int line_containing(const std::string& text, const std::string& marker) {
   throw std::logic_error("no line contains '" + marker + "'");
 }
 
+// Found by fuzz_study_reader: values each in range whose products are not
+// (a spring of 1e200 lbf/in 1e200 in from the cab) give an infinite stiffness
+// matrix; the reader refuses the machine instead of building it.
+TEST(StudyReader, ValuesWhoseProductsOverflowAreRefused) {
+  const framedyn::testing::TempDir dir("framedyn_test_vehicle_2d");
+  const std::string file = dir.write("overflow.yaml", replace_once(kBaseStudy, "front_mount: {position: [20, 3], stiffness: 1630",
+                                                                   "front_mount: {position: [1e200, 3], stiffness: 1e200")).string();
+  try {
+    coupling::read_rigid_study(file);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "machine");
+    EXPECT_NE(std::string(e.what()).find("a stiffness matrix with an infinite or undefined entry"), std::string::npos) << e.what();
+  }
+}
+
 TEST(StudyReader, BaseStudyOfTheErrorTableReads) {
   const framedyn::testing::TempDir dir("framedyn_test_vehicle_2d");
   const std::string file = dir.write("base.yaml", kBaseStudy).string();
@@ -1451,6 +1467,10 @@ TEST(StudyReader, EveryErrorNamesTheFileTheLineAndTheKeyPath) {
       {"unknown modal soil", {{"  modes: true\n", "  modes: true\n  modal_soil: wet\n"}}, "analysis.modal_soil", "modal_soil: wet"},
       {"unknown soil spring reference", {{"damping_reduction: 0.25}", "damping_reduction: 0.25, spring_reference: furrow}"}}, "soil.spring_reference",
        "spring_reference: furrow"},
+      // Found by fuzz_study_reader: finite in the file's units, beyond the range of double in SI.
+      {"stiffness that overflows in SI", {{"front_mount: {position: [20, 3], stiffness: 1630", "front_mount: {position: [20, 3], stiffness: 1e308"}},
+       "cab.front_mount.stiffness", "front_mount:"},
+      {"point beyond 1e300 m", {{"front_mount: {position: [20, 3]", "front_mount: {position: [1e308, 3]"}}, "cab.front_mount.position", "front_mount:"},
       // A document that does not parse has no key path: the message names the
       // file and yaml-cpp's line.
       {"YAML syntax error", {{"contact: [72, -26]", "contact: [72, -26]]"}}, "", "contact: [72, -26]]"},
