@@ -131,13 +131,13 @@ class Reader {
         p.location(k) = v * length;
       }
       point_line[p.name] = line_no;
+      p.line = line_no;
       h.points.push_back(std::move(p));
     }
     if (h.points.empty())
       fail(static_cast<int>(std::min(i, lines.size()) + 1), "point", "at least one '# point NAME x y z' line",
            i < lines.size() ? quoted(trim(lines[i])) : "the end of the file");
     if (i >= lines.size()) fail(static_cast<int>(i + 1), "header", "the CSV header line 'time [s],...'", "the end of the file");
-      p.line = line_no;
 
     // Header.
     const int header_line = static_cast<int>(i + 1);
