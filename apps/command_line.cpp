@@ -40,7 +40,8 @@ CLI::Validator number_check(const std::string& expected, const std::function<boo
 std::string command_line_message(const CLI::ParseError& error, const CLI::App* command, const std::string& first_argument) {
   const std::string kind = error.get_name(), text = error.what();
   std::string rest;
-  const auto located = [](const std::string& key, const std::string& expected, const std::string& found) {
+  // A std::string, not what()'s pointer into the temporary error (freed at the end of the return).
+  const auto located = [](const std::string& key, const std::string& expected, const std::string& found) -> std::string {
     return core::InputError(command_line(key), expected, found).what();
   };
   if (kind == "RequiredError") {
