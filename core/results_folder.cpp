@@ -14,6 +14,8 @@
 #include <system_error>
 #include <thread>
 
+#include "core/finite_output.h"
+
 namespace framedyn::core {
 
 namespace fs = std::filesystem;
@@ -93,6 +95,7 @@ ResultsFolder::~ResultsFolder() {
 fs::path ResultsFolder::path_of(const std::string& file_name) const { return partial_ / file_name; }
 
 void ResultsFolder::write_text(const std::string& file_name, const std::string& content) const {
+  check_finite_output((target_ / file_name).string(), content);  // no NaN or Inf in any results file
   const fs::path p = path_of(file_name);
   std::ofstream out(p, std::ios::binary);
   out << content;

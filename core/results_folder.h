@@ -26,6 +26,8 @@ class ResultsFolder {
 
   // Path of a file inside the (still partial) folder, for writers that open files themselves.
   std::filesystem::path path_of(const std::string& file_name) const;
+  // Throws NumericalError, writing nothing, if the content holds a NaN or an
+  // infinity (check_finite_output, core/finite_output.h).
   void write_text(const std::string& file_name, const std::string& content) const;
   // Replace the target by the partial folder. Throws std::runtime_error on failure.
   void commit();

@@ -252,7 +252,8 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
   return rigid::calibrate(modes_of, initial, c.targets, options);
 }
 
-rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req) {
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req,
+                                     const std::vector<std::string>& coordinate_names) {
   const int n = machine.size();
   const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n), v0 = Eigen::VectorXd::Zero(n);
   rigid::IntegrationOptions o;
@@ -261,6 +262,7 @@ rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const Respo
   o.relative_tolerance = req.relative_tolerance;
   o.absolute_tolerance = 1e-12;
   o.velocity_scale = 100.0;
+  o.coordinate_names = coordinate_names;
   return req.method == ResponseRequest::Method::event_located ? rigid::integrate_event_located(machine, q0, v0, o)
                                                               : rigid::integrate_rk4(machine, q0, v0, req.rk4_step, o);
 }

@@ -110,11 +110,13 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
 
 // The forced response from rest (q = v = 0 at t = 0), event-located or RK4
 // as requested; response_from_rest resets the machine's discrete state first.
-rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req);
+// The coordinate names (or none) name the state in the integrator's messages.
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req,
+                                     const std::vector<std::string>& coordinate_names = {});
 template <class Machine>
 rigid::Trajectory response_from_rest(Machine& machine, const ResponseRequest& req) {
   machine.reset(0.0, Eigen::VectorXd::Zero(machine.size()));
-  return integrate_response(machine, req);
+  return integrate_response(machine, req, machine.model().coordinate_names());
 }
 
 // The chain force RCH at every sample of a response.

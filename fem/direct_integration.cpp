@@ -5,10 +5,20 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "core/error.h"
 
 namespace framedyn::fem {
+
+namespace {
+// " at node 12, UY" where a factorisation of a free-DOF matrix stopped, or "".
+std::string where_factorisation_stopped(const FrameDynamics& frame, const SparseCholesky& solver) {
+  const int e = solver.failed_equation();
+  if (e < 0 || e >= frame.dofs().free_count()) return "";
+  return " at " + frame.model().describe_dof(frame.dofs().free_dofs[static_cast<std::size_t>(e)]);
+}
+}  // namespace
 
 TransientResult direct_transient(const FrameDynamics& frame, const TransientInput& in, const NewmarkOptions& o) {
   const Eigen::Index nt = in.times.size();
@@ -35,7 +45,10 @@ TransientResult direct_transient(const FrameDynamics& frame, const TransientInpu
   if (o.initial == InitialState::static_equilibrium) u = frame.static_response(f);
   {  // a0 = M^-1 (F0 - C v0 - K u0)
     SparseCholesky mass_solver;
-    if (!mass_solver.factorize(m)) throw core::NumericalError("the mass matrix is not positive definite: cannot start Newmark");
+    if (!mass_solver.factorize(m))
+      throw core::NumericalError(fmt::format(
+          "the mass matrix is not positive definite{}: cannot start Newmark (a massless degree of freedom, or a negative "
+          "density or point mass there?)", where_factorisation_stopped(frame, mass_solver)));
     const Eigen::VectorXd rhs = f - frame.stiffness_times(u);
     mass_solver.solve_in_place(rhs.data(), a.data());
   }
@@ -64,7 +77,10 @@ TransientResult direct_transient(const FrameDynamics& frame, const TransientInpu
       const double cm = 1.0 / (beta * h * h) + gamma / (beta * h) * o.rayleigh_alpha;
       const double ck = 1.0 + gamma / (beta * h) * o.rayleigh_beta;
       const SparseMatrix keff = (ck * k + cm * m).pruned();
-      if (!solver.factorize(keff)) throw core::NumericalError("the effective stiffness of the Newmark step is not positive definite");
+      if (!solver.factorize(keff))
+        throw core::NumericalError(fmt::format(
+            "the effective stiffness of the Newmark step (h = {:g} s) is not positive definite{} (a negative stiffness, "
+            "density or damping there?)", h, where_factorisation_stopped(frame, solver)));
       h_prev = h;
     }
     for (int s = 1; s <= o.substeps; ++s) {

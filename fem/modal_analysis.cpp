@@ -25,6 +25,8 @@ bool factorize(Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Spars
   s.compute(a);
   return s.info() == Eigen::Success;
 }
+int failed_equation(const SparseCholesky& s) { return s.failed_equation(); }
+int failed_equation(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>&) { return -1; }
 void solve_into(const SparseCholesky& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) { s.solve_in_place(b.data(), x.data()); }
 void solve_into(const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>& s, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   x = s.solve(b);
@@ -37,15 +39,23 @@ struct MassFactor {
   Eigen::VectorXi perm;
 };
 
-MassFactor mass_factor(const SparseMatrix& m, const SparseCholesky&) {
+// " at node 12, UY" for equation i, or "" without a describer.
+std::string at_equation(const EigenOptions& o, int i) {
+  if (!o.describe_equation || i < 0) return "";
+  return " at " + o.describe_equation(i);
+}
+
+MassFactor mass_factor(const SparseMatrix& m, const SparseCholesky&, const EigenOptions& o) {
   SparseCholesky chol;
   if (!chol.factorize(m))
-    throw core::NumericalError("the mass matrix is not positive definite (a negative density or point mass?)");
+    throw core::NumericalError(fmt::format(
+        "the mass matrix is not positive definite: the factorisation stopped{} (a negative density or point mass "
+        "there, or a rotation with no rotary inertia?)", at_equation(o, chol.failed_equation())));
   SparseCholesky::ExplicitFactor f = chol.explicit_factor();
   return {std::move(f.lower), std::move(f.perm)};
 }
 
-MassFactor mass_factor(const SparseMatrix& m, const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>&) {
+MassFactor mass_factor(const SparseMatrix& m, const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>&, const EigenOptions&) {
   Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> llt(m);
   if (llt.info() != Eigen::Success)
     throw core::NumericalError("the mass matrix is not positive definite (a negative density or point mass?)");
@@ -110,7 +120,7 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
   std::exception_ptr mass_error;
   std::thread mass_thread([&] {
     try {
-      mass = mass_factor(m, solver);
+      mass = mass_factor(m, solver, o);
     } catch (...) {
       mass_error = std::current_exception();
     }
@@ -120,10 +130,10 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
   mass_thread.join();
   if (mass_error) std::rethrow_exception(mass_error);
   if (!factorized)
-    throw core::NumericalError(
-        "the factorisation of K - sigma M failed: the stiffness matrix is not positive semi-definite "
+    throw core::NumericalError(fmt::format(
+        "the factorisation of K - sigma M failed{}: the stiffness matrix is not positive semi-definite "
         "or the mass matrix is not positive definite (check for a massless degree of freedom, a negative "
-        "stiffness or density)");
+        "stiffness or density)", at_equation(o, failed_equation(solver))));
   using Op = StandardFormOperator<Solver>;
   Op op(solver, mass);
   Spectra::SymEigsSolver<Op> eigs(op, nev, ncv);
@@ -131,10 +141,7 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
   eigs.init();
   const Eigen::Index converged = eigs.compute(Spectra::SortRule::LargestAlge, o.max_iterations, o.tolerance);
   if (eigs.info() != Spectra::CompInfo::Successful)
-    throw core::NumericalError(fmt::format(
-        "the eigensolver did not converge: {} of {} modes after {} restarts; try fewer modes, a shift "
-        "nearer the wanted frequencies (--shift), or check the model for near-duplicate frequencies",
-        converged, nev, eigs.num_iterations()));
+    throw core::NumericalError(non_convergence_message(converged, nev, ncv, n, o));
   EigenSolution s;
   const Eigen::VectorXd nu = eigs.eigenvalues();
   const Eigen::MatrixXd y = eigs.eigenvectors();
@@ -156,6 +163,16 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
 }
 
 }  // namespace
+
+std::string non_convergence_message(long converged, long wanted, long subspace, long equations, const EigenOptions& o) {
+  return fmt::format(
+      "the eigensolver did not converge: {} of {} modes reached the tolerance {:g} within the limit of {} restarts of "
+      "the Lanczos iteration (subspace of {} vectors, {} equations). Try: ask for a few more modes than you need (the "
+      "subspace grows with them, and the wanted modes converge faster), a shift nearer the wanted frequencies "
+      "(framedyn modes --shift HZ; now {:g} Hz below zero), or fewer modes; near-duplicate frequencies (a symmetric "
+      "frame) and a mesh with elements of very different stiffness slow the iteration",
+      converged, wanted, o.tolerance, o.max_iterations, subspace, equations, std::sqrt(-o.shift) / kTwoPi);
+}
 
 EigenSolution lowest_eigenpairs(const SparseMatrix& k, const SparseMatrix& m, const EigenOptions& o) {
   if (!(o.shift < 0.0)) throw std::invalid_argument("the shift must be negative");
@@ -218,6 +235,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   eo.shift = -std::pow(kTwoPi * options.shift_hz, 2);
   eo.factorization = options.factorization;
   eo.progress = options.progress;
+  eo.describe_equation = [&](int e) { return model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(e)]); };
   EigenSolution es = lowest_eigenpairs(sys.stiffness, sys.mass, eo);
   if (options.progress) options.progress("participation factors and effective masses");
 

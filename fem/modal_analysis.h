@@ -31,6 +31,9 @@ struct EigenOptions {
   int subspace = 0;        // Lanczos basis size (ncv); 0 picks one from `count`
   Factorization factorization = Factorization::cholmod;
   std::function<void(const std::string&)> progress;  // optional stage messages
+  // Optional: names equation i of K and M ("node 12, UY"), for the messages
+  // of a failed factorisation.
+  std::function<std::string(int)> describe_equation;
 };
 
 struct EigenSolution {
@@ -42,8 +45,12 @@ struct EigenSolution {
 
 // Lowest eigenpairs of (K, M) given as lower triangles. Throws NumericalError
 // when the factorisation fails (K - sigma M not positive definite) or the
-// iteration does not converge.
+// iteration does not converge (non_convergence_message).
 EigenSolution lowest_eigenpairs(const SparseMatrix& stiffness, const SparseMatrix& mass, const EigenOptions& options);
+
+// What lowest_eigenpairs says when the Lanczos iteration stops before all
+// `wanted` modes have converged: how far it got and what to try.
+std::string non_convergence_message(long converged, long wanted, long subspace, long equations, const EigenOptions& options);
 
 struct ModalOptions {
   int mode_count = 10;

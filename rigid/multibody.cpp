@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -96,16 +98,60 @@ Eigen::VectorXd Multibody::generalized_force(int point, const Eigen::Vector3d& f
   return points_.at(static_cast<std::size_t>(point)).displacement.transpose() * force;
 }
 
+namespace {
+
+// The bodies that take part in the motion q = phi, each with what it lacks:
+// "cab (translating, mass 0 kg)", for the message of a singular mass matrix.
+std::string bodies_in_motion(const Multibody& model, const Eigen::VectorXd& phi) {
+  std::string out;
+  for (const Body& b : model.bodies()) {
+    const Eigen::Vector3d u = b.translation * phi, w = b.rotation * phi;
+    const bool translates = u.norm() > 1e-6, rotates = w.norm() > 1e-6;
+    if (!translates && !rotates) continue;
+    std::string what;
+    if (translates) what += fmt::format("translating, mass {:g} kg", b.mass);
+    if (rotates) {
+      const Eigen::Vector3d axis = w.normalized();
+      what += fmt::format("{}rotating, moment of inertia {:g} kg m^2 about its axis of rotation", translates ? "; " : "",
+                          axis.dot(b.inertia * axis));
+    }
+    out += fmt::format("{}{} ({})", out.empty() ? "" : ", ", b.name, what);
+  }
+  return out;
+}
+
+}  // namespace
+
 void check_definiteness(const Multibody& model) {
+  // Each body first, so that a wrong input names its body.
+  for (const Body& b : model.bodies()) {
+    if (!std::isfinite(b.mass) || b.mass < 0.0)
+      throw core::NumericalError(fmt::format(
+          "the mass matrix is not positive definite: body {} has mass {} kg; a mass must be finite and not negative", b.name, b.mass));
+    if (!b.inertia.allFinite())
+      throw core::NumericalError(fmt::format("the mass matrix is not positive definite: body {} has a non-finite inertia tensor", b.name));
+    const Eigen::Matrix3d inertia = 0.5 * (b.inertia + b.inertia.transpose());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> ei(inertia);
+    const double scale = std::max(1e-300, inertia.cwiseAbs().maxCoeff());
+    if (ei.eigenvalues().minCoeff() < -1e-12 * scale)
+      throw core::NumericalError(fmt::format(
+          "the mass matrix is not positive definite: body {} has an inertia tensor that is not positive semi-definite "
+          "(principal moments {:g}, {:g}, {:g} kg m^2; check the signs of its moments and products of inertia)",
+          b.name, ei.eigenvalues()(0), ei.eigenvalues()(1), ei.eigenvalues()(2)));
+  }
   const Eigen::MatrixXd m = model.mass_matrix();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(m);
   const double scale = std::max(1e-300, m.diagonal().cwiseAbs().maxCoeff());
   if (em.eigenvalues().minCoeff() <= 1e-12 * scale) {
+    const Eigen::VectorXd phi = em.eigenvectors().col(0);
     Eigen::Index worst = 0;
-    em.eigenvectors().col(0).cwiseAbs().maxCoeff(&worst);
+    phi.cwiseAbs().maxCoeff(&worst);
+    const std::string bodies = bodies_in_motion(model, phi / phi.cwiseAbs().maxCoeff());
     throw core::NumericalError(fmt::format(
-        "the mass matrix is not positive definite: coordinate {} has (almost) no inertia; give the bodies that move "
-        "with it a mass and inertia, or remove the coordinate", model.coordinate_names()[static_cast<std::size_t>(worst)]));
+        "the mass matrix is not positive definite: coordinate {} has (almost) no inertia; {}. Give the bodies that "
+        "move with it a mass and inertia, or remove the coordinate",
+        model.coordinate_names()[static_cast<std::size_t>(worst)],
+        bodies.empty() ? "no body moves with it" : "the bodies that move with it: " + bodies));
   }
   for (const SpringDamper& e : model.elements())
     if (e.stiffness < 0.0 || e.damping < 0.0)

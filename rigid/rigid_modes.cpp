@@ -28,9 +28,24 @@ std::vector<RigidMode> rigid_modes(const Eigen::MatrixXd& m, const Eigen::Matrix
       kf(a, b) = k(free[static_cast<std::size_t>(a)], free[static_cast<std::size_t>(b)]);
     }
   Eigen::LLT<Eigen::MatrixXd> llt(mf);
-  if (llt.info() != Eigen::Success) throw core::NumericalError("the mass matrix of the free coordinates is not positive definite");
+  if (llt.info() != Eigen::Success || !mf.allFinite()) {
+    // Name the coordinate that leads the motion without inertia.
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(mf.allFinite() ? mf : Eigen::MatrixXd::Identity(nf, nf));
+    Eigen::Index worst = 0;
+    em.eigenvectors().col(0).cwiseAbs().maxCoeff(&worst);
+    throw core::NumericalError(fmt::format(
+        "the mass matrix of the free coordinates is not positive definite{}: a motion led by coordinate {} has no "
+        "inertia (smallest eigenvalue of M {:g}); give the bodies that move with it a mass and inertia, or fix the coordinate",
+        mf.allFinite() ? "" : " (it holds a NaN or an infinity)", names[static_cast<std::size_t>(free[static_cast<std::size_t>(worst)])],
+        mf.allFinite() ? em.eigenvalues()(0) : std::nan("")));
+  }
+  if (!kf.allFinite()) throw core::NumericalError("the stiffness matrix of the vehicle holds a NaN or an infinity: check the spring rates");
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(kf, mf);
-  if (es.info() != Eigen::Success) throw core::NumericalError("the eigenvalue solver for the vehicle modes did not converge");
+  if (es.info() != Eigen::Success)
+    throw core::NumericalError(
+        "the eigenvalue solver for the vehicle modes did not converge (Eigen's QR iteration on the dense problem); "
+        "this happens only with extreme values: check the masses and spring rates for values many orders of magnitude "
+        "apart, or fix coordinates that do not matter");
   std::vector<RigidMode> modes;
   for (int i = 0; i < nf; ++i) {
     RigidMode mode;

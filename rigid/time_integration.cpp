@@ -63,7 +63,28 @@ int first_non_finite(const double* x, int n) {
   return -1;
 }
 
-void check_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const char* integrator) {
+// "z_frame (coordinate 1)" with names, "coordinate 1" without.
+std::string coordinate_label(const std::vector<std::string>& names, int i) {
+  if (i >= 0 && static_cast<std::size_t>(i) < names.size()) return fmt::format("{} (coordinate {})", names[static_cast<std::size_t>(i)], i);
+  return fmt::format("coordinate {}", i);
+}
+
+// The state coordinate by coordinate: "q: x 0.001, z -2e-05; v: x 0.1, z 0.3"
+// (m or rad, m/s or rad/s), for the messages of failures.
+std::string state_text(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<std::string>& names) {
+  auto list = [&](const Eigen::VectorXd& x) {
+    std::string out;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const std::size_t k = static_cast<std::size_t>(i);
+      out += fmt::format("{}{} {:.6g}", i ? ", " : "", k < names.size() ? names[k] : fmt::format("[{}]", i), x[i]);
+    }
+    return out;
+  };
+  return fmt::format("q: {}; v: {}", list(q), list(v));
+}
+
+void check_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const char* integrator,
+                 const std::vector<std::string>& names) {
   const int n = static_cast<int>(q.size());
   const int iq = first_non_finite(q.data(), n);
   const int iv = first_non_finite(v.data(), n);
@@ -71,26 +92,43 @@ void check_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, c
   const bool in_q = iq >= 0;
   const int i = in_q ? iq : iv;
   throw core::NumericalError(fmt::format(
-      "{}: the state became {} at t = {:.12g} s: {} of coordinate {} = {}. The motion is unbounded or the model "
-      "produced a NaN: check its stiffness, damping and forces near this time{}",
-      integrator, std::isnan(in_q ? q[i] : v[i]) ? "NaN" : "infinite", t, in_q ? "q" : "v", i, in_q ? q[i] : v[i],
-      std::string(integrator) == "RK4" ? ", or reduce the step (RK4 is unstable for h omega_max > 2.8)" : ""));
+      "{}: the state became {} at t = {:.12g} s: {} of {} = {}. The motion is unbounded or the model "
+      "produced a NaN: check its stiffness, damping and forces near this time{}. The state there: {}",
+      integrator, std::isnan(in_q ? q[i] : v[i]) ? "NaN" : "infinite", t, in_q ? "q" : "v", coordinate_label(names, i),
+      in_q ? q[i] : v[i], std::string(integrator) == "RK4" ? ", or reduce the step (RK4 is unstable for h omega_max > 2.8)" : "",
+      state_text(q, v, names)));
 }
 
-core::NumericalError bad_acceleration(double t, const Eigen::VectorXd& a, int i, const char* integrator) {
+core::NumericalError bad_acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
+                                      int i, const char* integrator, const std::vector<std::string>& names) {
+  // A state beyond sqrt(DBL_MAX) ~ 1.3e154 overflows in the products of the
+  // model's forces (stiffness times displacement, Jacobians times forces):
+  // the acceleration is then NaN or Inf because the motion is unbounded.
+  Eigen::Index iq = 0, iv = 0;
+  const double size_q = q.size() ? q.cwiseAbs().maxCoeff(&iq) : 0.0, size_v = v.size() ? v.cwiseAbs().maxCoeff(&iv) : 0.0;
+  if (std::max(size_q, size_v) > 1e150) {
+    const bool in_q = size_q >= size_v;
+    return core::NumericalError(fmt::format(
+        "{}: the motion is unbounded: by t = {:.12g} s the state has grown to {} of {} = {:.3g}, and the acceleration "
+        "of {} overflowed to {}. Check the model's stability, stiffness and forces{}. The state there: {}",
+        integrator, t, in_q ? "q" : "v", coordinate_label(names, static_cast<int>(in_q ? iq : iv)), in_q ? q[iq] : v[iv],
+        coordinate_label(names, i), std::isnan(a[i]) ? "NaN" : "infinity",
+        std::string(integrator) == "RK4" ? ", or reduce the step (RK4 is unstable for h omega_max > 2.8)" : "",
+        state_text(q, v, names)));
+  }
   return core::NumericalError(fmt::format(
-      "{}: the system's acceleration of coordinate {} is {} at t = {:.12g} s with a finite state; the model produced "
-      "a NaN or Inf (a zero mass, a division by zero, an input curve evaluated outside its range?)",
-      integrator, i, std::isnan(a[i]) ? "NaN" : "infinite", t));
+      "{}: the system's acceleration of {} is {} at t = {:.12g} s with a finite state; the model produced "
+      "a NaN or Inf (a zero mass, a division by zero, an input curve evaluated outside its range?). The state there: {}",
+      integrator, coordinate_label(names, i), std::isnan(a[i]) ? "NaN" : "infinite", t, state_text(q, v, names)));
 }
 
 void evaluate_acceleration(const SwitchedSystem& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           Eigen::VectorXd& a, const char* integrator) {
+                           Eigen::VectorXd& a, const char* integrator, const std::vector<std::string>& names) {
   system.acceleration(t, q, v, a);
   if (a.size() != q.size())
     throw std::logic_error(fmt::format("SwitchedSystem::acceleration returned {} entries for {} coordinates", a.size(), q.size()));
   const int i = first_non_finite(a.data(), static_cast<int>(a.size()));
-  if (i >= 0) throw bad_acceleration(t, a, i, integrator);
+  if (i >= 0) throw bad_acceleration(t, q, v, a, i, integrator, names);
 }
 
 double next_change_after(const SwitchedSystem& system, double t) {
@@ -109,9 +147,9 @@ std::string event_description(std::string what, const std::vector<int>& fired, c
 }
 
 void record_sample(const SwitchedSystem& system, Trajectory& out, double t, const Eigen::VectorXd& q,
-                   const Eigen::VectorXd& v, const char* integrator) {
+                   const Eigen::VectorXd& v, const char* integrator, const std::vector<std::string>& names) {
   Eigen::VectorXd a = Eigen::VectorXd::Zero(q.size());
-  evaluate_acceleration(system, t, q, v, a, integrator);
+  evaluate_acceleration(system, t, q, v, a, integrator, names);
   out.time.push_back(t);
   out.q.push_back(q);
   out.v.push_back(v);
@@ -127,6 +165,7 @@ constexpr const char* kCvode = "CVODE";
 // stores what it caught and returns a failure; the driver rethrows it.
 struct CvodeCallbackData {
   SwitchedSystem* system = nullptr;
+  const std::vector<std::string>* names = nullptr;  // the coordinates', for messages
   int n = 0;
   Eigen::VectorXd q, v, a;      // work space
   long rhs_calls = 0;
@@ -145,7 +184,7 @@ int cvode_rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
     d.q = Eigen::Map<const Eigen::VectorXd>(yd, d.n);
     d.v = Eigen::Map<const Eigen::VectorXd>(yd + d.n, d.n);
     ++d.rhs_calls;
-    evaluate_acceleration(*d.system, t, d.q, d.v, d.a, kCvode);
+    evaluate_acceleration(*d.system, t, d.q, d.v, d.a, kCvode, *d.names);
     Eigen::Map<Eigen::VectorXd>(fd, d.n) = d.v;
     Eigen::Map<Eigen::VectorXd>(fd + d.n, d.n) = d.a;
     return 0;
@@ -226,7 +265,8 @@ class CvodeSession {
 };
 
 // A CVODE failure in human words: when, which condition, what to try.
-core::NumericalError cvode_failure(int flag, double t, const CvodeCallbackData& d, const IntegrationOptions& o) {
+core::NumericalError cvode_failure(int flag, double t, const Eigen::VectorXd& y, const CvodeCallbackData& d,
+                                   const IntegrationOptions& o) {
   std::string condition, advice;
   switch (flag) {
     case CV_TOO_MUCH_WORK:
@@ -270,16 +310,19 @@ core::NumericalError cvode_failure(int flag, double t, const CvodeCallbackData& 
       condition = fmt::format("CVODE returned {}", CVodeGetReturnFlagName(flag));
       advice = "check the model and the integration options";
   }
-  return core::NumericalError(fmt::format("CVODE could not continue at t = {:.12g} s: {}. Try: {}.{}", t, condition, advice,
-                                          d.last_message.empty() ? "" : " (CVODE says: " + d.last_message + ")"));
+  return core::NumericalError(fmt::format("CVODE could not continue at t = {:.12g} s: {}. Try: {}.{} The state there: {}", t,
+                                          condition, advice,
+                                          d.last_message.empty() ? "" : " (CVODE says: " + d.last_message + ")",
+                                          state_text(y.head(d.n), y.tail(d.n), o.coordinate_names)));
 }
 
-core::NumericalError too_much_work(double t, long steps, const IntegrationOptions& o) {
+core::NumericalError too_much_work(double t, const Eigen::VectorXd& y, long steps, const IntegrationOptions& o) {
+  const Eigen::Index n = y.size() / 2;
   return core::NumericalError(fmt::format(
       "CVODE: too much work: {} steps taken by t = {:.12g} s, more than max_steps = {} allowed for the run to {} s. "
       "Try: raise max_steps, or look for a very fast or stiff component (method = bdf if it is strongly damped), a "
-      "singularity, or events firing repeatedly (chattering between two discrete states)",
-      steps, t, o.max_steps, o.end_time));
+      "singularity, or events firing repeatedly (chattering between two discrete states). The state there: {}",
+      steps, t, o.max_steps, o.end_time, state_text(y.head(n), y.tail(n), o.coordinate_names)));
 }
 
 }  // namespace internal
@@ -296,7 +339,10 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
   const double t0 = options.start_time, t_end = options.end_time;
 
   Trajectory out;
-  check_state(t0, q0, v0, kCvode);
+  if (!options.coordinate_names.empty() && static_cast<int>(options.coordinate_names.size()) != n)
+    throw std::invalid_argument(fmt::format("{} coordinate names for {} coordinates", options.coordinate_names.size(), n));
+  const std::vector<std::string>& names = options.coordinate_names;
+  check_state(t0, q0, v0, kCvode, names);
   const std::vector<double> times = output_times(options);
   out.time.reserve(times.size());
   out.q.reserve(times.size());
@@ -310,6 +356,7 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
 
   CvodeCallbackData data;
   data.system = &system;
+  data.names = &names;
   data.n = n;
   data.q.resize(n);
   data.v.resize(n);
@@ -341,7 +388,7 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
   std::vector<int> roots_found(static_cast<std::size_t>(std::max(m, 1)));
 
   std::size_t next = 0;  // the next output sample
-  record_sample(system, out, times[next++], q, v, kCvode);
+  record_sample(system, out, times[next++], q, v, kCvode, names);
 
   auto rethrow_pending = [&] {
     if (data.pending) std::rethrow_exception(std::exchange(data.pending, nullptr));
@@ -369,23 +416,23 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
       // restart is sized by CVODE against the distance to the next stop.
       flag = CVode(mem, stop, s.y(), &t_reached, CV_ONE_STEP);
       rethrow_pending();
-      if (flag < 0) throw cvode_failure(flag, t_reached, data, options);
+      if (flag < 0) throw cvode_failure(flag, t_reached, y, data, options);
       CVodeGetNumSteps(mem, &steps_now);
       if (steps_before_restart + steps_now > options.max_steps)
-        throw too_much_work(t_reached, steps_before_restart + steps_now, options);
+        throw too_much_work(t_reached, y, steps_before_restart + steps_now, options);
       unpack(y);
-      check_state(t_reached, q, v, kCvode);
+      check_state(t_reached, q, v, kCvode, names);
       // Samples strictly before t_reached from CVODE's dense output (the
       // interpolating polynomial of the current order, accurate to the
       // tolerance like the steps themselves).
       while (next < times.size() && times[next] < t_reached) {
         const int ok = CVodeGetDky(mem, times[next], 0, dense_vector);
-        if (ok < 0) throw cvode_failure(ok, times[next], data, options);
-        record_sample(system, out, times[next], dense.head(n), dense.tail(n), kCvode);
+        if (ok < 0) throw cvode_failure(ok, times[next], y, data, options);
+        record_sample(system, out, times[next], dense.head(n), dense.tail(n), kCvode, names);
         ++next;
       }
     } else {
-      while (next < times.size() && times[next] < t_reached) record_sample(system, out, times[next++], q, v, kCvode);
+      while (next < times.size() && times[next] < t_reached) record_sample(system, out, times[next++], q, v, kCvode, names);
     }
     t = t_reached;
 
@@ -408,7 +455,7 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
       restart = true;
     }
     // Samples exactly at t report the state after any change made there.
-    while (next < times.size() && times[next] <= t) record_sample(system, out, times[next++], q, v, kCvode);
+    while (next < times.size() && times[next] <= t) record_sample(system, out, times[next++], q, v, kCvode, names);
     if (t >= t_end) break;
     if (restart) {
       steps_before_restart += steps_now;
@@ -448,11 +495,14 @@ Trajectory integrate_rk4(SwitchedSystem& system, const Eigen::VectorXd& q0, cons
         t0, t_end, total_steps, step, options.max_steps, t0 + static_cast<double>(options.max_steps) * step));
 
   Trajectory out;
-  check_state(t0, q0, v0, kRk4);
+  if (!options.coordinate_names.empty() && static_cast<int>(options.coordinate_names.size()) != n)
+    throw std::invalid_argument(fmt::format("{} coordinate names for {} coordinates", options.coordinate_names.size(), n));
+  const std::vector<std::string>& names = options.coordinate_names;
+  check_state(t0, q0, v0, kRk4, names);
   const std::vector<double> times = output_times(options);
   std::size_t next = 0;
   Eigen::VectorXd q = q0, v = v0;
-  record_sample(system, out, times[next++], q, v, kRk4);
+  record_sample(system, out, times[next++], q, v, kRk4, names);
 
   Eigen::VectorXd g_before(m), g_after(m);
   if (m > 0) system.events(t0, q, v, g_before.data());
@@ -468,21 +518,21 @@ Trajectory integrate_rk4(SwitchedSystem& system, const Eigen::VectorXd& q0, cons
     const double tb = (short_last && i == total_steps) ? t_end : t0 + static_cast<double>(i) * step;
     const double h = tb - ta;
     // Classical RK4 on y = [q; v], y' = [v; a]: the q-stages are the v-stages.
-    evaluate_acceleration(system, ta, q, v, a1, kRk4);
+    evaluate_acceleration(system, ta, q, v, a1, kRk4, names);
     q_stage = q + 0.5 * h * v;
     v2 = v + 0.5 * h * a1;
-    evaluate_acceleration(system, ta + 0.5 * h, q_stage, v2, a2, kRk4);
+    evaluate_acceleration(system, ta + 0.5 * h, q_stage, v2, a2, kRk4, names);
     q_stage = q + 0.5 * h * v2;
     v3 = v + 0.5 * h * a2;
-    evaluate_acceleration(system, ta + 0.5 * h, q_stage, v3, a3, kRk4);
+    evaluate_acceleration(system, ta + 0.5 * h, q_stage, v3, a3, kRk4, names);
     q_stage = q + h * v3;
     v4 = v + h * a3;
-    evaluate_acceleration(system, tb, q_stage, v4, a4, kRk4);
+    evaluate_acceleration(system, tb, q_stage, v4, a4, kRk4, names);
     q += (h / 6.0) * (v + 2.0 * v2 + 2.0 * v3 + v4);
     v += (h / 6.0) * (a1 + 2.0 * a2 + 2.0 * a3 + a4);
     ++out.steps;
     out.rhs_evaluations += 4;
-    check_state(tb, q, v, kRk4);
+    check_state(tb, q, v, kRk4, names);
 
     // Events at the step end only (no location inside the step).
     if (m > 0) {
@@ -517,7 +567,7 @@ Trajectory integrate_rk4(SwitchedSystem& system, const Eigen::VectorXd& q0, cons
     if (changed && m > 0) system.events(tb, q, v, g_before.data());
 
     if (i % per_output == 0 || i == total_steps) {
-      while (next < times.size() && times[next] <= tb + 1e-9 * step) record_sample(system, out, times[next++], q, v, kRk4);
+      while (next < times.size() && times[next] <= tb + 1e-9 * step) record_sample(system, out, times[next++], q, v, kRk4, names);
     }
   }
   return out;

@@ -64,6 +64,10 @@ struct IntegrationOptions {
   int max_steps = 1000000;               // internal steps over the whole run (both integrators)
   MultistepMethod method = MultistepMethod::adams_moulton;
   double velocity_scale = 1.0;           // 1/s, see absolute_tolerance
+  // Names of the coordinates (size() of them, or none), for the messages of
+  // numerical failures: the state at the failure is given coordinate by
+  // coordinate. Without names the coordinates are called by their index.
+  std::vector<std::string> coordinate_names;
 };
 
 struct Trajectory {
@@ -91,8 +95,8 @@ struct Trajectory {
 // step after each restart included). The Newton matrix is built by
 // difference quotients (the interface has no Jacobian).
 // Throws core::NumericalError if CVODE fails (at what time, which condition,
-// what to try), if max_steps is exceeded, or if a state or acceleration
-// becomes NaN/Inf (time and coordinate index).
+// what to try, and the state there), if max_steps is exceeded, or if a state
+// or acceleration becomes NaN/Inf (time and coordinate).
 Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
                                    const IntegrationOptions& options);
 

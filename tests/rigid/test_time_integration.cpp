@@ -772,6 +772,57 @@ TEST(ErrorPaths, CvodeFailureAtASingularityNamesTheTimeAndTheCondition) {
   }
 }
 
+// With coordinate names the messages name the coordinate and give the state
+// there coordinate by coordinate: CVODE's last accepted state, which shows the
+// blow-up (the exact v = 1 / (1 - t) exceeds 1000 after t = 0.999 s, and the
+// failure is within 1e-3 s of t = 1 s, see the test above).
+TEST(ErrorPaths, CvodeFailureGivesTheStateByCoordinateName) {
+  FiniteTimeBlowUp system;
+  IntegrationOptions o;
+  o.end_time = 2.0;
+  o.coordinate_names = {"x_plow"};
+  try {
+    integrate_event_located(system, vec1(0.0), vec1(1.0), o);
+    ADD_FAILURE() << "no NumericalError";
+  } catch (const NumericalError& e) {
+    const std::string message = e.what();
+    std::printf("%s\n", message.c_str());
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(message, match, std::regex(R"(The state there: q: x_plow ([-+0-9.eE]+); v: x_plow ([-+0-9.eE]+))")));
+    const double q = std::stod(match[1]), v = std::stod(match[2]);
+    EXPECT_GT(q, 0.0);
+    EXPECT_GT(v, 1000.0);
+  }
+}
+
+TEST(ErrorPaths, NanAccelerationNamesTheCoordinateWhenNamesAreGiven) {
+  Eigen::VectorXd q0(2), v0 = Eigen::VectorXd::Zero(2);
+  q0 << 0.01, 0.02;
+  IntegrationOptions o;
+  o.end_time = 0.2;
+  o.coordinate_names = {"z_frame", "theta_frame"};
+  for (int integrator = 0; integrator < 2; ++integrator) {
+    NanAfter system(0.05);
+    try {
+      if (integrator == 0)
+        integrate_event_located(system, q0, v0, o);
+      else
+        integrate_rk4(system, q0, v0, 1e-3, o);
+      ADD_FAILURE() << "no NumericalError";
+    } catch (const NumericalError& e) {
+      const std::string message = e.what();
+      std::printf("%s\n", message.c_str());
+      EXPECT_NE(message.find("acceleration of theta_frame (coordinate 1) is NaN"), std::string::npos);
+      EXPECT_NE(message.find("The state there: q: z_frame "), std::string::npos);
+      EXPECT_NE(message.find("; v: z_frame "), std::string::npos);
+    }
+  }
+  o.coordinate_names = {"z_frame"};
+  NanAfter system(0.05);
+  EXPECT_THROW(integrate_event_located(system, q0, v0, o), std::invalid_argument);
+  EXPECT_THROW(integrate_rk4(system, q0, v0, 1e-3, o), std::invalid_argument);
+}
+
 TEST(ErrorPaths, Rk4StepThatDoesNotDivideTheOutputIntervalIsRejected) {
   LinearSystem system(scalar(1.0), scalar(0.0), scalar(400.0));
   IntegrationOptions o;
