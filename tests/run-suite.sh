@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The whole test suite, built twice from the top of a clone (README, .ci/run):
+#   build/       Release, the build users run; every test, the short fuzz runs included;
+#   build-asan/  RelWithDebInfo with AddressSanitizer and UndefinedBehaviorSanitizer
+#                (-DFRAMEDYN_SANITIZE=address,undefined): every test again, where any
+#                report (memory error, leak, undefined behaviour) stops the program and
+#                fails its test. The fuzz harnesses, sanitized already, do not run again.
+# Stops at the first failure. Two cores (-j2), as in CI.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+echo "== Release build and tests (build/)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j2
+ctest --test-dir build --output-on-failure -j2
+
+echo "== Sanitized build and tests: AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRAMEDYN_SANITIZE=address,undefined
+cmake --build build-asan -j2
+ctest --test-dir build-asan --output-on-failure -j2
