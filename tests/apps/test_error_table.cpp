@@ -298,6 +298,8 @@ std::vector<Row> rows() {
       mesh_row("INP-38", "*ELASTIC\n2.1e11, 0.3\n", "", "*MATERIAL", "*MATERIAL"),
       mesh_row("INP-39", "** units: m-N-s", "** units: m-N-s", "** units:", "** units:", "static frame.inp --units in-lbf-s --out results -q"),
       {"INP-40", {}, "static nothere.inp --out results -q", "nothere.inp", false},
+      // numbers within the file's range whose element matrices overflow (found by reading the reader against its fuzz harness)
+      mesh_row("INP-41", "0.05, 0.1\n", "1e200, 1e200\n", "1, 1, 2", "*ELEMENT"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {
@@ -378,6 +380,7 @@ std::vector<Row> rows() {
       frame_row("STUDY-55", "modes: 4", "modes: 100000", "", "frame.modes"),
       frame_row("STUDY-56", "damping: {modal_ratio: 0.02}", "damping: {rayleigh: {alpha: -1, beta: 0}}", "damping:", "frame.damping.rayleigh.alpha"),
       frame_row("STUDY-57", "model: frame_transient", "model: rigid_2d", "model:", "model"),
+      study_row("STUDY-58", "soil: {stiffness: 40000,", "soil: {stiffness: 1e308,", "soil: {stiffness: 1e308", "soil.stiffness"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
@@ -408,6 +411,7 @@ std::vector<Row> rows() {
       loads_row("LOADS-17", "# point P25_FRONT_AXLE_PIN 0 0 0\n# point P28_CAB_MOUNT_FL 20 -15 0\n", "", "time [s]", "point"),
       {"LOADS-18", {{"study.yaml", kFrameStudy}, {"frame.inp", shipped_frame()}, {"loads.csv", kLoads}}, "frame-response study.yaml --loads nothere.csv --out results",
        "nothere.csv", false},
+      loads_row("LOADS-19", "0.001,10,0,-300", "0.001,10,0,-1e308", "0.001,10,0,-1e308", "column 4 (P25_FRONT_AXLE_PIN.FZ [lbf])"),
   };
   for (Row row : loads) {
     if (row.id == "LOADS-14") row.where = "loads.csv:" + std::to_string(line_of(row.files[2].second, "time [s]") + 1);
