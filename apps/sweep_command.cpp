@@ -71,7 +71,12 @@ std::optional<double> spread(const coupling::SweepResult& s, const Figure& f) {
   return (hi - lo) / *ref;
 }
 
-nlohmann::ordered_json optional_value(const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr); }
+// A figure a run does not give (no plow; no shaker cycle; a blade that never
+// backs off) is left out of the summary, not written as null: a null in a
+// results file means a NaN or an infinity (core/finite_output.h) and stops the run.
+void set_if(nlohmann::ordered_json& j, const std::string& key, const std::optional<double>& v) {
+  if (v) j[key] = *v;
+}
 
 std::vector<std::string> write_figures(const coupling::RigidStudy& study, const coupling::SweepResult& s, const std::vector<double>& x,
                                        const std::string& x_unit, const core::ResultsFolder& folder) {
@@ -178,14 +183,14 @@ int run_sweep(const SweepOptions& opt) {
       const std::optional<double>& v = p.*f.member;
       if (v) csv.add(u.from_si(*v, f.quantity));
       else csv.add(std::string());
-      jr[f.key] = {{"value", v ? nlohmann::ordered_json(u.from_si(*v, f.quantity)) : nlohmann::ordered_json(nullptr)}, {"unit", u.label(f.quantity)}};
+      if (v) jr[f.key] = {{"value", u.from_si(*v, f.quantity)}, {"unit", u.label(f.quantity)}};
     }
     nlohmann::ordered_json change;
     for (const Figure& f : figures()) {
       const std::optional<double> c = coupling::relative_change(p.*f.member, s.reference.*f.member);
       if (c) csv.add(100.0 * *c);
       else csv.add(std::string());
-      change[f.key] = optional_value(c);
+      set_if(change, f.key, c);
     }
     jr["relative_change"] = change;
     for (std::size_t m = 0; m < modes; ++m) {
@@ -217,13 +222,13 @@ int run_sweep(const SweepOptions& opt) {
   ref["in_values"] = s.reference_index >= 0;
   for (const Figure& f : figures()) {
     const std::optional<double>& v = s.reference.*f.member;
-    ref[f.key] = {{"value", v ? nlohmann::ordered_json(u.from_si(*v, f.quantity)) : nlohmann::ordered_json(nullptr)}, {"unit", u.label(f.quantity)}};
+    if (v) ref[f.key] = {{"value", u.from_si(*v, f.quantity)}, {"unit", u.label(f.quantity)}};
   }
   ref["frequencies_hz"] = s.reference.frequencies_hz;
   sw["reference"] = ref;
   sw["runs"] = runs;
   nlohmann::ordered_json sp;
-  for (const Figure& f : figures()) sp[f.key] = optional_value(spread(s, f));
+  for (const Figure& f : figures()) set_if(sp, f.key, spread(s, f));
   sw["relative_spread"] = sp;
   sw["figures"] = pngs;
   j["sweep"] = sw;
