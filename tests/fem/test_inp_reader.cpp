@@ -1010,7 +1010,10 @@ std::vector<ErrorCase> error_cases() {
       {"GenerateNegativeIncrement", kModel + "*ELSET, ELSET=G, GENERATE\n1, 2, -1\n", "1, 2, -1", "*ELSET", {"a positive increment"}},
       {"GenerateOneField", kModel + "*NSET, NSET=G, GENERATE\n1\n", "1", "*NSET", {"expected first, last[, increment] with GENERATE", "found '1'"}},
       {"GenerateFourFields", kModel + "*NSET, NSET=G, GENERATE\n1, 3, 1, 1\n", "1, 3, 1, 1", "*NSET", {"first, last[, increment] with GENERATE"}},
-      {"GenerateHugeRange", kModel + "*NSET, NSET=G, GENERATE\n1, 2000000000\n", "1, 2000000000", "*NSET", {"a range of at most 5e7 members"}},
+      {"GenerateHugeRange", kModel + "*NSET, NSET=G, GENERATE\n1, 2000000000\n", "1, 2000000000", "*NSET", {"a range of at most 1e7 members"}},
+      // fuzz_inp_reader's timeout: a large range named again and again doubles the set with every line.
+      {"SetNamingItselfGrowsPastTheLimit", kModel + "*NSET, NSET=G, GENERATE\n1, 4000000\n*NSET, NSET=H\nG, G\nG, G, G\n", "G, G, G", "*NSET",
+       {"a set of at most 1e7 members (node *NSET H)", "20000000 members by this line"}},
       {"GenerateText", kModel + "*NSET, NSET=G, GENERATE\n1, x\n", "1, x", "*NSET", {"last number (an integer)", "found 'x'"}},
       {"GenerateIncrementDecimal", kModel + "*NSET, NSET=G, GENERATE\n1, 3, 0.5\n", "1, 3, 0.5", "*NSET", {"increment (an integer)"}},
       // ---- *BEAM SECTION
