@@ -501,9 +501,12 @@ void Parser::set(const Block& b, bool nodes) {
     }
     // Sets that name sets can double with every line (found by fuzz_inp_reader: a 4e7-member
     // range named twice per line took minutes); a 1e6-DOF frame has fewer than 2e5 nodes.
-    if (members.size() + (nodes ? nsets_ : elsets_)[name].size() > static_cast<std::size_t>(kMaxSetMembers))
+    const auto& sets = nodes ? nsets_ : elsets_;
+    const auto earlier = sets.find(name);  // find, not []: an empty entry would let the set name itself
+    const std::size_t count = members.size() + (earlier == sets.end() ? 0 : earlier->second.size());
+    if (count > static_cast<std::size_t>(kMaxSetMembers))
       throw InputError(at(l, b.keyword), fmt::format("a set of at most 1e7 members ({} *{} {})", nodes ? "node" : "element", pname, name),
-                       fmt::format("{} members by this line", members.size() + (nodes ? nsets_ : elsets_)[name].size()));
+                       fmt::format("{} members by this line", count));
   }
   std::vector<int>& target = (nodes ? nsets_ : elsets_)[name];
   target.insert(target.end(), members.begin(), members.end());

@@ -1012,6 +1012,8 @@ std::vector<ErrorCase> error_cases() {
       {"GenerateFourFields", kModel + "*NSET, NSET=G, GENERATE\n1, 3, 1, 1\n", "1, 3, 1, 1", "*NSET", {"first, last[, increment] with GENERATE"}},
       {"GenerateHugeRange", kModel + "*NSET, NSET=G, GENERATE\n1, 2000000000\n", "1, 2000000000", "*NSET", {"a range of at most 1e7 members"}},
       // fuzz_inp_reader's timeout: a large range named again and again doubles the set with every line.
+      // fuzz_inp_reader: a set naming itself in its own definition (the size check must not create it early).
+      {"SetNamingItselfInItsOwnDefinition", kModel + "*NSET, NSET=S\n1\n2, S\n", "2, S", "*NSET", {"a node number or a defined *NSET", "'S'"}},
       {"SetNamingItselfGrowsPastTheLimit", kModel + "*NSET, NSET=G, GENERATE\n1, 4000000\n*NSET, NSET=H\nG, G\nG, G, G\n", "G, G, G", "*NSET",
        {"a set of at most 1e7 members (node *NSET H)", "20000000 members by this line"}},
       {"GenerateText", kModel + "*NSET, NSET=G, GENERATE\n1, x\n", "1, x", "*NSET", {"last number (an integer)", "found 'x'"}},
