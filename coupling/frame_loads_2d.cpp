@@ -24,6 +24,12 @@ struct Loads {
 
 }  // namespace
 
+const std::vector<std::string>& part_load_names_2d() {
+  static const std::vector<std::string> names = {"front_tire", "rear_tire",        "cab_mount_front",  "cab_mount_rear", "cab_x_tie",
+                                                 "plow_upper_pivot", "plow_lower_pivot", "lift_cylinder", "boom_soil",      "chain"};
+  return names;
+}
+
 std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const rigid::Trajectory& tr) {
   const rigid::Machine2DParameters& p = machine.parameters();
   const rigid::Multibody& mb = machine.model();

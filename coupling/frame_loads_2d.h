@@ -28,6 +28,11 @@ struct FrameLoad2D {
   std::vector<double> moment;          // N m, about +Y
 };
 
+// The names of the loads frame_loads_2d gives for the machine's own parts
+// (tires, cab mounts and tie, plow pins and cylinder, chain boom). An added
+// mass's load carries the mass's name, so it may not take one of these.
+const std::vector<std::string>& part_load_names_2d();
+
 std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const rigid::Trajectory& trajectory);
 
 // The distributed inertia of the uniform section in front of `x_cut`, as a

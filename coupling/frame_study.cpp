@@ -84,6 +84,11 @@ void check_load_points_on_mesh(const fem::FrameModel& model, const LoadMapping& 
 
 }  // namespace
 
+core::InputLocation FrameStudyRequest::where(const std::string& key) const {
+  const auto at = key_locations.find(key);
+  return at != key_locations.end() ? at->second : core::InputLocation{file, 0, "frame." + key};
+}
+
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir) {
   f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "pvd",
                 "direct_substeps"});
@@ -105,6 +110,9 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   else if (supports == "free_free_inertia_relief") r.supports = FrameSupports::free_free_inertia_relief;
   else throw f.error("supports", "fixed_rear_end or free_free_inertia_relief", quoted(supports));
   r.support_set = f.text_or("support_set", "REAR_END");
+  for (const char* key : {"supports", "support_set", "modes", "loads"}) r.key_locations[key] = f.location(f.has(key) ? key : "");
+  // location("") names the block; a defaulted key is still reported under its own path.
+  for (auto& [key, at] : r.key_locations) at.key = f.path() + "." + key;
   if (f.has("modes")) {
     const YAML::Node n = f.node()["modes"];
     if (n.IsScalar() && n.Scalar() == "all") r.modes = -1;
@@ -190,16 +198,16 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   if (q.supports == FrameSupports::fixed_rear_end) {
     const auto set = model.node_sets.find(q.support_set);
     if (set == model.node_sets.end() || set->second.empty())
-      throw core::InputError({q.file, 0, "frame.support_set"}, "a node set of the mesh " + q.mesh.string(), quoted(q.support_set));
+      throw core::InputError(q.where("support_set"), "a node set of the mesh " + q.mesh.string(), quoted(q.support_set));
     for (int node : set->second)
       for (int d = 0; d < fem::kDofsPerNode; ++d) model.constraints.push_back({node, d, 0.0});
   } else if (!model.constraints.empty()) {
-    throw core::InputError({q.file, 0, "frame.supports"}, "a mesh without *BOUNDARY for free_free_inertia_relief",
+    throw core::InputError(q.where("supports"), "a mesh without *BOUNDARY for free_free_inertia_relief",
                            fmt::format("{} constrained DOFs in {}", model.constraints.size(), q.mesh.string()));
   }
   if (given) out.loads = *given;
   else if (q.loads) out.loads = read_load_history(*q.loads);
-  else throw core::InputError({q.file, 0, "frame.loads"}, "a load-history file", "no 'loads' key and no loads from a rigid-body run");
+  else throw core::InputError(q.where("loads"), "a load-history file", "no 'loads' key and no loads from a rigid-body run");
   // Where the loads came from, for messages: the load-history file, or this study's own run.
   const std::string loads_file = !given && q.loads ? q.loads->string() : q.file;
   if (out.loads.times.size() < 2)
@@ -221,7 +229,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     const int wanted = q.method == FrameMethod::direct ? std::min(20, frame.dofs().free_count() - 7) : q.modes;
     mo.mode_count = wanted + (free_free ? 6 : 0);
     if (mo.mode_count >= frame.dofs().free_count())
-      throw core::InputError({q.file, 0, "frame.modes"}, fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - (free_free ? 6 : 0)),
+      throw core::InputError(q.where("modes"), fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - (free_free ? 6 : 0)),
                              std::to_string(q.modes));
     basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, mo));
   }

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,13 @@ struct FrameStudyRequest {
   bool pvd = false;
   int direct_substeps = 4;                   // Newmark steps per load-history interval
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
+  // Where the keys checked only once the mesh and loads are read (supports,
+  // support_set, modes, loads) were given, so those messages name a line:
+  // the key's own line, or the block's when the key was left to its default.
+  std::map<std::string, core::InputLocation> key_locations;
+  // The location of a key of the frame block: from key_locations, else (a
+  // request built in code) the study file and "frame.KEY" without a line.
+  core::InputLocation where(const std::string& key) const;
 };
 
 // The `frame:` map of a study; throws core::InputError with file, line and key path.

@@ -221,7 +221,9 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   const YamlMap frame = root.map("frame");
   frame.allow_only({"reference", "parts", "reel_and_carrier", "rear_axle"});
   if (frame.has("reference")) p.frame.reference = read_point3(frame, "reference");
-  for (const YamlMap& a : frame.list_of_maps("parts")) {
+  const std::vector<YamlMap> parts = frame.list_of_maps("parts");
+  distinct_names(parts, "frame part");
+  for (const YamlMap& a : parts) {
     a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products"});
     p.frame.parts.push_back(part(a, a.text("name")));
   }
@@ -248,7 +250,9 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   const YamlMap cab = root.map("cab");
   cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts"});
   p.cab.body = part(cab, "cab");
-  for (const YamlMap& m : cab.list_of_maps("mounts")) {
+  const std::vector<YamlMap> mounts = cab.list_of_maps("mounts");
+  distinct_names(mounts, "cab mount");
+  for (const YamlMap& m : mounts) {
     m.allow_only({"name", "position", "x", "y", "z"});
     rigid::CabMount3D mount;
     mount.name = m.text("name");

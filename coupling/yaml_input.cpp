@@ -162,6 +162,25 @@ std::string YamlMap::text(const std::string& key) const {
   return n.Scalar();
 }
 
+std::vector<std::string> distinct_names(const std::vector<YamlMap>& items, const std::string& what, const std::vector<std::string>& reserved) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string name = items[i].text("name");
+    for (const std::string& r : reserved)
+      if (name == r) {
+        std::string list;
+        for (const std::string& n : reserved) list += (list.empty() ? "" : ", ") + n;
+        throw items[i].error("name", "a name other than those of the machine's own frame loads (" + list + ")", "'" + name + "'");
+      }
+    for (std::size_t k = 0; k < i; ++k)
+      if (names[k] == name)
+        throw items[i].error("name", "a name no other " + what + " has", fmt::format("'{}', also the name of {} (line {})", name, items[k].path(),
+                                                                                      items[k].location("name").line));
+    names.push_back(name);
+  }
+  return names;
+}
+
 std::string YamlMap::text_or(const std::string& key, const std::string& fallback) const { return has(key) ? text(key) : fallback; }
 
 int YamlMap::integer(const std::string& key) const {

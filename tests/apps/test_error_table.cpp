@@ -376,11 +376,17 @@ std::vector<Row> rows() {
       frame_row("STUDY-51", "method: mode_displacement", "method: direct", "damping:", "frame.damping"),
       frame_row("STUDY-52", "output_interval: 0.001", "output_interval: 0", "output_interval:", "frame.output_interval"),
       frame_row("STUDY-53", "stations: 3", "stations: 1", "stations:", "frame.stations"),
-      frame_row("STUDY-54", "supports: fixed_rear_end", "supports: fixed_rear_end\n  support_set: BACK", "", "frame.support_set"),
-      frame_row("STUDY-55", "modes: 4", "modes: 100000", "", "frame.modes"),
+      frame_row("STUDY-54", "supports: fixed_rear_end", "supports: fixed_rear_end\n  support_set: BACK", "support_set: BACK", "frame.support_set"),
+      frame_row("STUDY-55", "modes: 4", "modes: 100000", "modes: 100000", "frame.modes"),
       frame_row("STUDY-56", "damping: {modal_ratio: 0.02}", "damping: {rayleigh: {alpha: -1, beta: 0}}", "damping:", "frame.damping.rayleigh.alpha"),
       frame_row("STUDY-57", "model: frame_transient", "model: rigid_2d", "model:", "model"),
       study_row("STUDY-58", "soil: {stiffness: 40000,", "soil: {stiffness: 1e308,", "soil: {stiffness: 1e308", "soil.stiffness"),
+      // names that label frame loads and sweep parameters
+      study_row("STUDY-59", "{name: rear_axle,", "{name: engine,", "{name: engine, weight: 900", "frame.added_masses[1].name"),
+      study_row("STUDY-60", "{name: rear_axle,", "{name: front_tire,", "{name: front_tire,", "frame.added_masses[1].name"),
+      study_row("STUDY-61", "{name: RR,", "{name: RL,", "{name: RL, position: [52, 15", "cab.mounts[3].name", kStudy3D),
+      study_row("STUDY-62", "{name: engine, weight: 850, position: [40, 0, 14]", "{name: frame_structure, weight: 850, position: [40, 0, 14]",
+                "{name: frame_structure, weight: 850", "frame.parts[1].name", kStudy3D),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

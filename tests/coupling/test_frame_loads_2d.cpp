@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "coupling/frame_loads_2d.h"
 #include "coupling/rigid_study.h"
@@ -17,9 +19,9 @@ struct PlowRun {
   rigid::Trajectory trajectory;
 };
 
-PlowRun plowing(double duration) {
+PlowRun plowing(double duration, const std::string& example = "r100_plow_2d.yaml") {
   PlowRun r;
-  r.study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  r.study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/" + example);
   r.machine = std::make_unique<rigid::Machine2D>(r.study.machine);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r.machine->size());
   r.machine->reset(0.0, zero);
@@ -51,6 +53,24 @@ TEST(FrameLoads2D, FrameFreeBodyBalancesAtEveryInstant) {
     EXPECT_NEAR(sr.srz[i][0], 0.0, 1e-9 * scale) << "t = " << r.trajectory.time[i];
     EXPECT_NEAR(sr.srmy[i][0], 0.0, 1e-9 * scale * 5.0) << "t = " << r.trajectory.time[i];  // moment arms up to ~5 m
   }
+}
+
+// The study reader refuses an added mass named like one of the machine's own
+// loads (its inertia would be summed into that load at the wrong point), by
+// the list part_load_names_2d. That list must be exactly the loads the plow
+// and chain machines give besides their added masses.
+TEST(FrameLoads2D, PartLoadNamesAreTheLoadsOfThePlowAndChainMachines) {
+  std::set<std::string> given;
+  for (const char* example : {"r100_plow_2d.yaml", "r100_chain_2d.yaml"}) {
+    const PlowRun r = plowing(0.01, example);
+    std::set<std::string> added;
+    for (const rigid::AddedMass& a : r.study.machine.frame.added_masses) added.insert(a.name);
+    ASSERT_FALSE(added.empty()) << example;
+    for (const coupling::FrameLoad2D& l : coupling::frame_loads_2d(*r.machine, r.trajectory))
+      if (!added.count(l.name)) given.insert(l.name);
+  }
+  const std::vector<std::string>& listed = coupling::part_load_names_2d();
+  EXPECT_EQ(given, std::set<std::string>(listed.begin(), listed.end()));
 }
 
 // In front of the frame's front end there is nothing to cut: all resultants zero.
