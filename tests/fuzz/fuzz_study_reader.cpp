@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -28,12 +27,18 @@ namespace {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 20000) return -1;
-  // The reader takes a file: write the input to one per process.
-  static const std::string file = "/tmp/framedyn-fuzz-study-" + std::to_string(::getpid()) + ".yaml";
-  {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  // The reader takes a file: write the input to one per process, unlinked as
+  // soon as it is made (read back through /proc/self/fd), so that no run,
+  // however it ends, leaves a file behind.
+  static const int fd = [] {
+    char name[] = "/tmp/framedyn-fuzz-study-XXXXXX";
+    const int d = ::mkstemp(name);
+    if (d < 0) finding("cannot create the harness's temporary file");
+    ::unlink(name);
+    return d;
+  }();
+  static const std::string file = "/proc/self/fd/" + std::to_string(fd);
+  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) finding("cannot write the harness's temporary file");
   try {
     const framedyn::coupling::RigidStudy study = framedyn::coupling::read_rigid_study(file);
     // What was accepted assembles: finite M, K, C and a positive definite M.
