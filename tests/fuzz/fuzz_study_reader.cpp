@@ -1,8 +1,12 @@
-// libFuzzer harness for the YAML study reader (coupling/rigid_study.h). Any
-// input must either read into a study whose machine assembles to finite,
-// definite M, K, C, or be refused with core::InputError naming file, line and
-// key path. Anything else — a crash, a sanitizer report, another exception —
-// is a finding. Seeds: examples/**/*.yaml.
+// libFuzzer harness for the YAML study readers: the 2-D and 3-D rigid-body
+// studies (coupling/rigid_study.h, rigid_study_3d.h) and the frame transient
+// study (coupling/frame_study.h), which share coupling/yaml_input. The input
+// goes to the reader of the `model` it names (a reader refuses another
+// model at `model` before it reads any other key). Any input must either read
+// into a study whose machine assembles to finite M, K, C with a positive
+// definite M (rigid-body studies), or be refused with core::InputError naming
+// file, line and key path. Anything else — a crash, a sanitizer report,
+// another exception — is a finding. Seeds: examples/**/*.yaml.
 #include <unistd.h>
 
 #include <cstdint>
@@ -13,21 +17,37 @@
 #include <Eigen/Cholesky>
 
 #include "core/error.h"
+#include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
+#include "coupling/rigid_study_3d.h"
 #include "rigid/machine_2d.h"
+#include "rigid/machine_3d.h"
 
 namespace {
+
+namespace fc = framedyn::coupling;
 
 [[noreturn]] void finding(const char* what) {
   std::fprintf(stderr, "study reader: %s\n", what);
   std::abort();
 }
 
+// What a rigid-body reader accepted assembles: finite M, K, C and a positive definite M.
+template <class Machine>
+void check_machine(const Machine& machine) {
+  if (!machine.mass_matrix().allFinite()) finding("accepted a study whose mass matrix is not finite");
+  if (!machine.stiffness_matrix().allFinite()) finding("accepted a study whose stiffness matrix is not finite");
+  if (!machine.damping_matrix().allFinite()) finding("accepted a study whose damping matrix is not finite");
+  if (machine.mass_matrix().llt().info() != Eigen::Success) finding("accepted a study whose mass matrix is not positive definite");
+}
+
+bool refused_at_model(const framedyn::core::InputError& e) { return e.where().key == "model"; }
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 20000) return -1;
-  // The reader takes a file: write the input to one per process, unlinked as
+  // The readers take a file: write the input to one per process, unlinked as
   // soon as it is made (read back through /proc/self/fd), so that no run,
   // however it ends, leaves a file behind.
   static const int fd = [] {
@@ -40,13 +60,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const std::string file = "/proc/self/fd/" + std::to_string(fd);
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) finding("cannot write the harness's temporary file");
   try {
-    const framedyn::coupling::RigidStudy study = framedyn::coupling::read_rigid_study(file);
-    // What was accepted assembles: finite M, K, C and a positive definite M.
-    const framedyn::rigid::Machine2D machine(study.machine);
-    if (!machine.mass_matrix().allFinite()) finding("accepted a study whose mass matrix is not finite");
-    if (!machine.stiffness_matrix().allFinite()) finding("accepted a study whose stiffness matrix is not finite");
-    if (!machine.damping_matrix().allFinite()) finding("accepted a study whose damping matrix is not finite");
-    if (machine.mass_matrix().llt().info() != Eigen::Success) finding("accepted a study whose mass matrix is not positive definite");
+    try {
+      check_machine(framedyn::rigid::Machine2D(fc::read_rigid_study(file).machine));
+      return 0;
+    } catch (const framedyn::core::InputError& e) {
+      if (!refused_at_model(e)) throw;
+    }
+    try {
+      check_machine(framedyn::rigid::Machine3D(fc::read_rigid_study_3d(file).machine));
+      return 0;
+    } catch (const framedyn::core::InputError& e) {
+      if (!refused_at_model(e)) throw;
+    }
+    (void)fc::read_frame_study(file);
   } catch (const framedyn::core::InputError&) {
     // the expected outcome for bad input
   }
