@@ -71,6 +71,13 @@ void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed
       if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
   } catch (const std::invalid_argument& e) {
     throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
+  } catch (const core::NumericalError& e) {
+    // The machine's own check (rigid/multibody check_definiteness) names the
+    // body or coordinate; at read time that is the study's fault, not the run's
+    // (found by fuzz_study_reader: a part 1.5e111 in above the frame leaves Y
+    // with no inertia to 12 digits of the matrix's scale).
+    throw core::InputError({file, 0, "machine"}, "a machine with a positive definite mass matrix and springs and dampers that are not negative",
+                           e.what());
   }
 }
 
