@@ -2,7 +2,8 @@
 # Builds framedyn's libFuzzer harnesses with clang (ASan + UBSan) and runs each
 # for a while, starting from the seed corpora (the shipped meshes and studies
 # and tests/fuzz/seeds). Exits non-zero on the first finding and names the
-# input that reproduces it.
+# input that reproduces it. Each harness runs with its dictionary
+# (tests/fuzz/dictionaries/).
 #
 #   tests/fuzz/run_fuzzers.sh build  SOURCE_DIR BUILD_DIR
 #   tests/fuzz/run_fuzzers.sh run    SOURCE_DIR BUILD_DIR SECONDS HARNESS
@@ -27,13 +28,17 @@ case "$what" in
     corpus="$build_dir/corpus/$harness"
     mkdir -p "$corpus" "$build_dir/findings"
     case "$harness" in
-      fuzz_inp_reader)   cp "$source_dir"/meshes/*.inp "$source_dir"/tests/fuzz/seeds/inp/*.inp "$corpus"/ ;;
-      fuzz_study_reader) find "$source_dir/examples" -name '*.yaml' -exec cp {} "$corpus"/ \; ;;
-      fuzz_load_history_reader) cp "$source_dir"/tests/fuzz/seeds/loads/*.csv "$corpus"/ ;;
+      fuzz_inp_reader)   cp "$source_dir"/meshes/*.inp "$source_dir"/tests/fuzz/seeds/inp/*.inp "$corpus"/; dict=inp ;;
+      fuzz_study_reader) find "$source_dir/examples" -name '*.yaml' -exec cp {} "$corpus"/ \;
+                         cp "$source_dir"/tests/fuzz/seeds/study/*.yaml "$corpus"/; dict=study ;;
+      fuzz_load_history_reader) cp "$source_dir"/tests/fuzz/seeds/loads/*.csv "$corpus"/; dict=load_history ;;
       *) echo "run_fuzzers: unknown harness '$harness'" >&2; exit 2 ;;
     esac
-    # -timeout: an input that takes 10 s is a hang, a finding too.
-    "$build_dir/tests/fuzz/$harness" "$corpus" -max_total_time="$seconds" -max_len=20000 -timeout=10 \
+    # -timeout: an input that takes 10 s is a hang, a finding too. -dict: the
+    # reader's keywords and keys, and numbers at the edges of double's range,
+    # which byte mutations alone rarely write (tests/fuzz/dictionaries/).
+    "$build_dir/tests/fuzz/$harness" "$corpus" -dict="$source_dir/tests/fuzz/dictionaries/$dict.dict" \
+      -max_total_time="$seconds" -max_len=20000 -timeout=10 \
       -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build_dir/findings/$harness-" 2>"$build_dir/$harness.log" || {
       tail -n 60 "$build_dir/$harness.log" >&2
       echo "run_fuzzers: $harness found a fault; reproducer in $build_dir/findings/" >&2
