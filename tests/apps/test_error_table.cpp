@@ -418,6 +418,7 @@ std::vector<Row> rows() {
       {"LOADS-18", {{"study.yaml", kFrameStudy}, {"frame.inp", shipped_frame()}, {"loads.csv", kLoads}}, "frame-response study.yaml --loads nothere.csv --out results",
        "nothere.csv", false},
       loads_row("LOADS-19", "0.001,10,0,-300", "0.001,10,0,-1e308", "0.001,10,0,-1e308", "column 4 (P25_FRONT_AXLE_PIN.FZ [lbf])"),
+      loads_row("LOADS-20", "0.001,10,0,-300", "0.001,10,0,-8e299", "0.001,10,0,-8e299", "column 4 (P25_FRONT_AXLE_PIN.FZ [lbf])"),
   };
   for (Row row : loads) {
     if (row.id == "LOADS-14") row.where = "loads.csv:" + std::to_string(line_of(row.files[2].second, "time [s]") + 1);

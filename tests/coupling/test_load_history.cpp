@@ -186,7 +186,24 @@ TEST(LoadHistoryReader, RejectsMagnitudesThatOverflowInSiOrWhenWritten) {
       "# framedyn load history, version 1\n# units: SI\n# point A 1 1.7976931348e308 3\n"
       "time [s],A.FX [N],A.FY [N],A.FZ [N],A.MX [N*m],A.MY [N*m],A.MZ [N*m]\n0,1,2,3,4,5,6\n");
   EXPECT_NE(e3.find("loads.csv:3: point A: expected a coordinate y of magnitude at most 1e300"), std::string::npos) << e3;
-  EXPECT_EQ(error_of(one_point_file("0,1e300,2,3,4,5,-1e300\n")), "");
+  EXPECT_EQ(error_of(one_point_file("0,2e299,2,3,4,5,-1e300\n")), "");  // 8.9e299 N, 1.1e299 N m
+}
+
+// Found by fuzz_load_history_reader with its dictionary (the round trip): a
+// load within 1e300 in the file's units but not in SI (8e299 lbf is 3.6e300
+// N) was accepted, and the same history written in SI was then refused. The
+// limit holds in both; what is accepted writes back in SI and reads again.
+TEST(LoadHistoryReader, RejectsMagnitudesBeyondTheLimitInSiAndWhatIsAcceptedRoundTrips) {
+  const std::string e = error_of(one_point_file("0,1,2,-8e299,4,5,6\n"));  // -8e299 lbf x 4.44822 N/lbf
+  EXPECT_NE(e.find("loads.csv:5: column 4 (P24_REEL.FZ [lbf]): expected a number of magnitude at most 1e300 in SI units, found '-8e299' (-3.55858e+300 N in SI units)"),
+            std::string::npos)
+      << e;
+  const LoadHistory h = parse_load_history(one_point_file("0,1,2,-2.2e299,4,5,9e299\n"), "loads.csv");  // -9.8e299 N, 1.0e299 N m
+  const std::string written = framedyn::coupling::format_load_history(h, UnitSystem::si());
+  const LoadHistory again = parse_load_history(written, "again.csv");
+  ASSERT_EQ(again.points.size(), 1u);
+  EXPECT_NEAR(again.points[0].values(0, 2), h.points[0].values(0, 2), 1e-9 * std::abs(h.points[0].values(0, 2)));
+  EXPECT_NEAR(again.points[0].values(0, 5), h.points[0].values(0, 5), 1e-9 * std::abs(h.points[0].values(0, 5)));
 }
 
 // Found by fuzz_load_history_reader (the round trip): times that differ only
