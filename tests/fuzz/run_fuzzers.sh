@@ -7,6 +7,13 @@
 #
 #   tests/fuzz/run_fuzzers.sh build  SOURCE_DIR BUILD_DIR
 #   tests/fuzz/run_fuzzers.sh run    SOURCE_DIR BUILD_DIR SECONDS HARNESS
+#   tests/fuzz/run_fuzzers.sh coverage SOURCE_DIR COVERAGE_BUILD_DIR HARNESS CORPUS
+#
+# `coverage` builds HARNESS with clang's source-based coverage in a build
+# directory of its own, replays CORPUS (a run's BUILD_DIR/corpus/HARNESS) and
+# prints the line and branch coverage of the reader's own sources, and writes
+# their uncovered lines to COVERAGE_BUILD_DIR/HARNESS-uncovered.txt: where
+# the fuzzer has not been, to judge whether a campaign has seen the reader.
 #
 # HARNESS: fuzz_inp_reader | fuzz_study_reader | fuzz_load_history_reader. A finding is kept in
 # BUILD_DIR/findings/; rerun it with `BUILD_DIR/tests/fuzz/HARNESS FILE`.
@@ -47,5 +54,29 @@ case "$what" in
     grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|Done)" "$build_dir/$harness.log" || true
     echo "run_fuzzers: $harness ran ${seconds} s without a finding; corpus $(ls "$corpus" | wc -l) inputs"
     ;;
-  *) echo "usage: run_fuzzers.sh build|run SOURCE_DIR BUILD_DIR [SECONDS HARNESS]" >&2; exit 2 ;;
+  coverage)
+    harness=$4 corpus=$5
+    case "$harness" in
+      fuzz_inp_reader)   sources="fem/inp_reader.cpp" ;;
+      fuzz_study_reader) sources="coupling/yaml_input.cpp coupling/study_blocks.cpp coupling/rigid_study.cpp coupling/rigid_study_3d.cpp coupling/frame_study.cpp" ;;
+      fuzz_load_history_reader) sources="coupling/load_history.cpp" ;;
+      *) echo "run_fuzzers: unknown harness '$harness'" >&2; exit 2 ;;
+    esac
+    cmake -S "$source_dir" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRAMEDYN_FUZZ=ON \
+      -DFRAMEDYN_BUILD_TESTS=OFF -DFRAMEDYN_NATIVE=OFF -DCMAKE_CXX_FLAGS="-fprofile-instr-generate -fcoverage-mapping" \
+      -DCMAKE_EXE_LINKER_FLAGS="-fprofile-instr-generate" >/dev/null
+    cmake --build "$build_dir" -j2 --target "$harness" >/dev/null
+    rm -f "$build_dir/$harness.profraw"
+    # -runs=0: read and run every input of the corpus once, then stop.
+    LLVM_PROFILE_FILE="$build_dir/$harness.profraw" "$build_dir/tests/fuzz/$harness" -runs=0 -max_len=20000 -rss_limit_mb=2048 "$corpus" \
+      2>"$build_dir/$harness-replay.log"
+    llvm-profdata merge -sparse "$build_dir/$harness.profraw" -o "$build_dir/$harness.profdata"
+    paths=(); for f in $sources; do paths+=("$source_dir/$f"); done
+    llvm-cov report "$build_dir/tests/fuzz/$harness" -instr-profile="$build_dir/$harness.profdata" "${paths[@]}"
+    # Lines with a count of 0 in llvm-cov's listing: "   NN|      0|code".
+    llvm-cov show "$build_dir/tests/fuzz/$harness" -instr-profile="$build_dir/$harness.profdata" "${paths[@]}" \
+      | awk '/^\/.*:$/ {file=$0} /^ *[0-9]+\| *0\|/ {print file " " $0}' >"$build_dir/$harness-uncovered.txt"
+    echo "run_fuzzers: uncovered lines in $build_dir/$harness-uncovered.txt ($(wc -l <"$build_dir/$harness-uncovered.txt"))"
+    ;;
+  *) echo "usage: run_fuzzers.sh build|run|coverage SOURCE_DIR BUILD_DIR [SECONDS HARNESS | HARNESS CORPUS]" >&2; exit 2 ;;
 esac
