@@ -236,7 +236,8 @@ double parse_double(const std::string& field, const Location& where, const std::
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
+  // ERANGE with a finite result is underflow (1e-310 is a number, returned as a subnormal).
+  if (end != s.c_str() + s.size() || !std::isfinite(v))
     throw InputError(where, what + " (a finite number)", "'" + field + "'");
   return v;
 }

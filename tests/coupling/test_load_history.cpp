@@ -206,6 +206,19 @@ TEST(LoadHistoryReader, RejectsMagnitudesBeyondTheLimitInSiAndWhatIsAcceptedRoun
   EXPECT_NEAR(again.points[0].values(0, 5), h.points[0].values(0, 5), 1e-9 * std::abs(h.points[0].values(0, 5)));
 }
 
+// Found by fuzz_load_history_reader (the round trip): -9.2e-308 lbf*in is
+// -1.04e-308 N m in SI, below the smallest normal double; the writer wrote it
+// and strtod reports the underflow as ERANGE, which the reader refused as "not
+// a number". An underflow is a number: read as it is, and the round trip holds.
+TEST(LoadHistoryReader, ReadsNumbersThatUnderflowToSubnormalsAndTheirRoundTrip) {
+  const LoadHistory h = parse_load_history(one_point_file("0,1,2,3,-9.2e-308,5,1e-320\n"), "loads.csv");
+  EXPECT_LT(std::abs(h.points[0].values(0, 3)), 2.2250738585072014e-308);  // subnormal in SI
+  EXPECT_LT(h.points[0].values(0, 3), 0.0);
+  const LoadHistory again = parse_load_history(framedyn::coupling::format_load_history(h, UnitSystem::si()), "again.csv");
+  EXPECT_NEAR(again.points[0].values(0, 3), h.points[0].values(0, 3), 1e-9 * std::abs(h.points[0].values(0, 3)));
+  EXPECT_EQ(error_of(one_point_file("0,1,2,3,4,5,1e999\n")).find("expected a number, found '1e999'") != std::string::npos, true);
+}
+
 // Found by fuzz_load_history_reader (the round trip): times that differ only
 // past the 10th significant digit are one time in the written file.
 TEST(LoadHistoryReader, RejectsTimesEqualToTenSignificantDigits) {

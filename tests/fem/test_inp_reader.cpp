@@ -171,6 +171,16 @@ TEST(InpReader, ReadsACompleteSmallModel) {
   EXPECT_EQ(m.beams[1].section, 0);
 }
 
+// strtod reports an underflow (1e-310, a subnormal) as ERANGE, as it does an
+// overflow; only the overflow is not a number. Same class as the load-history
+// round trip fuzz_load_history_reader found.
+TEST(InpReader, ReadsANumberThatUnderflowsToASubnormal) {
+  const FrameModel m = read(kUnits + "*NODE, NSET=ALL\n1, 0, 0, 0\n2, 1, 1e-310, 0\n3, 2, 0, 0\n" + kBeams + kSection + kSteel);
+  ASSERT_EQ(m.nodes.size(), 3u);
+  EXPECT_GT(m.nodes[1].position.y(), 0.0);
+  EXPECT_LT(m.nodes[1].position.y(), 2.2250738585072014e-308);
+}
+
 TEST(InpReader, HeadingTextIsIgnored) {
   const FrameModel m = read("*HEADING\nA frame, with commas, 1, 2, 3\n4, 5, 6\n" + kModel);
   EXPECT_EQ(m.nodes.size(), 3u);
