@@ -110,9 +110,12 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   else if (supports == "free_free_inertia_relief") r.supports = FrameSupports::free_free_inertia_relief;
   else throw f.error("supports", "fixed_rear_end or free_free_inertia_relief", quoted(supports));
   r.support_set = f.text_or("support_set", "REAR_END");
-  for (const char* key : {"supports", "support_set", "modes", "loads"}) r.key_locations[key] = f.location(f.has(key) ? key : "");
-  // location("") names the block; a defaulted key is still reported under its own path.
-  for (auto& [key, at] : r.key_locations) at.key = f.path() + "." + key;
+  for (const char* key : {"supports", "support_set", "modes", "loads"}) {
+    // A defaulted key: the block's line, still under the key's own path.
+    core::InputLocation at = f.location(f.has(key) ? key : "");
+    at.key = f.path() + "." + key;
+    r.key_locations[key] = at;
+  }
   if (f.has("modes")) {
     const YAML::Node n = f.node()["modes"];
     if (n.IsScalar() && n.Scalar() == "all") r.modes = -1;

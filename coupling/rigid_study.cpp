@@ -170,7 +170,7 @@ RigidStudy read_rigid_study(const std::string& file) {
                                                         : tube.non_negative("weight_per_length", Quantity::force_per_length) / kGravity;
   const std::vector<YamlMap> added = frame.list_of_maps("added_masses");
   if (added.size() > 30) throw frame.error("added_masses", "at most 30 added masses (the thesis's limit)", fmt::format("{}", added.size()));
-  distinct_names(added, "added mass", part_load_names_2d());
+  require_distinct_names(added, "added mass", part_load_names_2d());
   for (const YamlMap& a : added) {
     a.allow_only({"name", "mass", "weight", "inertia", "radius_of_gyration", "position", "attachment"});
     rigid::AddedMass m;

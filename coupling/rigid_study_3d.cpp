@@ -222,7 +222,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   frame.allow_only({"reference", "parts", "reel_and_carrier", "rear_axle"});
   if (frame.has("reference")) p.frame.reference = read_point3(frame, "reference");
   const std::vector<YamlMap> parts = frame.list_of_maps("parts");
-  distinct_names(parts, "frame part");
+  require_distinct_names(parts, "frame part");
   for (const YamlMap& a : parts) {
     a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products"});
     p.frame.parts.push_back(part(a, a.text("name")));
@@ -251,7 +251,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts"});
   p.cab.body = part(cab, "cab");
   const std::vector<YamlMap> mounts = cab.list_of_maps("mounts");
-  distinct_names(mounts, "cab mount");
+  require_distinct_names(mounts, "cab mount");
   for (const YamlMap& m : mounts) {
     m.allow_only({"name", "position", "x", "y", "z"});
     rigid::CabMount3D mount;

@@ -162,7 +162,7 @@ std::string YamlMap::text(const std::string& key) const {
   return n.Scalar();
 }
 
-std::vector<std::string> distinct_names(const std::vector<YamlMap>& items, const std::string& what, const std::vector<std::string>& reserved) {
+void require_distinct_names(const std::vector<YamlMap>& items, const std::string& what, const std::vector<std::string>& reserved) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::string name = items[i].text("name");
@@ -178,7 +178,6 @@ std::vector<std::string> distinct_names(const std::vector<YamlMap>& items, const
                                                                                       items[k].location("name").line));
     names.push_back(name);
   }
-  return names;
 }
 
 std::string YamlMap::text_or(const std::string& key, const std::string& fallback) const { return has(key) ? text(key) : fallback; }

@@ -62,12 +62,11 @@ class YamlMap {
   YAML::Node required(const std::string& key) const;
 };
 
-// The `name` of each map in `items` (a list such as frame.added_masses),
-// checked to be distinct, and none of `reserved`: a name labels the item's
+// Checks the `name` of each map in `items` (a list such as frame.added_masses)
+// to be distinct, and none of `reserved`: a name labels the item's
 // frame load and sweep parameters, which a second item of the same name
 // would silently share. `what` names one item in messages ("added mass").
-std::vector<std::string> distinct_names(const std::vector<YamlMap>& items, const std::string& what,
-                                        const std::vector<std::string>& reserved = {});
+void require_distinct_names(const std::vector<YamlMap>& items, const std::string& what, const std::vector<std::string>& reserved = {});
 
 // Loads a YAML file; a syntax error becomes an InputError with its line.
 YAML::Node load_yaml_file(const std::string& file);
