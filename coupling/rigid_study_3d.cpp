@@ -244,8 +244,11 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   front.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin"});
   p.front_axle.axle = part(front, "front_axle");
   p.front_axle.pin = read_point3(front, "pin");
-  if (!(p.front_axle.axle.inertia(0, 0) > 0 || p.front_axle.axle.mass > 0))
-    throw front.error("", "a mass and roll inertia (eta needs inertia)", "none");
+  // The axle rolls (eta) about the pin's X axis: it needs inertia about that axis, its own or its mass's off the axis.
+  const Eigen::Vector3d off_pin = p.front_axle.axle.cg - p.front_axle.pin;
+  if (!(p.front_axle.axle.inertia(0, 0) + p.front_axle.axle.mass * (off_pin.y() * off_pin.y() + off_pin.z() * off_pin.z()) > 0))
+    throw front.error("", "inertia about the pin's X axis for the axle's roll eta (a roll inertia, or a centre of mass off that axis)",
+                      "no roll inertia and the centre of mass on the axis");
 
   const YamlMap cab = root.map("cab");
   cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts"});

@@ -387,6 +387,13 @@ std::vector<Row> rows() {
       study_row("STUDY-61", "{name: RR,", "{name: RL,", "{name: RL, position: [52, 15", "cab.mounts[3].name", kStudy3D),
       study_row("STUDY-62", "{name: engine, weight: 850, position: [40, 0, 14]", "{name: frame_structure, weight: 850, position: [40, 0, 14]",
                 "{name: frame_structure, weight: 850", "frame.parts[1].name", kStudy3D),
+      // error branches no row had tested, found by replaying the study fuzz corpus through a coverage build (docs/fuzzing.md)
+      study_row("STUDY-63", "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: {kind: table, times: [0, 0.1, 0.2], values: [0, 1]}\n",
+                "kind: table", "tires.front.normal_input.values"),
+      study_row("STUDY-64", "weight_per_length: 5.39}", "weight_per_length: 5.39, mass_per_length: 0.014}", "uniform_section:", "frame.uniform_section"),
+      study_row("STUDY-65", "  position: [0, 0, -14]\n  radii_of_gyration: [22, 10, 22]", "  position: [0, 0, 0]\n  radii_of_gyration: [0, 10, 22]",
+                "  weight: 650", "front_axle", kStudy3D),
+      frame_row("STUDY-66", "damping: {modal_ratio: 0.02}", "damping: {modal_ratio: 0.02, rayleigh: {alpha: 1, beta: 0}}", "damping:", "frame.damping"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
