@@ -41,7 +41,8 @@ TEST(FrameResponseCommand, WritesSummaryWithFrameKeysAndParaViewSeries) {
   framedyn::testing::TempDir dir;
   dir.write("loads.csv", loads());
   const auto study = dir.write("s.yaml", "framedyn_study: 1\nname: cli\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " +
-                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  modes: 10\n  pvd: true\n");
+                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  supports: fixed_rear_end\n  modes: 10\n  pvd: true\n"
+                                             "  outputs:\n    left_rail: {element_set: LEFT_RAIL}\n    right_rail: {element_set: RIGHT_RAIL}\n");
   const std::string cmd = kBinary + " frame-response " + study.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / "log");
   const std::string j = slurp(dir / "out" / "summary.json");
@@ -57,7 +58,7 @@ TEST(FrameResponseCommand, BadLoadFileExitsOneNamingFileAndLine) {
   bad.replace(bad.find("[lbf]"), 5, "[N]");
   dir.write("loads.csv", bad);
   const auto study = dir.write("s.yaml", "framedyn_study: 1\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " +
-                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n");
+                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  supports: fixed_rear_end\n");
   const std::string cmd = kBinary + " frame-response " + study.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 1);
