@@ -50,17 +50,18 @@ int run_frame_response(const FrameResponseOptions& opt) {
              r.wall_seconds);
   fmt::print("\n mode  frequency [Hz]\n");
   for (Eigen::Index i = 0; i < std::min<Eigen::Index>(10, r.frequencies_hz.size()); ++i) fmt::print("{:5d}  {:14.3f}\n", i + 1, r.frequencies_hz(i));
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  const auto at = [&](const coupling::RailPeak& p) {
+    return fmt::format("at ({:.4g}, {:.4g}, {:.4g}) {} (element {}), t = {:.4g} s", p.point.x() * lf, p.point.y() * lf, p.point.z() * lf,
+                       u.label(Quantity::length), p.element_id, p.time);
+  };
   for (const coupling::RailRecovery& rail : r.rails) {
-    const double lf = 1.0 / u.to_si_factor(Quantity::length);
-    fmt::print("\n{}: peak bending moment {:.5g} {} at X = {:.4g} {} (element {}), t = {:.4g} s\n", rail.spec.name,
-               u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment), rail.peak_bending_moment.point.x() * lf,
-               u.label(Quantity::length), rail.peak_bending_moment.element_id, rail.peak_bending_moment.time);
-    fmt::print("{}: peak normal stress {:.5g} {} at X = {:.4g} {} (element {}), t = {:.4g} s; bending share {:.1f} %\n", rail.spec.name,
-               u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), rail.peak_normal_stress.point.x() * lf,
-               u.label(Quantity::length), rail.peak_normal_stress.element_id, rail.peak_normal_stress.time, 100.0 * rail.bending_share);
+    fmt::print("\n{}: peak bending moment {:.5g} {} {}\n", rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment),
+               u.label(Quantity::moment), at(rail.peak_bending_moment));
+    fmt::print("{}: peak normal stress {:.5g} {} {}; bending share {:.1f} %\n", rail.spec.name, u.from_si(rail.peak_normal_stress.value, Quantity::stress),
+               u.label(Quantity::stress), at(rail.peak_normal_stress), 100.0 * rail.bending_share);
   }
   for (const coupling::NodalHistory& h : r.nodal) {
-    const double lf = 1.0 / u.to_si_factor(Quantity::length);
     fmt::print("\n{}: peak displacement {:.5g} {} ({} of node {}), t = {:.4g} s\n", h.spec.name, h.peak_displacement.value * lf, u.label(Quantity::length),
                fem::dof_name(h.peak_displacement.dof), h.peak_displacement.node_id, h.peak_displacement.time);
   }
