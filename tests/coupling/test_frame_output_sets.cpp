@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 
 #include "core/error.h"
@@ -216,6 +217,24 @@ TEST_F(CantileverStudy, ClampingByTheMeshBoundaryOrByTheSetNameGivesTheSameRespo
   const auto by_set = coupling::run_frame_study(request("  supports: clamped\n  support_set: ROOT\n" + rest));
   EXPECT_LT((by_mesh.nodal[0].displacement - by_set.nodal[0].displacement).norm(), 1e-12 * by_set.nodal[0].displacement.norm());
   EXPECT_GT(by_set.nodal[0].displacement.norm(), 0.0);
+}
+
+TEST_F(CantileverStudy, DirectMethodGivesTheTipDisplacementHistoryWithoutRates) {
+  // Newmark gives displacements only (no modal coordinates to take rates
+  // from): the CSV has no velocity or acceleration columns, the summary no peaks of them.
+  const auto q = request("  supports: clamped\n  support_set: ROOT\n  method: direct\n  damping: {rayleigh: {alpha: 0, beta: 0}}\n"
+                         "  outputs:\n    tip: {node_set: TIP}\n");
+  const auto r = coupling::run_frame_study(q);
+  EXPECT_EQ(r.nodal[0].velocity.size(), 0);
+  EXPECT_GT(r.nodal[0].peak_displacement.value, kStatic);  // a step response overshoots the static deflection
+  core::ResultsFolder folder(dir / "out");
+  coupling::write_frame_outputs(r, q, folder);
+  folder.commit();
+  std::ifstream in(dir / "out" / "frame_nodes_tip.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "time [s],node,UX [m],UY [m],UZ [m],URX [rad],URY [rad],URZ [rad]");
+  EXPECT_EQ(coupling::frame_summary_json(r, q).find("peak_velocity"), std::string::npos);
 }
 
 TEST_F(CantileverStudy, FreeFreeBeamHasTheClosedFormFirstElasticFrequency) {
