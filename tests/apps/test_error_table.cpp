@@ -171,6 +171,9 @@ frame:
   damping: {modal_ratio: 0.02}
   output_interval: 0.001
   stations: 3
+  outputs:
+    left_rail: {element_set: LEFT_RAIL}
+    right_rail: {element_set: RIGHT_RAIL}
 )";
 
 const std::string kLoads = R"(# framedyn load history, version 1
@@ -369,7 +372,7 @@ std::vector<Row> rows() {
       frame_row("STUDY-44", "  stations: 3\n", "  stations: 3\n  mthod: direct\n", "mthod", "frame.mthod"),
       frame_row("STUDY-45", "  mesh: frame.inp\n", "", "  loads:", "frame.mesh"),
       frame_row("STUDY-46", "mesh: frame.inp", "mesh: frame_v2.inp", "mesh:", "frame.mesh"),
-      frame_row("STUDY-47", "supports: fixed_rear_end", "supports: clamped", "supports:", "frame.supports"),
+      frame_row("STUDY-47", "supports: fixed_rear_end", "supports: pinned", "supports:", "frame.supports"),
       frame_row("STUDY-48", "method: mode_displacement", "method: modal", "method:", "frame.method"),
       frame_row("STUDY-49", "modes: 4", "modes: 0", "modes:", "frame.modes"),
       frame_row("STUDY-50", "modal_ratio: 0.02", "modal_ratio: 1.5", "damping:", "frame.damping.modal_ratio"),
@@ -394,6 +397,15 @@ std::vector<Row> rows() {
       study_row("STUDY-65", "  position: [0, 0, -14]\n  radii_of_gyration: [22, 10, 22]", "  position: [0, 0, 0]\n  radii_of_gyration: [0, 10, 22]",
                 "  weight: 650", "front_axle", kStudy3D),
       frame_row("STUDY-66", "damping: {modal_ratio: 0.02}", "damping: {modal_ratio: 0.02, rayleigh: {alpha: 1, beta: 0}}", "damping:", "frame.damping"),
+      // output sets and supports by set name (issue 13)
+      frame_row("STUDY-67", "{element_set: LEFT_RAIL}", "{element_set: LEFT_RAILS}", "{element_set: LEFT_RAILS}", "frame.outputs.left_rail.element_set"),
+      frame_row("STUDY-68", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n    axle: {node_set: FRONT_AXLE}\n",
+                "{node_set: FRONT_AXLE}", "frame.outputs.axle.node_set"),
+      frame_row("STUDY-69", "{element_set: LEFT_RAIL}", "{element_set: LEFT_RAIL, node_set: LEFT_RAIL_NODES}", "left_rail:", "frame.outputs.left_rail"),
+      frame_row("STUDY-70", "  supports: fixed_rear_end\n", "", "  mesh:", "frame.supports"),
+      frame_row("STUDY-71", "supports: fixed_rear_end", "supports: clamped", "supports:", "frame.supports"),
+      frame_row("STUDY-72", "    left_rail:", "    left rail:", "left rail:", "frame.outputs.left rail"),
+      frame_row("STUDY-73", "supports: fixed_rear_end", "supports: none\n  support_set: REAR_END", "support_set:", "frame.support_set"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
