@@ -127,7 +127,11 @@ void check_quadratic_beam_geometry(const FrameModel& model, const BeamElement& b
     throw std::invalid_argument(
         "its midside node is not between the quarter points of its ends, or the element turns by 90 degrees or more "
         "(the isoparametric mapping folds; place the midside node near the middle of the member)");
-  for (double xi : {-1.0, -0.5, 0.0, 0.5, 1.0}) (void)quadratic_beam_point(model, beam, section, xi);
+  // n1 must not lie along the tangent anywhere: at the Gauss points the
+  // matrices use and on a fine comb of points in between (stations).
+  for (const Rule* rule : {&kTwoPoint, &kThreePoint})
+    for (int g = 0; g < rule->count; ++g) (void)quadratic_beam_point(model, beam, section, rule->points[g]);
+  for (int k = 0; k <= 32; ++k) (void)quadratic_beam_point(model, beam, section, -1.0 + k / 16.0);
 }
 
 double quadratic_beam_length(const FrameModel& model, const BeamElement& beam) { return arc_length_to(model, beam, 1.0); }

@@ -391,6 +391,11 @@ TEST(QuadraticBeam, ReaderRefusesFoldedElementsOffsetSectionsAndNonlinearSteps) 
                      "deck.inp:11: *BEAM SECTION: expected OFFSET2=0 (framedyn puts the beam axis at the section's centroid");
   expect_input_error(good + "*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT\n0.05, 0.1\n*BOUNDARY\n1, 1, 6\n*STEP, NLGEOM\n*STATIC\n*END STEP\n",
                      "deck.inp:15: *STEP: expected a linear step (framedyn is a linear, small-displacement code");
+  // A member along z with the default n1 = (0, 0, -1): no section plane.
+  expect_input_error("** units: m-N-s\n*NODE\n1, 0, 0, 0\n2, 0, 0, 0.5\n3, 0, 0, 1\n*ELEMENT, TYPE=B32R, ELSET=E\n1, 1, 2, 3\n"
+                     "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT\n0.05, 0.1\n",
+                     "deck.inp:7: *ELEMENT: expected a valid three-node beam (end, midside, end), found element 1 on nodes 1, 2, 3: "
+                     "orientation direction n1 is parallel to the element axis");
   // Zero offsets are the default and accepted; NLGEOM=NO is a linear step.
   EXPECT_NO_THROW(fem::read_inp_text(good + "*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT, OFFSET1=0\n0.05, 0.1\n*BOUNDARY\n1, 1, 6\n"
                                             "*STEP, NLGEOM=NO\n*STATIC\n*END STEP\n",
