@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
+#include "fem/quadratic_beam_element.h"
 #include "fem/section_forces.h"
 #include "fem/vtu_writer.h"
 
@@ -480,6 +481,17 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     fem::VtuField moment{fmt::format("max_bending_moment [{}]", u.label(Quantity::moment)), 1, {}};
     fem::VtuField axial{fmt::format("axial_force_mid [{}]", u.label(Quantity::force)), 1, {}};
     for (std::size_t e = 0; e < m.beams.size(); ++e) {
+      if (m.beams[e].is_quadratic()) {  // three-node beams (B32, B32R): stations by statics of their nodal forces
+        double smax = 0.0, mmax = 0.0;
+        for (const fem::StationResult& st : fem::quadratic_beam_stations(m, m.beams[e], uj, q.stations)) {
+          mmax = std::max(mmax, std::hypot(st.forces.my, st.forces.mz));
+          for (double v : st.fiber_stress) smax = std::max(smax, std::abs(v));
+        }
+        stress.values.push_back(smax * sf);
+        moment.values.push_back(mmax * mf);
+        axial.values.push_back(fem::quadratic_beam_stations(m, m.beams[e], uj, 3)[1].forces.n / u.to_si_factor(Quantity::force));
+        continue;
+      }
       const fem::Vector12d f = fem::element_end_forces(geometry[e], m.beams[e], uj);
       double smax = 0.0, mmax = 0.0;
       for (int s = 0; s < q.stations; ++s) {

@@ -1,6 +1,8 @@
 // Assembly of K and M from beam elements, point masses and springs.
 #include "fem/assembly.h"
 
+#include "fem/quadratic_beam_element.h"
+
 #include <fmt/format.h>
 
 #include <exception>
@@ -80,6 +82,28 @@ class ElementGeometries {
   BeamGeometry current_;
 };
 
+// Section data of three-node elements (always Timoshenko), computed once per
+// section; element errors name the element.
+class QuadraticSections {
+ public:
+  explicit QuadraticSections(const FrameModel& model) : model_(model) {}
+  const SectionGeometry& operator()(const BeamElement& beam) {
+    const std::size_t key = static_cast<std::size_t>(beam.section);
+    if (key >= sections_.size()) sections_.resize(key + 1);
+    if (!sections_[key]) sections_[key] = section_geometry(model_, beam.section, BeamTheory::timoshenko);
+    try {
+      check_quadratic_beam_geometry(model_, beam, *sections_[key]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("beam element {}: {}", beam.id, e.what()));
+    }
+    return *sections_[key];
+  }
+
+ private:
+  const FrameModel& model_;
+  std::vector<std::optional<SectionGeometry>> sections_;
+};
+
 std::array<int, 12> element_dofs(const BeamElement& beam) {
   std::array<int, 12> d{};
   for (int i = 0; i < 6; ++i) {
@@ -126,7 +150,14 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
     Triplets t;
     t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
     ElementGeometries geometry(model);
+    QuadraticSections quadratic(model);
     for (const BeamElement& beam : model.beams) {
+      if (beam.is_quadratic()) {
+        const SectionGeometry& s = quadratic(beam);
+        const Matrix18d global = stiffness ? quadratic_beam_stiffness(model, beam, s) : quadratic_beam_mass(model, beam, s, options.mass);
+        scatter<18>(t, global, quadratic_beam_dofs(beam), dofs, options.storage);
+        continue;
+      }
       const BeamGeometry& g = geometry(beam);
       const Matrix12d tr = beam_transformation(g.axes);
       const Matrix12d local = stiffness ? beam_local_stiffness(g.data) : beam_local_mass(g.data, options.mass);
@@ -178,7 +209,16 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
 Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.dof_count());
   ElementGeometries geometry(model);
+  QuadraticSections quadratic(model);
   for (const BeamElement& beam : model.beams) {
+    if (beam.is_quadratic()) {
+      const auto d = quadratic_beam_dofs(beam);
+      Vector18d ue;
+      for (int i = 0; i < 18; ++i) ue(i) = u(d[static_cast<std::size_t>(i)]);
+      const Vector18d fe = quadratic_beam_stiffness(model, beam, quadratic(beam)) * ue;
+      for (int i = 0; i < 18; ++i) f(d[static_cast<std::size_t>(i)]) += fe(i);
+      continue;
+    }
     const BeamGeometry& g = geometry(beam);
     const Matrix12d tr = beam_transformation(g.axes);
     const auto d = element_dofs(beam);

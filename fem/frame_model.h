@@ -55,6 +55,13 @@ struct BeamElement {
   int node_a = 0, node_b = 0;    // indices into FrameModel::nodes
   int section = -1;              // index into FrameModel::sections
   BeamTheory theory = BeamTheory::timoshenko;
+  // Three-node elements (Abaqus B32, B32R): the midside node (index into
+  // nodes), -1 for two-node elements; node_a and node_b are the end nodes.
+  // They are Timoshenko beams; fem/quadratic_beam_element.h has their matrices.
+  int node_m = -1;
+  bool reduced_integration = false;  // B32R: 2-point Gauss rule (B32: 3-point)
+
+  bool is_quadratic() const { return node_m >= 0; }
 };
 
 struct PointMass {

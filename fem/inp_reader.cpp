@@ -21,6 +21,7 @@
 
 #include "core/error.h"
 #include "fem/beam_element.h"
+#include "fem/quadratic_beam_element.h"
 
 namespace framedyn::fem {
 
@@ -304,7 +305,7 @@ std::vector<double> numbers(const Line& l, const Keyword& k, std::size_t min_cou
 
 struct RawElement {
   int id;
-  std::string type;  // B31, B33, MASS, ROTARYI, SPRING1, SPRING2
+  std::string type;  // B31, B32, B32R, B33, MASS, ROTARYI, SPRING1, SPRING2
   std::vector<int> node_ids;
   Where where;
 };
@@ -345,6 +346,68 @@ struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
   InputLocation where;
 };
 
+// ------------------------------------------- three-node beams, CalculiX decks
+// (issue 13): B32/B32R elements, *BEAM GENERAL SECTION with SECTION=BOX or
+// PIPE as CalculiX writes it, and the step parameters framedyn cannot honour.
+
+// A B32 (3-point rule) or B32R (2-point rule) element; the mesh gives its
+// nodes as end, midside, end.
+BeamElement quadratic_beam(const RawElement& e, const std::vector<int>& node_indices) {
+  BeamElement b;
+  b.id = e.id;
+  b.node_a = node_indices[0];
+  b.node_m = node_indices[1];
+  b.node_b = node_indices[2];
+  b.theory = BeamTheory::timoshenko;
+  b.reduced_integration = e.type == "B32R";
+  return b;
+}
+
+// The geometry (the mapping must not fold, n1 not along the axis) and the
+// range of the element matrices of a three-node element.
+void check_quadratic_beam(const FrameModel& model, const BeamElement& b, const Where& where) {
+  const SectionGeometry section = section_geometry(model, b.section, BeamTheory::timoshenko);
+  try {
+    check_quadratic_beam_geometry(model, b, section);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where, "a valid three-node beam (end, midside, end)",
+                     fmt::format("element {} on nodes {}, {}, {}: {}", b.id, model.nodes[static_cast<std::size_t>(b.node_a)].id,
+                                 model.nodes[static_cast<std::size_t>(b.node_m)].id, model.nodes[static_cast<std::size_t>(b.node_b)].id, e.what()));
+  }
+  if (!within_range(quadratic_beam_stiffness(model, b, section)) || !within_range(quadratic_beam_mass(model, b, section, MassFormulation::consistent)))
+    throw InputError(where, "element stiffness and mass within the range of floating point (entries of at most 1e300 in SI units)",
+                     fmt::format("element {}: length {:g} m, E {:g} Pa, G {:g} Pa, density {:g} kg/m^3, A {:g} m^2, I11 {:g} m^4, "
+                                 "I22 {:g} m^4, J {:g} m^4 (section of ELSET {})",
+                                 b.id, quadratic_beam_length(model, b), section.data.youngs_modulus, section.data.shear_modulus,
+                                 section.data.density, section.data.section.area, section.data.section.i11, section.data.section.i22,
+                                 section.data.section.torsion_constant, model.sections[static_cast<std::size_t>(b.section)].element_set));
+}
+
+// framedyn solves linear problems: a step asking for geometric nonlinearity
+// (Abaqus/CalculiX *STEP, NLGEOM or NLGEOM=YES) is refused rather than
+// answered linearly.
+void refuse_nonlinear_step(const Keyword& k) {
+  auto it = k.params.find("NLGEOM");
+  if (it == k.params.end() || upper(it->second) == "NO") return;
+  throw InputError(k.where,
+                   "a linear step (framedyn is a linear, small-displacement code: remove NLGEOM, or run the deck in a "
+                   "nonlinear code such as CalculiX)",
+                   it->second.empty() ? std::string("NLGEOM") : "NLGEOM=" + it->second);
+}
+
+// Beam offsets (CalculiX OFFSET1, OFFSET2: the axis moved off the section's
+// centre, in section widths) are not modelled: zero is accepted, anything else refused.
+void refuse_offsets(const Keyword& k) {
+  for (const char* name : {"OFFSET1", "OFFSET2"}) {
+    auto it = k.params.find(name);
+    if (it == k.params.end()) continue;
+    const double v = parse_double(it->second, k.where, name);
+    if (v != 0.0)
+      throw InputError(k.where, std::string(name) + "=0 (framedyn puts the beam axis at the section's centroid; move the nodes instead)",
+                       std::string(name) + "=" + it->second);
+  }
+}
+
 class Parser {
  public:
   explicit Parser(TextSource& src) : src_(src) {}
@@ -375,6 +438,7 @@ class Parser {
   void set(const Block& b, bool nodes);
   void beam_section(const Block& b);
   void general_beam_section(const Block& b);
+  bool calculix_shape_section(const Block& b);
   void material(const Block& b);
   void elastic(const Block& b);
   void density(const Block& b);
@@ -417,9 +481,10 @@ void Parser::element(const Block& b) {
   const std::string type = upper(required_param(b.keyword, "TYPE"));
   std::size_t node_count = 0;
   if (type == "B31" || type == "B33" || type == "SPRING2") node_count = 2;
+  else if (type == "B32" || type == "B32R") node_count = 3;  // end, midside, end
   else if (type == "MASS" || type == "ROTARYI" || type == "SPRING1") node_count = 1;
   else
-    throw InputError(b.keyword.where, "TYPE=B31, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
+    throw InputError(b.keyword.where, "TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
                      "TYPE=" + type);
   std::vector<int>* set = nullptr;
   std::vector<Where>* set_where = nullptr;
@@ -443,6 +508,9 @@ void Parser::element(const Block& b) {
     for (std::size_t i = 1; i < f.size(); ++i) e.node_ids.push_back(static_cast<int>(parse_int(f[i], at(l, b.keyword), "node number")));
     if (node_count == 2 && e.node_ids[0] == e.node_ids[1])
       throw InputError(at(l, b.keyword), "two different nodes", fmt::format("element {} from node {} to itself", e.id, e.node_ids[0]));
+    if (node_count == 3 && (e.node_ids[0] == e.node_ids[1] || e.node_ids[1] == e.node_ids[2] || e.node_ids[0] == e.node_ids[2]))
+      throw InputError(at(l, b.keyword), "three different nodes (end, midside, end)",
+                       fmt::format("element {} on nodes {}, {}, {}", e.id, e.node_ids[0], e.node_ids[1], e.node_ids[2]));
     if (element_index_.count(e.id))
       throw InputError(at(l, b.keyword), "a new element number",
                        fmt::format("element {} again (first at {})", e.id, core::format_location(elements_[element_index_[e.id]].where)));
@@ -523,7 +591,8 @@ Eigen::Vector3d orientation_line(const Line& l, const Keyword& k) {
 }
 
 void Parser::beam_section(const Block& b) {
-  check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION"});
+  check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION", "OFFSET1", "OFFSET2"});
+  refuse_offsets(b.keyword);
   RawSection s;
   s.elset = upper(required_param(b.keyword, "ELSET"));
   s.material = upper(required_param(b.keyword, "MATERIAL"));
@@ -548,6 +617,7 @@ void Parser::beam_section(const Block& b) {
 }
 
 void Parser::general_beam_section(const Block& b) {
+  if (calculix_shape_section(b)) return;
   check_params(b.keyword, {"ELSET", "SECTION", "DENSITY"});
   RawSection s;
   s.general = true;
@@ -569,6 +639,18 @@ void Parser::general_beam_section(const Block& b) {
   s.general_g = eg[1];
   if (!(s.general_e > 0) || !(s.general_g > 0)) throw InputError(at(b.data[2], b.keyword), "E > 0 and G > 0", "'" + b.data[2].text + "'");
   sections_.push_back(s);
+}
+
+// CalculiX reads *BEAM GENERAL SECTION, SECTION=BOX or PIPE (with MATERIAL=,
+// a data line a, b, t1, t2, t3, t4 or r, t, and an optional 1-direction line)
+// exactly as *BEAM SECTION with that shape: so does framedyn.
+bool Parser::calculix_shape_section(const Block& b) {
+  auto it = b.keyword.params.find("SECTION");
+  if (it == b.keyword.params.end()) return false;
+  const std::string kind = upper(it->second);
+  if (kind != "BOX" && kind != "PIPE") return false;
+  beam_section(b);
+  return true;
 }
 
 void Parser::material(const Block& b) {
@@ -688,7 +770,8 @@ void Parser::element_property(const Block& b) {
 void Parser::step_keyword(const Block& b) {
   const std::string& k = b.keyword.name;
   if (k == "*STEP") {
-    check_params(b.keyword, {"NAME", "PERTURBATION"});
+    refuse_nonlinear_step(b.keyword);
+    check_params(b.keyword, {"NAME", "PERTURBATION", "NLGEOM"});  // NLGEOM=NO only, see refuse_nonlinear_step
     if (in_step_) throw InputError(b.keyword.where, "*END STEP before the next *STEP", "*STEP");
     if (++steps_ > 1) throw InputError(b.keyword.where, "one analysis step (framedyn reads a single step)", "a second *STEP");
     in_step_ = true;
@@ -820,6 +903,9 @@ FrameModel Parser::build(const core::UnitSystem& units) {
         throw InputError(e.where, "an element of nonzero length", fmt::format("element {}: nodes {} and {} at the same point", e.id, e.node_ids[0], e.node_ids[1]));
       beam_of_element[e.id] = model.beams.size();
       model.beams.push_back(b);
+    } else if (e.type == "B32" || e.type == "B32R") {
+      beam_of_element[e.id] = model.beams.size();
+      model.beams.push_back(quadratic_beam(e, idx));
     }
   }
   model.index();
@@ -864,7 +950,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     for (int id : set_it->second) {
       auto b = beam_of_element.find(id);
       if (b == beam_of_element.end())
-        throw InputError(s.where, "beam elements (B31, B33) in ELSET " + s.elset, fmt::format("element {} of type {}", id, elements_[element_index_[id]].type));
+        throw InputError(s.where, "beam elements (B31, B32, B32R, B33) in ELSET " + s.elset, fmt::format("element {} of type {}", id, elements_[element_index_[id]].type));
       BeamElement& beam = model.beams[b->second];
       if (beam.section >= 0 && beam.section != index)
         throw InputError(s.where, fmt::format("one section per element"), fmt::format("element {} already has the section of ELSET {}", id, model.sections[static_cast<std::size_t>(beam.section)].element_set));
@@ -874,6 +960,10 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const BeamElement& b : model.beams) {
     if (b.section < 0)
       throw InputError(elements_[element_index_[b.id]].where, "a *BEAM SECTION for every beam element", fmt::format("element {} has none", b.id));
+    if (b.is_quadratic()) {
+      check_quadratic_beam(model, b, elements_[element_index_[b.id]].where);
+      continue;
+    }
     try {
       beam_local_axes(model.nodes[static_cast<std::size_t>(b.node_a)].position, model.nodes[static_cast<std::size_t>(b.node_b)].position,
                       model.sections[static_cast<std::size_t>(b.section)].n1_direction);
@@ -946,7 +1036,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     }
   }
   for (const RawElement& e : elements_)
-    if (e.type != "B31" && e.type != "B33" && !has_property.count(e.id))
+    if (e.type != "B31" && e.type != "B33" && e.type != "B32" && e.type != "B32R" && !has_property.count(e.id))
       throw InputError(e.where, "a *MASS, *ROTARY INERTIA or *SPRING for element " + std::to_string(e.id) + " of type " + e.type, "none");
 
   // Supports and loads.

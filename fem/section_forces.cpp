@@ -1,11 +1,17 @@
 // Recovery of section forces and fiber stresses; see section_forces.h.
 #include "fem/section_forces.h"
 
+#include "fem/quadratic_beam_element.h"
+
 #include <stdexcept>
+#include <string>
 
 namespace framedyn::fem {
 
 Vector12d element_end_forces(const BeamGeometry& g, const BeamElement& beam, const Eigen::VectorXd& u) {
+  if (beam.is_quadratic())
+    throw std::invalid_argument("beam element " + std::to_string(beam.id) +
+                                " has three nodes (B32, B32R): its section forces come from recover_stations, not from two end forces");
   Vector12d ue;
   ue.head<6>() = u.segment<6>(kDofsPerNode * beam.node_a);
   ue.tail<6>() = u.segment<6>(kDofsPerNode * beam.node_b);
@@ -36,6 +42,10 @@ std::vector<StationResult> recover_stations(const FrameModel& model, const Eigen
   std::vector<StationResult> out;
   out.reserve(model.beams.size() * static_cast<std::size_t>(stations));
   for (const BeamElement& beam : model.beams) {
+    if (beam.is_quadratic()) {
+      for (StationResult& r : quadratic_beam_stations(model, beam, u, stations)) out.push_back(std::move(r));
+      continue;
+    }
     const BeamGeometry g = beam_geometry(model, beam);
     const Vector12d f = element_end_forces(g, beam, u);
     const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;

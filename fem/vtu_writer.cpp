@@ -1,4 +1,5 @@
-// ASCII VTU writer (VTK XML UnstructuredGrid, cell type 3 = VTK_LINE).
+// ASCII VTU writer (VTK XML UnstructuredGrid, cell type 3 = VTK_LINE for
+// two-node beams, 21 = VTK_QUADRATIC_EDGE for three-node beams).
 #include "fem/vtu_writer.h"
 
 #include <fmt/format.h>
@@ -40,11 +41,14 @@ std::string vtu_document(const FrameModel& model, double length_scale, const std
   }
   out += "        </DataArray>\n      </Points>\n";
   out += "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const BeamElement& b : model.beams) out += fmt::format("          {} {}\n", b.node_a, b.node_b);
+  // Three-node beams are VTK_QUADRATIC_EDGE (21): end, end, midside.
+  for (const BeamElement& b : model.beams)
+    out += b.is_quadratic() ? fmt::format("          {} {} {}\n", b.node_a, b.node_b, b.node_m) : fmt::format("          {} {}\n", b.node_a, b.node_b);
   out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < nc; ++i) out += fmt::format("          {}\n", 2 * (i + 1));
+  std::size_t offset = 0;
+  for (const BeamElement& b : model.beams) out += fmt::format("          {}\n", offset += b.is_quadratic() ? 3 : 2);
   out += "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < nc; ++i) out += "          3\n";
+  for (const BeamElement& b : model.beams) out += b.is_quadratic() ? "          21\n" : "          3\n";
   out += "        </DataArray>\n      </Cells>\n";
   out += "      <PointData>\n";
   {

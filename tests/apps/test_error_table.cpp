@@ -303,6 +303,13 @@ std::vector<Row> rows() {
       {"INP-40", {}, "static nothere.inp --out results -q", "nothere.inp", false},
       // numbers within the file's range whose element matrices overflow (found by reading the reader against its fuzz harness)
       mesh_row("INP-41", "0.05, 0.1\n", "1e200, 1e200\n", "1, 1, 2", "*ELEMENT"),
+      // three-node beams and CalculiX decks (issue 13)
+      mesh_row("INP-42", "*STEP\n", "*STEP, NLGEOM\n", "*STEP, NLGEOM", "*STEP"),
+      mesh_row("INP-43", "SECTION=RECT\n", "SECTION=RECT, OFFSET2=-0.5\n", "*BEAM SECTION", "*BEAM SECTION"),
+      mesh_row("INP-44", "2, 1, 0, 0\n3, 2, 0, 0\n*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n",
+               "2, 0.2, 0, 0\n3, 2, 0, 0\n*ELEMENT, TYPE=B32, ELSET=FRAME\n1, 1, 2, 3\n", "1, 1, 2, 3", "*ELEMENT"),
+      mesh_row("INP-45", "*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n", "*ELEMENT, TYPE=B32R, ELSET=FRAME\n1, 1, 2, 1\n", "1, 1, 2, 1",
+               "*ELEMENT"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {
