@@ -300,6 +300,14 @@ std::vector<Row> rows() {
       {"INP-40", {}, "static nothere.inp --out results -q", "nothere.inp", false},
       // numbers within the file's range whose element matrices overflow (found by reading the reader against its fuzz harness)
       mesh_row("INP-41", "0.05, 0.1\n", "1e200, 1e200\n", "1, 1, 2", "*ELEMENT"),
+      // distributed loads, end releases, section options (issue 13)
+      mesh_row("INP-42", kData, "*DLOAD\nFRAME, P3, 100.\n" + kData, "P3", "*DLOAD"),
+      mesh_row("INP-43", kData, "*DLOAD\nFRAME, GRAV, 9.81, 0, 0, 0\n" + kData, "GRAV", "*DLOAD"),
+      mesh_row("INP-44", "*DENSITY\n7850\n" + kData, "*DLOAD\n, GRAV, 9.81, 0, 0, -1\n" + kData, ", GRAV", "*DLOAD"),
+      mesh_row("INP-45", kData, "*RELEASE\n2, S3, M1\n" + kData, "S3", "*RELEASE"),
+      mesh_row("INP-46", kData, "*RELEASE\n2, S1, T\n2, S2, T\n" + kData, "S2, T", "*RELEASE"),
+      mesh_row("INP-47", kData, "*TRANSVERSE SHEAR STIFFNESS\n1e8, 1e8\n" + kData, "*TRANSVERSE", "*TRANSVERSE SHEAR STIFFNESS"),
+      mesh_row("INP-48", "SECTION=RECT", "SECTION=RECT, RAYLEIGH=YES", "*BEAM SECTION", "*BEAM SECTION"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {

@@ -21,6 +21,7 @@
 #include "fem/distributed_loads.h"
 #include "fem/frame_model.h"
 #include "fem/inp_reader.h"
+#include "fem/modal_transient.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
 
@@ -157,6 +158,50 @@ TEST(DistributedLoads, ClampedClampedUniformLoadHasEndMomentsWL2Over12AndMidspan
       }
       EXPECT_TRUE(found_mid);
     }
+  }
+}
+
+// ---------------------------------------------------------------- modal transient
+
+// The mesh's load pattern (fem::applied_load_vector: the consistent loads of
+// a GRAV line) switched on at t = 0 on a cantilever at rest: undamped, every
+// mode i follows q_i = (p_i / omega_i^2)(1 - cos omega_i t), p_i = phi_i^T f,
+// so u(t) + sum_i phi_i (p_i / omega_i^2) cos(omega_i t) is the static
+// deflection at every time: the tip's w L^4 / (8 E I) and the static solve's
+// displacements, from the same consistent loads.
+TEST(DistributedLoads, SuddenGravityOnACantileverOscillatesAboutItsStaticDeflection) {
+  const double L = 1.2, a = 0.03, b = 0.05, E = 2.1e11, rho = 7850, g = 9.81;
+  const fem::FrameModel m =
+      read(beam_deck("m-N-s", Eigen::Vector3d::UnitX(), L, 6, "B33", fmt::format("*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT\n{}, {}\n", a, b),
+                     kSteelSi, fmt::format("*BOUNDARY\n1, ENCASTRE\n*DLOAD\n, GRAV, {}, 0, 0, -1\n", g)));
+  const fem::FrameDynamics frame(m);
+  const fem::ModalBasis basis = frame.all_modes();
+  const Eigen::VectorXd f = fem::applied_load_vector(m);
+  fem::TransientInput in;
+  in.times = Eigen::VectorXd::LinSpaced(5, 0.0, 0.004);
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    if (f(i) != 0.0) t.emplace_back(static_cast<int>(i), 0, f(i));
+  in.distribution.resize(m.dof_count(), 1);
+  in.distribution.setFromTriplets(t.begin(), t.end());
+  in.components = Eigen::MatrixXd::Ones(1, 5);
+  fem::ModalTransientOptions o;
+  o.method = fem::ResponseMethod::mode_displacement;
+  o.damping = fem::ModalDamping::ratio(0.0);
+  o.initial = fem::InitialState::rest;
+  const fem::TransientResult r = fem::modal_transient(frame, basis, in, o);
+  const Eigen::VectorXd u_static = fem::solve_static(m).displacement;
+  const Eigen::VectorXd f_free = frame.free_loads(in.distribution).col(0);
+  const double w = rho * a * b * g, tip = -w * std::pow(L, 4) / (8 * E * b * a * a * a / 12);
+  EXPECT_LT(rel(u_static(6 * 6 + 2), tip), 1e-10);
+  for (Eigen::Index k = 0; k < r.times.size(); ++k) {
+    Eigen::VectorXd free = Eigen::VectorXd::Zero(frame.dofs().free_count());
+    for (Eigen::Index i = 0; i < basis.eigenvalues.size(); ++i) {
+      const double omega2 = basis.eigenvalues(i), p = basis.shapes.col(i).dot(f_free);
+      free += basis.shapes.col(i) * (p / omega2 * std::cos(std::sqrt(omega2) * r.times(k)));
+    }
+    const Eigen::VectorXd static_part = r.displacement.col(k) + frame.expand(free);
+    EXPECT_LT((static_part - u_static).norm(), 1e-8 * u_static.norm()) << "t = " << r.times(k);
   }
 }
 
