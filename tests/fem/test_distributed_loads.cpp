@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/error.h"
@@ -74,6 +75,10 @@ TEST(DistributedLoads, CantileverUnderGravityHasRootMomentWL2Over2AndTipDeflecti
     const fem::StaticResult r = fem::solve_static(m);
     const double root_shear = r.reaction(2) / u.to_si_factor(Quantity::force);
     const double root_moment = r.reaction(4) / u.to_si_factor(Quantity::moment);  // about Y
+    std::printf("%s gravity cantilever: root shear %.2e, root moment %.2e, tip %.2e (relative errors)\n", type, rel(root_shear, w * L),
+                rel(root_moment, -w * L * L / 2), rel(r.displacement(6 * 8 + 2) / u.to_si_factor(Quantity::length),
+                                                      -w * L * L * L * L / (8 * E * (b * a * a * a / 12)) -
+                                                          (std::string(type) == "B31" ? w * L * L / (2 * (10 * 1.3 / (12 + 11 * 0.3)) * (E / 2.6) * a * b) : 0.0)));
     EXPECT_LT(rel(root_shear, w * L), 1e-12) << type;
     // The weight along -Z at x > 0 turns the root about +Y: the support holds -w L^2/2.
     EXPECT_LT(rel(root_moment, -w * L * L / 2), 1e-12) << type;
@@ -143,6 +148,7 @@ TEST(DistributedLoads, ClampedClampedUniformLoadHasEndMomentsWL2Over12AndMidspan
       const int stations = 3;
       const std::vector<fem::StationResult> st = fem::recover_stations(m, u, stations);
       const double end_a = st.front().forces.mz, end_b = st.back().forces.mz;
+      std::printf("%s clamped-clamped, %d element(s): end moments %.2e, %.2e (relative errors)\n", type, n, rel(end_a, -w * L * L / 12), rel(end_b, -w * L * L / 12));
       EXPECT_LT(rel(end_a, -w * L * L / 12), 1e-9) << type << " " << n;
       EXPECT_LT(rel(end_b, -w * L * L / 12), 1e-9) << type << " " << n;
       EXPECT_LT(rel(std::abs(st.front().forces.vy), w * L / 2), 1e-9) << type << " " << n;

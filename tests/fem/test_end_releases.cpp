@@ -66,6 +66,8 @@ TEST(EndReleases, ProppedCantileverFromAReleasedEndHasReactionThreeWLOverEight) 
       const fem::Vector12d p = fem::beam_local_uniform_load(g.data, g.axes * Eigen::Vector3d(0, -w, 0));
       reaction = -(fem::beam_transformation(g.axes).transpose() * p);
     }
+    std::printf("propped cantilever, %d element(s): R = 3wL/8 to %.2e, clamp moment wL^2/8 to %.2e\n", n, rel(reaction(6 * n + 1), 3 * w * L / 8),
+                rel(std::abs(reaction(5)), w * L * L / 8));
     EXPECT_LT(rel(reaction(6 * n + 1), 3 * w * L / 8), 1e-10) << n;
     EXPECT_LT(rel(reaction(1), 5 * w * L / 8), 1e-10) << n;
     EXPECT_LT(rel(std::abs(reaction(5)), w * L * L / 8), 1e-10) << n;
@@ -99,6 +101,8 @@ TEST(EndReleases, FixedFixedMemberReleasedAtBothEndsIsSimplySupported) {
     const fem::FrameModel m =
         read(deck(n, L, fmt::format("*RELEASE\n1, S1, M2\n{}, S2, M2\n*BOUNDARY\n1, ENCASTRE\n{}, ENCASTRE\n*DLOAD\nBEAM, PY, {}\n", n, n + 1, -w)));
     const fem::StaticResult r = fem::solve_static(m);
+    std::printf("released fixed-fixed member, %d elements: midspan deflection 5wL^4/384EI to %.2e\n", n,
+                rel(r.displacement(6 * (n / 2) + 1), -5 * w * std::pow(L, 4) / (384 * kE * kI22)));
     EXPECT_LT(rel(r.displacement(6 * (n / 2) + 1), -5 * w * std::pow(L, 4) / (384 * kE * kI22)), 1e-10) << n;
     const std::vector<fem::StationResult> st = fem::recover_stations(m, r.displacement, 3);
     EXPECT_NEAR(st.front().forces.mz, 0.0, 1e-10 * w * L * L) << n;

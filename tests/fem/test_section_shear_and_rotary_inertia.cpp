@@ -52,6 +52,7 @@ TEST(TransverseShearStiffness, ShortCantileverDeflectsPL3Over3EIPlusPLOverK) {
       const bool shear = std::string(type) == "B31";
       const double uy = P * L * L * L / (3 * E * i22) + (shear ? P * L / K13 : 0.0);
       const double uz = P * L * L * L / (3 * E * i11) + (shear ? P * L / K23 : 0.0);
+      std::printf("%s, %d element(s): tip deflections along 1 and 2 to %.2e, %.2e\n", type, n, rel(r.displacement(6 * n + 1), uy), rel(r.displacement(6 * n + 2), uz));
       EXPECT_LT(rel(r.displacement(6 * n + 1), uy), 1e-10) << type << " " << n;
       EXPECT_LT(rel(r.displacement(6 * n + 2), uz), 1e-10) << type << " " << n;
     }
