@@ -920,10 +920,14 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
           const SectionAssignment& sa = model.sections[static_cast<std::size_t>(model.beams[static_cast<std::size_t>(bi)].section)];
           const double mass_per_length = sa.material.density * sa.properties.area;
           mass_found += mass_per_length;
+          if (!(std::abs(mass_per_length * g) <= kLargestSi))
+            throw InputError(d.where, "a weight per length of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N/m", id, mass_per_length * g));
           if (mass_per_length > 0.0) model.element_loads.push_back({bi, mass_per_length * g * d.direction});
         } else if (raw.type == "MASS") {
           const double m = element_mass.at(id);
           mass_found += m;
+          if (!(std::abs(m * g) <= kLargestSi))
+            throw InputError(d.where, "a weight of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N", id, m * g));
           const int node = model.node_index(raw.node_ids[0]);
           for (int k = 0; k < 3; ++k)
             if (d.direction(k) != 0.0) model.loads.push_back({node, k, m * g * d.direction(k)});
