@@ -1,5 +1,5 @@
 // `framedyn static MESH.inp`: linear static response to the mesh's *CLOAD
-// loads and *BOUNDARY supports. Writes DIR/summary.json, displacements.csv,
+// and *DLOAD loads and *BOUNDARY supports. Writes DIR/summary.json, displacements.csv,
 // reactions.csv, section_forces.csv (with fiber stresses) and static.vtu.
 #include <fmt/format.h>
 
@@ -36,8 +36,8 @@ int run_static(const StaticOptions& opt) {
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
-  if (model.loads.empty())
-    throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, "at least one nodal load for a static analysis", "none");
+  if (model.loads.empty() && model.element_loads.empty())
+    throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis", "none");
   const fem::StaticResult r = fem::solve_static(model, progress.callback());
   progress.stage("recovering section forces");
   const std::vector<fem::StationResult> stations = fem::recover_stations(model, r.displacement, opt.stations);

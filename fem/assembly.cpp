@@ -67,6 +67,8 @@ class ElementGeometries {
     current_.data.shear_modulus = d.shear_modulus;
     current_.data.density = d.density;
     current_.data.theory = d.theory;
+    current_.data.bending_rotary_inertia = d.bending_rotary_inertia;
+    current_.data.released = beam.released;
     current_.data.section.area = d.section.area;
     current_.data.section.i11 = d.section.i11;
     current_.data.section.i22 = d.section.i22;

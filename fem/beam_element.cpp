@@ -87,7 +87,9 @@ void scatter(Matrix12d& target, const Eigen::Matrix4d& block, const int (&idx)[4
 
 }  // namespace
 
-Matrix12d beam_local_stiffness(const BeamElementData& e) {
+namespace {
+
+Matrix12d unreleased_stiffness(const BeamElementData& e) {
   const double L = e.length, E = e.youngs_modulus, G = e.shear_modulus;
   const SectionProperties& s = e.section;
   Matrix12d k = Matrix12d::Zero();
@@ -101,7 +103,39 @@ Matrix12d beam_local_stiffness(const BeamElementData& e) {
   return k;
 }
 
-Matrix12d beam_local_mass(const BeamElementData& e, MassFormulation formulation) {
+}  // namespace
+
+Matrix12d beam_release_transformation(const BeamElementData& e) {
+  if (e.released == 0) return Matrix12d::Identity();
+  return release_transformation(unreleased_stiffness(e), e.released);
+}
+
+Matrix12d beam_local_stiffness(const BeamElementData& e) {
+  const Matrix12d k = unreleased_stiffness(e);
+  if (e.released == 0) return k;
+  const Matrix12d t = release_transformation(k, e.released);
+  return t.transpose() * k * t;
+}
+
+Vector12d beam_local_uniform_load(const BeamElementData& e, const Eigen::Vector3d& q) {
+  const double L = e.length;
+  Vector12d p = Vector12d::Zero();
+  p(0) = p(6) = q.x() * L / 2;
+  // Plane x-y: deflection v, slope theta_z.
+  p(1) = p(7) = q.y() * L / 2;
+  p(5) = q.y() * L * L / 12;
+  p(11) = -q.y() * L * L / 12;
+  // Plane x-z: deflection w, slope -theta_y.
+  p(2) = p(8) = q.z() * L / 2;
+  p(4) = -q.z() * L * L / 12;
+  p(10) = q.z() * L * L / 12;
+  if (e.released == 0) return p;
+  return beam_release_transformation(e).transpose() * p;
+}
+
+namespace {
+
+Matrix12d unreleased_mass(const BeamElementData& e, MassFormulation formulation) {
   const double L = e.length, rho = e.density;
   const SectionProperties& s = e.section;
   Matrix12d m = Matrix12d::Zero();
@@ -121,10 +155,19 @@ Matrix12d beam_local_mass(const BeamElementData& e, MassFormulation formulation)
   m(0, 6) = m(6, 0) = axial;
   m(3, 3) = m(9, 9) = 2 * torsion;
   m(3, 9) = m(9, 3) = torsion;
-  const bool rotary = e.theory == BeamTheory::timoshenko;
+  const bool rotary = e.theory == BeamTheory::timoshenko || e.bending_rotary_inertia;
   scatter(m, bending_mass(rho * s.area, rho * s.i22, L, shear_parameter(e, s.i22, s.shear_area_1), rotary), kPlaneXY, kSignXY);
   scatter(m, bending_mass(rho * s.area, rho * s.i11, L, shear_parameter(e, s.i11, s.shear_area_2), rotary), kPlaneXZ, kSignXZ);
   return m;
+}
+
+}  // namespace
+
+Matrix12d beam_local_mass(const BeamElementData& e, MassFormulation formulation) {
+  const Matrix12d m = unreleased_mass(e, formulation);
+  if (e.released == 0) return m;
+  const Matrix12d t = beam_release_transformation(e);
+  return t.transpose() * m * t;
 }
 
 Matrix12d beam_transformation(const Eigen::Matrix3d& r) {
@@ -141,6 +184,7 @@ SectionGeometry section_geometry(const FrameModel& model, int section, BeamTheor
   g.data.density = sa.material.density;
   g.data.section = sa.properties;
   g.data.theory = theory;
+  g.data.bending_rotary_inertia = sa.bending_rotary_inertia;
   if (sa.properties.i12 != 0.0) {
     // Principal axes: the angle that makes the product of inertia vanish.
     const SectionProperties& s = sa.properties;
@@ -175,6 +219,7 @@ BeamGeometry beam_geometry(const FrameModel& model, const BeamElement& beam) {
   BeamGeometry g;
   g.axes = element_axes(model, beam, s);
   g.data = s.data;
+  g.data.released = beam.released;
   g.data.length = (model.nodes.at(static_cast<std::size_t>(beam.node_b)).position -
                    model.nodes.at(static_cast<std::size_t>(beam.node_a)).position).norm();
   return g;

@@ -9,12 +9,18 @@
 // inertia, Phi-dependent) for Timoshenko; the classical cubic-Hermite mass
 // without rotary inertia for Euler-Bernoulli; torsional inertia rho Ip in both.
 // Lumped mass: half the element's mass and section rotary inertia at each node.
+// Euler-Bernoulli with bending rotary inertia (a Rayleigh beam, the section
+// parameter RAYLEIGH): the cubic-Hermite mass plus the consistent rotary
+// inertia rho I / (30 L) [36, 3L, -36, 3L; 3L, 4L^2, -3L, -L^2; ...]
+// (Przemieniecki's Phi = 0 terms). Released member ends (member_releases.h)
+// are condensed out of stiffness, mass and loads alike.
 // Equations: docs/theory/fem.md, "Beam elements".
 #pragma once
 
 #include <Eigen/Dense>
 
 #include "fem/frame_model.h"
+#include "fem/member_releases.h"
 
 namespace framedyn::fem {
 
@@ -33,10 +39,19 @@ struct BeamElementData {
   double youngs_modulus = 0.0, shear_modulus = 0.0, density = 0.0;
   SectionProperties section;
   BeamTheory theory = BeamTheory::timoshenko;
+  bool bending_rotary_inertia = false;  // Euler-Bernoulli only: include rho I in bending (Timoshenko always does)
+  ReleaseMask released = 0;             // local DOFs released at the ends (*RELEASE)
 };
 
 Matrix12d beam_local_stiffness(const BeamElementData& e);
 Matrix12d beam_local_mass(const BeamElementData& e, MassFormulation formulation);
+// The release transformation T of the element (identity without releases).
+Matrix12d beam_release_transformation(const BeamElementData& e);
+// Consistent nodal loads (local axes, forces and moments on the nodes) of a
+// uniform force per length q (local components t, n1, n2): the fixed-end
+// reactions with their sign reversed, exact for the Hermite and the
+// Timoshenko element alike (v: qL/2, +-qL^2/12), condensed for releases.
+Vector12d beam_local_uniform_load(const BeamElementData& e, const Eigen::Vector3d& q_local);
 // 12x12 block-diagonal transformation, local = T * global.
 Matrix12d beam_transformation(const Eigen::Matrix3d& local_axes);
 

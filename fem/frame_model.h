@@ -18,6 +18,7 @@
 
 #include "core/units.h"
 #include "fem/beam_section.h"
+#include "fem/member_releases.h"
 
 namespace framedyn::fem {
 
@@ -48,6 +49,9 @@ struct SectionAssignment {
   SectionProperties properties;  // SI
   Material material;             // SI; for GENERAL sections E, G, density come from the section
   Eigen::Vector3d n1_direction{0.0, 0.0, -1.0};
+  // Euler-Bernoulli elements of this section get the bending rotary inertia
+  // rho I11, rho I22 (a Rayleigh beam; section parameter RAYLEIGH).
+  bool bending_rotary_inertia = false;
 };
 
 struct BeamElement {
@@ -62,6 +66,7 @@ struct BeamElement {
   bool reduced_integration = false;  // B32R: 2-point Gauss rule (B32: 3-point)
 
   bool is_quadratic() const { return node_m >= 0; }
+  ReleaseMask released = 0;      // member-end releases (*RELEASE), local rotation DOFs
 };
 
 struct PointMass {
@@ -92,6 +97,13 @@ struct NodalLoad {
   double value = 0.0;            // N or N m
 };
 
+// A uniform line load on a beam element (*DLOAD PX, PY, PZ, P1, P2 and the
+// weight of the beam under GRAV), force per length in global components.
+struct ElementLoad {
+  int beam = 0;                  // index into FrameModel::beams
+  Eigen::Vector3d force_per_length = Eigen::Vector3d::Zero();  // N/m, global axes
+};
+
 struct FrameModel {
   std::vector<Node> nodes;
   std::vector<BeamElement> beams;
@@ -99,7 +111,8 @@ struct FrameModel {
   std::vector<PointMass> point_masses;
   std::vector<Spring> springs;
   std::vector<Constraint> constraints;
-  std::vector<NodalLoad> loads;
+  std::vector<NodalLoad> loads;                // *CLOAD, and GRAV on point masses
+  std::vector<ElementLoad> element_loads;     // *DLOAD on beams (see fem/distributed_loads.h)
   std::map<std::string, std::vector<int>> node_sets;     // upper-case name -> node indices
   std::map<std::string, std::vector<int>> element_sets;  // upper-case name -> element ids (beams and others)
   core::UnitSystem units = core::UnitSystem::si();       // the unit system the input was written in

@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "fem/beam_element.h"
 #include "fem/quadratic_beam_element.h"
+#include "fem/member_releases.h"
 
 namespace framedyn::fem {
 
@@ -317,6 +318,9 @@ struct RawSection {
   bool general = false;
   double general_density = 0.0, general_e = 0.0, general_g = 0.0;
   InputLocation where;
+  bool rayleigh = false;                       // RAYLEIGH: bending rotary inertia for B33
+  std::optional<Eigen::Vector2d> shear_stiffness;  // *TRANSVERSE SHEAR STIFFNESS (K13 along 1, K23 along 2)
+  InputLocation shear_where;
 };
 
 struct RawMaterial {
@@ -407,6 +411,19 @@ void refuse_offsets(const Keyword& k) {
                        std::string(name) + "=" + it->second);
   }
 }
+struct RawDistributedLoad {  // *DLOAD
+  std::string target;        // element number or ELSET; empty: every element (GRAV only)
+  std::string type;          // GRAV, P1, P2, PX, PY, PZ
+  double magnitude = 0.0;    // force per length, or an acceleration for GRAV
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // GRAV, unit length
+  InputLocation where;
+};
+
+struct RawRelease {  // *RELEASE
+  std::string target;
+  ReleaseMask mask = 0;
+  InputLocation where;
+};
 
 class Parser {
  public:
@@ -446,6 +463,16 @@ class Parser {
   void cload(const Block& b);
   void element_property(const Block& b);
   void step_keyword(const Block& b);
+  // Distributed loads, end releases, section extras (issue 13); see their definitions.
+  std::vector<RawDistributedLoad> dloads_;
+  std::vector<RawRelease> releases_;
+  void dload(const Block& b);
+  void release(const Block& b);
+  void transverse_shear_stiffness(const Block& b, const Block* previous);
+  std::vector<int> element_targets(const std::string& target, const InputLocation& where) const;
+  void apply_section_extras(FrameModel& model, const core::UnitSystem& units) const;
+  void apply_releases(FrameModel& model) const;
+  void apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const;
   FrameModel build(const core::UnitSystem& units);
   std::vector<int> set_members(const std::string& name, bool nodes, const InputLocation& where) const;
 };
@@ -590,10 +617,20 @@ Eigen::Vector3d orientation_line(const Line& l, const Keyword& k) {
   return n;
 }
 
+// RAYLEIGH (a framedyn extension, no value): Euler-Bernoulli elements of the
+// section get the rotary inertia of bending (see docs/user-guide.md).
+bool rayleigh_parameter(const Keyword& k) {
+  auto it = k.params.find("RAYLEIGH");
+  if (it == k.params.end()) return false;
+  if (!it->second.empty()) throw InputError(k.where, "RAYLEIGH without a value", "RAYLEIGH=" + it->second);
+  return true;
+}
+
 void Parser::beam_section(const Block& b) {
-  check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION", "OFFSET1", "OFFSET2"});
+  check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION", "OFFSET1", "OFFSET2", "RAYLEIGH"});
   refuse_offsets(b.keyword);
   RawSection s;
+  s.rayleigh = rayleigh_parameter(b.keyword);
   s.elset = upper(required_param(b.keyword, "ELSET"));
   s.material = upper(required_param(b.keyword, "MATERIAL"));
   s.shape = upper(required_param(b.keyword, "SECTION"));
@@ -618,8 +655,9 @@ void Parser::beam_section(const Block& b) {
 
 void Parser::general_beam_section(const Block& b) {
   if (calculix_shape_section(b)) return;
-  check_params(b.keyword, {"ELSET", "SECTION", "DENSITY"});
+  check_params(b.keyword, {"ELSET", "SECTION", "DENSITY", "RAYLEIGH"});
   RawSection s;
+  s.rayleigh = rayleigh_parameter(b.keyword);
   s.general = true;
   s.shape = "GENERAL";
   s.elset = upper(required_param(b.keyword, "ELSET"));
@@ -796,6 +834,219 @@ void Parser::step_keyword(const Block& b) {
   // Output requests (*NODE PRINT, *EL PRINT, ...) are CalculiX's business: skipped.
 }
 
+// ---------------------------------------------------------------- *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS
+
+// *DLOAD data lines (Abaqus): element or ELSET, load type, magnitude; for GRAV
+// also the direction (three components, normalised here). Uniform loads on
+// beams only: GRAV (acceleration, the mass from density and area, or the
+// *MASS of MASS elements), P1 and P2 (force per length along the section's
+// local 1 and 2 directions), PX, PY, PZ (force per length along global X, Y, Z).
+void Parser::dload(const Block& b) {
+  check_params(b.keyword, {});
+  if (b.data.empty()) throw InputError(b.keyword.where, "data lines: element or ELSET, load type, magnitude", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    RawDistributedLoad r;
+    r.where = at(l, b.keyword);
+    if (f.size() < 2) throw InputError(r.where, "element or ELSET, load type, magnitude", "'" + l.text + "'");
+    r.target = f[0];
+    r.type = upper(f[1]);
+    if (r.type == "GRAV") {
+      if (f.size() != 6) throw InputError(r.where, "element or ELSET (empty: all elements), GRAV, acceleration, direction x, y, z", "'" + l.text + "'");
+      r.magnitude = parse_double(f[2], r.where, "the acceleration of gravity");
+      for (int i = 0; i < 3; ++i) r.direction(i) = f[3 + static_cast<std::size_t>(i)].empty() ? 0.0 : parse_double(f[3 + static_cast<std::size_t>(i)], r.where, "a direction component");
+      const double norm = r.direction.norm();
+      if (!(norm > 0.0) || !std::isfinite(norm)) throw InputError(r.where, "a nonzero, finite gravity direction", "'" + l.text + "'");
+      r.direction /= norm;
+    } else if (r.type == "P1" || r.type == "P2" || r.type == "PX" || r.type == "PY" || r.type == "PZ") {
+      if (f.size() != 3) throw InputError(r.where, "element or ELSET, " + r.type + ", force per length", "'" + l.text + "'");
+      if (r.target.empty()) throw InputError(r.where, "an element or ELSET for " + r.type + " (only GRAV applies to all elements)", "an empty field");
+      r.magnitude = parse_double(f[2], r.where, "a force per length");
+    } else {
+      throw InputError(r.where, "a load type framedyn reads on beams: GRAV, P1, P2, PX, PY or PZ (uniform)", "'" + f[1] + "'");
+    }
+    dloads_.push_back(r);
+  }
+}
+
+// *RELEASE data lines (Abaqus): element or ELSET, end S1 (first node) or S2,
+// release combination M1, M2, T, ALLM or moments joined by '-' (M1-M2, M1-T, M2-T).
+void Parser::release(const Block& b) {
+  check_params(b.keyword, {});
+  if (b.data.empty()) throw InputError(b.keyword.where, "data lines: element or ELSET, S1 or S2, release combination", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    RawRelease r;
+    r.where = at(l, b.keyword);
+    if (f.size() != 3 || f[0].empty()) throw InputError(r.where, "element or ELSET, S1 or S2, release combination", "'" + l.text + "'");
+    r.target = f[0];
+    const std::string end = upper(f[1]);
+    if (end != "S1" && end != "S2") throw InputError(r.where, "the element end S1 (first node) or S2 (second node)", "'" + f[1] + "'");
+    const int e = end == "S1" ? 0 : 1;
+    const std::string combination = upper(f[2]);
+    std::size_t start = 0;
+    while (start <= combination.size()) {
+      const std::size_t dash = combination.find('-', start);
+      const std::string token = combination.substr(start, dash == std::string::npos ? std::string::npos : dash - start);
+      if (token == "M1") r.mask |= release_bit(e, kReleaseM1);
+      else if (token == "M2") r.mask |= release_bit(e, kReleaseM2);
+      else if (token == "T") r.mask |= release_bit(e, kReleaseTorsion);
+      else if (token == "ALLM") r.mask |= release_bit(e, kReleaseM1) | release_bit(e, kReleaseM2) | release_bit(e, kReleaseTorsion);
+      else throw InputError(r.where, "a release combination of M1, M2, T (joined by '-') or ALLM", "'" + f[2] + "'");
+      if (dash == std::string::npos) break;
+      start = dash + 1;
+    }
+    releases_.push_back(r);
+  }
+}
+
+// *TRANSVERSE SHEAR STIFFNESS after a beam section (Abaqus, beams): K23 (shear
+// along local 2), K13 (shear along local 1)[, slenderness compensation factor].
+// framedyn takes K = G A_s as given (no slenderness compensation: the factor
+// must be blank or 0); Timoshenko elements (B31) use it, B33 has no shear strain.
+void Parser::transverse_shear_stiffness(const Block& b, const Block* previous) {
+  check_params(b.keyword, {});
+  if (!previous || (previous->keyword.name != "*BEAM SECTION" && previous->keyword.name != "*BEAM GENERAL SECTION") || sections_.empty())
+    throw InputError(b.keyword.where, "*TRANSVERSE SHEAR STIFFNESS directly after the *BEAM SECTION or *BEAM GENERAL SECTION it belongs to",
+                     previous ? "it after " + previous->keyword.name : "it first");
+  if (b.data.size() != 1) throw InputError(b.keyword.where, "one data line: K23, K13[, slenderness compensation]", fmt::format("{} data lines", b.data.size()));
+  const std::vector<double> v = numbers(b.data[0], b.keyword, 2, 3, "K23, K13[, slenderness compensation]");
+  if (!(v[0] > 0.0) || !(v[1] > 0.0)) throw InputError(at(b.data[0], b.keyword), "positive shear stiffnesses K23 and K13", "'" + b.data[0].text + "'");
+  if (v.size() == 3 && v[2] != 0.0)
+    throw InputError(at(b.data[0], b.keyword), "a slenderness compensation factor of 0 or blank (framedyn uses K as given)", "'" + b.data[0].text + "'");
+  RawSection& s = sections_.back();
+  if (s.shear_stiffness) throw InputError(b.keyword.where, "one *TRANSVERSE SHEAR STIFFNESS per section", "a second one");
+  s.shear_stiffness = Eigen::Vector2d(v[1], v[0]);  // (along 1, along 2)
+  s.shear_where = b.keyword.where;
+}
+
+std::vector<int> Parser::element_targets(const std::string& target, const InputLocation& where) const {
+  if (is_integer(target)) {
+    const int id = static_cast<int>(parse_int(target, where, "element number"));
+    if (!element_index_.count(id)) throw InputError(where, "an element defined by *ELEMENT or a defined *ELSET", fmt::format("element {}", id));
+    return {id};
+  }
+  auto it = elsets_.find(upper(target));
+  if (it == elsets_.end()) throw InputError(where, "an element number or a defined *ELSET", "'" + target + "'");
+  std::vector<int> ids = it->second;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+// RAYLEIGH and *TRANSVERSE SHEAR STIFFNESS onto the sections (model.sections
+// was built from sections_ in order, one for one).
+void Parser::apply_section_extras(FrameModel& model, const core::UnitSystem& units) const {
+  for (std::size_t i = 0; i < sections_.size() && i < model.sections.size(); ++i) {
+    const RawSection& raw = sections_[i];
+    SectionAssignment& sa = model.sections[i];
+    sa.bending_rotary_inertia = raw.rayleigh;
+    if (!raw.shear_stiffness) continue;
+    const double g = sa.material.shear_modulus;
+    const double k1 = units.to_si((*raw.shear_stiffness)(0), Quantity::force), k2 = units.to_si((*raw.shear_stiffness)(1), Quantity::force);
+    if (!(k1 <= kLargestSi) || !(k2 <= kLargestSi) || !(g > 0.0))
+      throw InputError(raw.shear_where, "shear stiffnesses of magnitude at most 1e300 in SI units and a section with G > 0", "larger values");
+    sa.properties.shear_area_1 = k1 / g;  // the element uses G A_s
+    sa.properties.shear_area_2 = k2 / g;
+  }
+}
+
+void Parser::apply_releases(FrameModel& model) const {
+  for (const RawRelease& r : releases_) {
+    for (int id : element_targets(r.target, r.where)) {
+      const int bi = model.beam_index(id);
+      if (bi < 0)
+        throw InputError(r.where, "beam elements (B31, B33) to release", fmt::format("element {} of type {}", id, elements_[element_index_.at(id)].type));
+      BeamElement& beam = model.beams[static_cast<std::size_t>(bi)];
+      if (beam.is_quadratic())
+        throw InputError(r.where, "two-node beam elements (B31, B33) to release (releases of three-node beams are not implemented)",
+                         fmt::format("element {} of type {}", id, elements_[element_index_.at(id)].type));
+      beam.released |= r.mask;
+      // On a section with a product of inertia the element works in principal
+      // axes: a single bending release (M1 or M2 alone) would not be the
+      // moment about the section's 1 or 2 axis.
+      if (model.sections[static_cast<std::size_t>(beam.section)].properties.i12 != 0.0)
+        for (int end = 0; end < 2; ++end)
+          if (((beam.released & release_bit(end, kReleaseM1)) != 0) != ((beam.released & release_bit(end, kReleaseM2)) != 0))
+            throw InputError(r.where, "M1 and M2 released together on a section with I12 != 0 (its elements bend about principal axes)",
+                             fmt::format("element {}: {}", id, describe_releases(beam.released)));
+      try {
+        beam_release_transformation(beam_geometry(model, beam).data);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(r.where, "releases that leave the element stiff against every motion of its nodes", fmt::format("element {}: {}", id, e.what()));
+      }
+    }
+  }
+}
+
+void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const {
+  if (dloads_.empty()) return;
+  // The mass of each MASS element (several may share a node; model.point_masses merges them).
+  std::unordered_map<int, double> element_mass;
+  for (const RawElementProperty& p : properties_)
+    if (p.keyword == "*MASS")
+      for (int id : model.element_sets.at(p.elset)) element_mass[id] = units.to_si(p.values[0], Quantity::mass);
+  // Accelerations: length per second squared, and time is in seconds in every system.
+  const double acceleration_factor = units.to_si_factor(Quantity::length);
+  for (const RawDistributedLoad& d : dloads_) {
+    std::vector<int> ids;
+    if (d.target.empty()) {
+      for (const RawElement& e : elements_) ids.push_back(e.id);
+    } else {
+      ids = element_targets(d.target, d.where);
+    }
+    double mass_found = 0.0;
+    for (int id : ids) {
+      const int bi = model.beam_index(id);
+      const RawElement& raw = elements_[element_index_.at(id)];
+      if (bi >= 0 && model.beams[static_cast<std::size_t>(bi)].is_quadratic())
+        throw InputError(d.where, "two-node beam elements (B31, B33) for *DLOAD (distributed loads on three-node beams are not implemented)",
+                         fmt::format("element {} of type {}", id, raw.type));
+      if (d.type == "GRAV") {
+        const double g = d.magnitude * acceleration_factor;
+        if (bi >= 0) {
+          const SectionAssignment& sa = model.sections[static_cast<std::size_t>(model.beams[static_cast<std::size_t>(bi)].section)];
+          const double mass_per_length = sa.material.density * sa.properties.area;
+          mass_found += mass_per_length;
+          if (!(std::abs(mass_per_length * g) <= kLargestSi))
+            throw InputError(d.where, "a weight per length of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N/m", id, mass_per_length * g));
+          if (mass_per_length > 0.0) model.element_loads.push_back({bi, mass_per_length * g * d.direction});
+        } else if (raw.type == "MASS") {
+          const double m = element_mass.at(id);
+          mass_found += m;
+          if (!(std::abs(m * g) <= kLargestSi))
+            throw InputError(d.where, "a weight of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N", id, m * g));
+          const int node = model.node_index(raw.node_ids[0]);
+          for (int k = 0; k < 3; ++k)
+            if (d.direction(k) != 0.0) model.loads.push_back({node, k, m * g * d.direction(k)});
+        }
+        // ROTARYI and SPRING elements have no translational mass: no weight.
+        continue;
+      }
+      if (bi < 0)
+        throw InputError(d.where, "beam elements (B31, B33) for a " + d.type + " line load", fmt::format("element {} of type {}", id, raw.type));
+      const BeamElement& beam = model.beams[static_cast<std::size_t>(bi)];
+      const double q = units.to_si(d.magnitude, Quantity::force_per_length);
+      Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+      if (d.type == "PX") direction = Eigen::Vector3d::UnitX();
+      else if (d.type == "PY") direction = Eigen::Vector3d::UnitY();
+      else if (d.type == "PZ") direction = Eigen::Vector3d::UnitZ();
+      else {
+        // The section's local axes as written (n1, n2 = t x n1), not the principal axes the element may use.
+        const Eigen::Matrix3d axes = beam_local_axes(model.nodes[static_cast<std::size_t>(beam.node_a)].position,
+                                                     model.nodes[static_cast<std::size_t>(beam.node_b)].position,
+                                                     model.sections[static_cast<std::size_t>(beam.section)].n1_direction);
+        direction = axes.row(d.type == "P1" ? 1 : 2).transpose();
+      }
+      if (!(std::abs(q) <= kLargestSi)) throw InputError(d.where, "a force per length of magnitude at most 1e300 in SI units", fmt::format("{:g}", d.magnitude));
+      model.element_loads.push_back({bi, q * direction});
+    }
+    if (d.type == "GRAV" && !(mass_found > 0.0))
+      throw InputError(d.where, "elements with mass for GRAV (beams whose material has a *DENSITY, or MASS elements)",
+                       d.target.empty() ? std::string("no mass in the model") : "no mass in '" + d.target + "'");
+  }
+}
+
 FrameModel Parser::run(const InpReadOptions& options) {
   const std::vector<Block> blocks = make_blocks(src_.lines);
   for (const Block& b : blocks) {
@@ -812,6 +1063,9 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*DENSITY") density(b);
     else if (k == "*BOUNDARY") boundary(b);
     else if (k == "*CLOAD") cload(b);
+    else if (k == "*DLOAD") dload(b);
+    else if (k == "*RELEASE") release(b);
+    else if (k == "*TRANSVERSE SHEAR STIFFNESS") transverse_shear_stiffness(b, &b == &blocks.front() ? nullptr : &b - 1);
     else if (k == "*MASS" || k == "*ROTARY INERTIA" || k == "*SPRING") element_property(b);
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
@@ -819,7 +1073,7 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
-                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *MASS, *ROTARY INERTIA, *SPRING, *INCLUDE, "
+                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *INCLUDE, "
                        "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
@@ -1038,6 +1292,10 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const RawElement& e : elements_)
     if (e.type != "B31" && e.type != "B33" && e.type != "B32" && e.type != "B32R" && !has_property.count(e.id))
       throw InputError(e.where, "a *MASS, *ROTARY INERTIA or *SPRING for element " + std::to_string(e.id) + " of type " + e.type, "none");
+
+  apply_section_extras(model, units);
+  apply_releases(model);
+  apply_distributed_loads(model, units);
 
   // Supports and loads.
   auto targets = [&](const std::string& t, const InputLocation& where) {

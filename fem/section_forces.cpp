@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "fem/distributed_loads.h"
+
 namespace framedyn::fem {
 
 Vector12d element_end_forces(const BeamGeometry& g, const BeamElement& beam, const Eigen::VectorXd& u) {
@@ -29,6 +31,16 @@ SectionForces section_forces_at(const Vector12d& f, double x) {
   return s;
 }
 
+SectionForces section_forces_at(const Vector12d& f, double x, const Eigen::Vector3d& q) {
+  SectionForces s = section_forces_at(f, x);
+  s.n -= q.x() * x;
+  s.vy -= q.y() * x;
+  s.vz -= q.z() * x;
+  s.my -= q.z() * x * x / 2;
+  s.mz += q.y() * x * x / 2;
+  return s;
+}
+
 std::vector<double> fiber_stresses(const SectionProperties& sec, const SectionForces& f) {
   std::vector<double> out;
   out.reserve(sec.stress_points.size());
@@ -41,13 +53,17 @@ std::vector<StationResult> recover_stations(const FrameModel& model, const Eigen
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
   std::vector<StationResult> out;
   out.reserve(model.beams.size() * static_cast<std::size_t>(stations));
-  for (const BeamElement& beam : model.beams) {
-    if (beam.is_quadratic()) {
+  const std::vector<Eigen::Vector3d> line_loads = beam_line_loads(model);
+  for (std::size_t i = 0; i < model.beams.size(); ++i) {
+    const BeamElement& beam = model.beams[i];
+    if (beam.is_quadratic()) {  // line loads on three-node beams are refused by the reader
       for (StationResult& r : quadratic_beam_stations(model, beam, u, stations)) out.push_back(std::move(r));
       continue;
     }
     const BeamGeometry g = beam_geometry(model, beam);
-    const Vector12d f = element_end_forces(g, beam, u);
+    const Eigen::Vector3d q = g.axes * line_loads[i];
+    Vector12d f = element_end_forces(g, beam, u);
+    if (!q.isZero(0.0)) f -= beam_local_uniform_load(g.data, q);
     const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
     const Eigen::Vector3d& b = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
     for (int s = 0; s < stations; ++s) {
@@ -57,7 +73,7 @@ std::vector<StationResult> recover_stations(const FrameModel& model, const Eigen
       const double xi = static_cast<double>(s) / (stations - 1);
       r.x = xi * g.data.length;
       r.point = a + xi * (b - a);
-      r.forces = section_forces_at(f, r.x);
+      r.forces = section_forces_at(f, r.x, q);
       r.fiber_stress = fiber_stresses(g.data.section, r.forces);
       out.push_back(std::move(r));
     }

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "fem/assembly.h"
+#include "fem/distributed_loads.h"
 #include "fem/modal_analysis.h"
 #include "fem/sparse_cholesky.h"
 
@@ -55,8 +56,7 @@ StaticResult solve_static(const FrameModel& model, const std::function<void(cons
   const DofMap dofs = make_dof_map(model);
   const int ndof = model.dof_count();
   StaticResult r;
-  r.applied = Eigen::VectorXd::Zero(ndof);
-  for (const NodalLoad& l : model.loads) r.applied(kDofsPerNode * l.node + l.dof) += l.value;
+  r.applied = applied_load_vector(model);  // nodal loads and the consistent loads of *DLOAD
   Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
   for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
 

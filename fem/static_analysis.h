@@ -1,4 +1,5 @@
-// Linear static solve under nodal loads and prescribed displacements:
+// Linear static solve under nodal loads, the consistent nodal loads of
+// distributed loads (fem/distributed_loads.h) and prescribed displacements:
 // K_ff u_f = f_f - K_fc u_c on a CHOLMOD factorisation, then reactions
 // R = K u - f at the constrained DOFs. A singular stiffness (a mechanism,
 // a frame without supports) is reported with the nodes that can move freely.
@@ -15,7 +16,7 @@ namespace framedyn::fem {
 
 struct StaticResult {
   Eigen::VectorXd displacement;  // all DOFs (m, rad)
-  Eigen::VectorXd applied;       // nodal loads on all DOFs (N, N m)
+  Eigen::VectorXd applied;       // nodal loads on all DOFs, with the consistent loads of *DLOAD (N, N m)
   Eigen::VectorXd reaction;      // all DOFs; nonzero only at constrained DOFs (N, N m)
   double relative_residual = 0.0;  // ||K_ff u_f - f_f|| / ||f_f||
 };

@@ -310,6 +310,14 @@ std::vector<Row> rows() {
                "2, 0.2, 0, 0\n3, 2, 0, 0\n*ELEMENT, TYPE=B32, ELSET=FRAME\n1, 1, 2, 3\n", "1, 1, 2, 3", "*ELEMENT"),
       mesh_row("INP-45", "*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n", "*ELEMENT, TYPE=B32R, ELSET=FRAME\n1, 1, 2, 1\n", "1, 1, 2, 1",
                "*ELEMENT"),
+      // distributed loads, end releases, section options (issue 13)
+      mesh_row("INP-46", kData, "*DLOAD\nFRAME, P3, 100.\n" + kData, "P3", "*DLOAD"),
+      mesh_row("INP-47", kData, "*DLOAD\nFRAME, GRAV, 9.81, 0, 0, 0\n" + kData, "GRAV", "*DLOAD"),
+      mesh_row("INP-48", "*DENSITY\n7850\n" + kData, "*DLOAD\n, GRAV, 9.81, 0, 0, -1\n" + kData, ", GRAV", "*DLOAD"),
+      mesh_row("INP-49", kData, "*RELEASE\n2, S3, M1\n" + kData, "S3", "*RELEASE"),
+      mesh_row("INP-50", kData, "*RELEASE\n2, S1, T\n2, S2, T\n" + kData, "S2, T", "*RELEASE"),
+      mesh_row("INP-51", kData, "*TRANSVERSE SHEAR STIFFNESS\n1e8, 1e8\n" + kData, "*TRANSVERSE", "*TRANSVERSE SHEAR STIFFNESS"),
+      mesh_row("INP-52", "SECTION=RECT", "SECTION=RECT, RAYLEIGH=YES", "*BEAM SECTION", "*BEAM SECTION"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {

@@ -383,6 +383,62 @@ TEST_F(CalculixPeer, FreeFreeBeamHasSixRigidBodyModesAndElasticFrequenciesAgree)
 //    a beam with t = (0.6, 0.8, 0) and n1 = z, or with t = (0.48, 0.6,
 //    0.64); beams in the xz or yz plane, and along an axis, run.)
 
+// Distributed loads on the skewed cantilever of the previous test. GRAV is
+// a body force in both codes (CalculiX puts rho g on its expanded bricks,
+// framedyn rho A g on the beam), so the deflection lines must agree as the
+// tip-load cases do (0.5 % of the tip value, slender bending). P1 and P2 do
+// not mean the same: Abaqus, and framedyn, take a force per length along the
+// section's local 1 or 2 direction; CalculiX takes a pressure on the face of
+// its expanded beam, i.e. a force per length of p times the section's width
+// across that face (b along 2 for P1, a along 1 for P2; measured with ccx
+// 2.20: P1 = 100 deflects as 4.0 N/m on this 0.02 x 0.04 section). The
+// comparison applies framedyn's line load p b (P1) and p a (P2) to check the
+// direction and the consistent loads against the peer (docs/user-guide.md
+// states the difference).
+TEST_F(CalculixPeer, CantileverUnderGravityAndLineLoadsAgrees) {
+  constexpr int n = 20;
+  constexpr int tip = n + 1;
+  const Eigen::Vector3d t(0.6, 0.0, 0.8), n1 = Eigen::Vector3d::UnitY(), n2 = t.cross(n1);
+  const std::string model = straight_beam_inp(t, 1.0, n, n1, "*BOUNDARY\n1, 1, 6\n");
+  const fs::path path = write("skew_cantilever.inp", model);
+  const std::vector<int> nodes = {6, 11, 16, tip};
+  struct Case {
+    std::string name, ccx_load, framedyn_load;
+    Eigen::Vector3d direction;
+  };
+  const double p = 100.0;
+  const std::vector<Case> cases = {
+      {"GRAV along n1", "*DLOAD\nBEAM, GRAV, 9.81, 0, 1, 0\n", "*DLOAD\nBEAM, GRAV, 9.81, 0, 1, 0\n", n1},
+      {"GRAV along -n2", fmt::format("*DLOAD\nBEAM, GRAV, 9.81, {:.15g}, 0, {:.15g}\n", -n2.x(), -n2.z()),
+       fmt::format("*DLOAD\nBEAM, GRAV, 9.81, {:.15g}, 0, {:.15g}\n", -n2.x(), -n2.z()), -n2},
+      {"P1 (ccx pressure x b)", fmt::format("*DLOAD\nBEAM, P1, {}\n", p), fmt::format("*DLOAD\nBEAM, P1, {:.15g}\n", p * kB2), n1},
+      {"P2 (ccx pressure x a)", fmt::format("*DLOAD\nBEAM, P2, {}\n", p), fmt::format("*DLOAD\nBEAM, P2, {:.15g}\n", p * kB1), n2},
+  };
+  const double tol = 0.005;
+  fmt::print("\nDistributed loads on the skewed cantilever (20 B31 elements, RECT 0.02 x 0.04, steel)\n"
+             "| load | framedyn tip displacement (m) | CalculiX (m) | CalculiX / framedyn | tolerance |\n|---|---:|---:|---:|---:|\n");
+  int case_number = 0;
+  for (const Case& c : cases) {
+    const fem::FrameModel m = fem::read_inp_text(model + "*STEP\n*STATIC\n" + c.framedyn_load + "*END STEP\n", "skew_cantilever_dload.inp", dir_);
+    const fem::StaticResult fd = fem::solve_static(m);
+    const peer::CalculixResult ccx =
+        peer::run_calculix_static(path.string(), c.ccx_load, nodes, (dir_ / fmt::format("ccx_dload_{}", ++case_number)).string());
+    const auto fd_u = [&](int id) { return Eigen::Vector3d(fd.displacement.segment<3>(6 * m.node_index(id))); };
+    const auto ccx_u = [&](int id) {
+      const std::array<double, 3>& u = ccx.displacements.at(id);
+      return Eigen::Vector3d(u[0], u[1], u[2]);
+    };
+    const double fd_tip = fd_u(tip).dot(c.direction), ccx_tip = ccx_u(tip).dot(c.direction);
+    fmt::print("| {} | {:.6e} | {:.6e} | {:.5f} | ±{:.2g} % |\n", c.name, fd_tip, ccx_tip, ccx_tip / fd_tip, 100 * tol);
+    RecordProperty(fmt::format("dload_case{}_tip_ratio", case_number), fmt::format("{:.6f}", ccx_tip / fd_tip));
+    EXPECT_GT(fd_tip, 0.0) << c.name;
+    EXPECT_NEAR(ccx_tip / fd_tip, 1.0, tol) << c.name;
+    for (int id : nodes)
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(ccx_u(id)[d], fd_u(id)[d], tol * fd_tip) << c.name << ", node " << id << ", component " << d + 1;
+  }
+}
+
 TEST_F(CalculixPeer, CantileverTipDeflectionsAgreeInBothPlanes) {
   constexpr int n = 20;
   constexpr int tip = n + 1;

@@ -948,7 +948,7 @@ std::vector<ErrorCase> error_cases() {
   return {
       // ---- keywords and parameters
       {"UnknownKeyword", kModel + "*SURFACE, NAME=S\n", "*SURFACE, NAME=S", "*SURFACE", {"expected a keyword framedyn reads", "found *SURFACE"}},
-      {"UnknownKeywordInsideStep", kModel + "*STEP\n*DLOAD\n1, GRAV, 9.81, 0, 0, -1\n*END STEP\n", "*DLOAD", "*DLOAD", {"found *DLOAD"}},
+      {"UnknownKeywordInsideStep", kModel + "*STEP\n*TEMPERATURE\n1, 100.\n*END STEP\n", "*TEMPERATURE", "*TEMPERATURE", {"found *TEMPERATURE"}},
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
       {"ParameterOnBoundary", kModel + "*BOUNDARY, OP=NEW\n1, ENCASTRE\n", "*BOUNDARY, OP=NEW", "*BOUNDARY", {"expected no parameters", "found parameter OP"}},

@@ -1,5 +1,5 @@
 // libFuzzer harness for the .inp mesh reader (fem/inp_reader.h). Any input
-// must either read into a model that assembles to finite K and M, or be
+// must either read into a model that assembles to finite K, M and load vector, or be
 // refused with core::InputError naming file, line and keyword. Anything else
 // — a crash, a sanitizer report, another exception, a NaN in K or M — is a
 // finding. Seeds: meshes/*.inp and the hand-made decks of the tests.
@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "fem/assembly.h"
+#include "fem/distributed_loads.h"
 #include "fem/inp_reader.h"
 
 namespace {
@@ -37,6 +38,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const framedyn::fem::FreeSystem system = framedyn::fem::assemble(model, dofs);
     require_finite(system.stiffness, "stiffness");
     require_finite(system.mass, "mass");
+    if (!framedyn::fem::applied_load_vector(model).allFinite()) {
+      std::fprintf(stderr, "accepted mesh gives a non-finite load vector entry\n");
+      std::abort();
+    }
   } catch (const framedyn::core::InputError&) {
     // the expected outcome for bad input
   }
