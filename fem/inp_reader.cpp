@@ -21,6 +21,7 @@
 
 #include "core/error.h"
 #include "fem/beam_element.h"
+#include "fem/rigid_links.h"
 
 namespace framedyn::fem {
 
@@ -338,6 +339,12 @@ struct RawLoad {
   InputLocation where;
 };
 
+struct RawRigidLink {  // *RIGID BODY (one per node set) or one *MPC BEAM line
+  std::string reference, slaves;  // node number or node set name
+  bool slave_rotations = true;    // false for PIN NSET
+  InputLocation where;
+};
+
 struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
   std::string keyword, elset;
   std::vector<double> values;
@@ -365,6 +372,7 @@ class Parser {
   std::vector<RawBoundary> boundaries_;
   std::vector<RawLoad> loads_;
   std::vector<RawElementProperty> properties_;
+  std::vector<RawRigidLink> rigid_links_;
   std::optional<int> frequency_count_;
   bool in_step_ = false;
   int steps_ = 0;
@@ -382,6 +390,9 @@ class Parser {
   void cload(const Block& b);
   void element_property(const Block& b);
   void step_keyword(const Block& b);
+  void rigid_body(const Block& b);
+  void mpc(const Block& b);
+  void build_rigid_links(FrameModel& model) const;
   FrameModel build(const core::UnitSystem& units);
   std::vector<int> set_members(const std::string& name, bool nodes, const InputLocation& where) const;
 };
@@ -685,6 +696,87 @@ void Parser::element_property(const Block& b) {
   properties_.push_back(p);
 }
 
+// ------------------------------------------------------------ rigid links
+// *RIGID BODY, NSET=..., REF NODE=... (CalculiX; Abaqus's TIE NSET and PIN
+// NSET too) and *MPC with BEAM lines ("BEAM, slave, master", as Abaqus
+// defines it): the nodes follow the reference node rigidly (fem/rigid_links.h).
+
+void Parser::rigid_body(const Block& b) {
+  check_params(b.keyword, {"NSET", "TIE NSET", "PIN NSET", "REF NODE", "ROT NODE", "ELSET", "POSITION"});
+  const Keyword& k = b.keyword;
+  if (k.params.count("ROT NODE"))
+    throw InputError(k.where, "no ROT NODE (framedyn's nodes have rotations: the REF NODE's DOFs 4-6 are the body's rotations; put the "
+                              "*BOUNDARY and *CLOAD of the rotation node's DOFs 1-3 on DOFs 4-6 of the REF NODE)",
+                     "ROT NODE=" + k.params.at("ROT NODE"));
+  if (k.params.count("ELSET"))
+    throw InputError(k.where, "the tied nodes as NSET=, TIE NSET= or PIN NSET= (framedyn has no rigid elements)", "ELSET=" + k.params.at("ELSET"));
+  if (k.params.count("POSITION"))
+    throw InputError(k.where, "the reference node where it is defined (no POSITION parameter)", "POSITION=" + k.params.at("POSITION"));
+  if (!b.data.empty()) throw InputError(at(b.data[0], k), "no data lines after *RIGID BODY", "'" + b.data[0].text + "'");
+  RawRigidLink r;
+  r.where = k.where;
+  r.reference = required_param(k, "REF NODE");
+  bool any = false;
+  for (const char* name : {"NSET", "TIE NSET", "PIN NSET"}) {
+    if (!k.params.count(name)) continue;
+    r.slaves = required_param(k, name);
+    r.slave_rotations = std::string(name) != "PIN NSET";
+    rigid_links_.push_back(r);
+    any = true;
+  }
+  if (!any) throw InputError(k.where, "NSET=, TIE NSET= or PIN NSET= naming the nodes the reference node carries", "none");
+}
+
+void Parser::mpc(const Block& b) {
+  check_params(b.keyword, {});
+  if (b.data.empty()) throw InputError(b.keyword.where, "data lines 'BEAM, slave node, master node'", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    const std::string type = upper(f[0]);
+    if (type != "BEAM")
+      throw InputError(at(l, b.keyword), "an MPC of type BEAM (a rigid link; framedyn reads no other MPC type)", "'" + f[0] + "'");
+    if (f.size() != 3 || f[1].empty() || f[2].empty())
+      throw InputError(at(l, b.keyword), "BEAM, slave node, master node", "'" + l.text + "'");
+    RawRigidLink r;
+    r.where = at(l, b.keyword);
+    r.slaves = f[1];
+    r.reference = f[2];
+    rigid_links_.push_back(r);
+  }
+}
+
+// Resolves node numbers and sets, then checks the links against each other
+// and the supports (rigid_link_constraints), each error at its line.
+void Parser::build_rigid_links(FrameModel& model) const {
+  auto nodes_of = [&](const std::string& t, const InputLocation& where, const char* role) {
+    if (is_integer(t)) {
+      const int id = static_cast<int>(parse_int(t, where, "node"));
+      const int i = model.node_index(id);
+      if (i < 0) throw InputError(where, fmt::format("a {} defined by *NODE", role), fmt::format("node {}", id));
+      return std::vector<int>{i};
+    }
+    auto it = model.node_sets.find(upper(t));
+    if (it == model.node_sets.end()) throw InputError(where, fmt::format("a {} given by its number or a defined *NSET", role), "'" + t + "'");
+    return it->second;
+  };
+  for (const RawRigidLink& raw : rigid_links_) {
+    const std::vector<int> ref = nodes_of(raw.reference, raw.where, "reference node");
+    if (ref.size() != 1)
+      throw InputError(raw.where, "one reference node", fmt::format("set {} of {} nodes", upper(raw.reference), ref.size()));
+    RigidLink link;
+    link.reference_node = ref[0];
+    link.slave_nodes = nodes_of(raw.slaves, raw.where, "tied node");
+    link.slave_rotations = raw.slave_rotations;
+    link.source = core::format_location(raw.where);
+    model.rigid_links.push_back(std::move(link));
+  }
+  try {
+    (void)rigid_link_constraints(model);
+  } catch (const RigidLinkError& e) {
+    throw InputError(rigid_links_[static_cast<std::size_t>(e.link())].where, e.expected(), e.found());
+  }
+}
+
 void Parser::step_keyword(const Block& b) {
   const std::string& k = b.keyword.name;
   if (k == "*STEP") {
@@ -730,13 +822,15 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*BOUNDARY") boundary(b);
     else if (k == "*CLOAD") cload(b);
     else if (k == "*MASS" || k == "*ROTARY INERTIA" || k == "*SPRING") element_property(b);
+    else if (k == "*RIGID BODY") rigid_body(b);
+    else if (k == "*MPC") mpc(b);
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
-                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *MASS, *ROTARY INERTIA, *SPRING, *INCLUDE, "
+                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *MASS, *ROTARY INERTIA, *SPRING, *RIGID BODY, *MPC, *INCLUDE, "
                        "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
@@ -963,6 +1057,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const RawLoad& l : loads_)
     for (int n : targets(l.target, l.where))
       model.loads.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
+  build_rigid_links(model);
   if (model.beams.empty() && model.nodes.empty())
     throw InputError({src_.name, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
   return model;
