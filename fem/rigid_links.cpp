@@ -47,7 +47,7 @@ RigidLinkConstraints rigid_link_constraints(const FrameModel& model) {
     const int owner = slave_link[static_cast<std::size_t>(link.reference_node)];
     if (owner >= 0)
       throw RigidLinkError(static_cast<int>(li), "a reference node that is not tied to another rigid link (chains of rigid links are not resolved)",
-                           fmt::format("reference node {} is a slave of {}", id(link.reference_node),
+                           fmt::format("reference node {}, tied by {}", id(link.reference_node),
                                        model.rigid_links[static_cast<std::size_t>(owner)].source.empty()
                                            ? fmt::format("rigid link {}", owner + 1)
                                            : model.rigid_links[static_cast<std::size_t>(owner)].source));

@@ -300,6 +300,16 @@ std::vector<Row> rows() {
       {"INP-40", {}, "static nothere.inp --out results -q", "nothere.inp", false},
       // numbers within the file's range whose element matrices overflow (found by reading the reader against its fuzz harness)
       mesh_row("INP-41", "0.05, 0.1\n", "1e200, 1e200\n", "1, 1, 2", "*ELEMENT"),
+      // rigid links (fem/rigid_links.cpp, through the reader)
+      mesh_row("INP-42", kData, "*NODE\n4, 0, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=1\n*BOUNDARY\n4, 1\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=1", "*RIGID BODY"),
+      mesh_row("INP-43", kData, "*NODE\n4, 2, 0, 0.5\n*MPC\nBEAM, 4, 3\nBEAM, 4, 2\n" + kData, "BEAM, 4, 2", "*MPC"),
+      mesh_row("INP-44", kData, "*NODE\n4, 2, 0, 0.5\n5, 2, 0, 1\n*MPC\nBEAM, 4, 3\nBEAM, 5, 4\n" + kData, "BEAM, 5, 4", "*MPC"),
+      mesh_row("INP-45", kData, "*NODE\n4, 2, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=9\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=9", "*RIGID BODY"),
+      mesh_row("INP-46", kData, "*NODE\n4, 2, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=3, ROT NODE=5\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=3, ROT NODE=5", "*RIGID BODY"),
+      mesh_row("INP-47", kData, "*MPC\nTIE, 3, 2\n" + kData, "TIE, 3, 2", "*MPC"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {

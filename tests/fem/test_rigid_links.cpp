@@ -431,7 +431,7 @@ TEST(RigidLinksReader, NodeTiedByTwoLinksIsRefused) {
 TEST(RigidLinksReader, ChainOfRigidLinksIsRefused) {
   EXPECT_EQ(read_error(engine_with("BEAM, 20, 5\n", "BEAM, 20, 13\n")),
             "frame.inp:28: *MPC: expected a reference node that is not tied to another rigid link (chains of rigid links "
-            "are not resolved), found reference node 13 is a slave of frame.inp:26: *RIGID BODY");
+            "are not resolved), found reference node 13, tied by frame.inp:26: *RIGID BODY");
 }
 
 TEST(RigidLinksReader, UndefinedReferenceNodeIsRefused) {
