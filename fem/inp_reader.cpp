@@ -775,6 +775,46 @@ void Parser::build_rigid_links(FrameModel& model) const {
   } catch (const RigidLinkError& e) {
     throw InputError(rigid_links_[static_cast<std::size_t>(e.link())].where, e.expected(), e.found());
   }
+  if (model.rigid_links.empty()) return;
+  // T^T K T multiplies what acts on a tied node by up to (1 + |d|)^2 (Eq. R.2):
+  // each element is within range (checked above), the reduced one must be too.
+  std::vector<double> largest(model.nodes.size(), 0.0);
+  std::vector<char> tied(model.nodes.size(), 0);
+  for (const RigidLink& link : model.rigid_links)
+    for (int n : link.slave_nodes) tied[static_cast<std::size_t>(n)] = 1;
+  auto note = [&](int node, double value) {
+    if (tied[static_cast<std::size_t>(node)]) largest[static_cast<std::size_t>(node)] = std::max(largest[static_cast<std::size_t>(node)], std::abs(value));
+  };
+  for (const BeamElement& b : model.beams) {
+    if (!tied[static_cast<std::size_t>(b.node_a)] && !tied[static_cast<std::size_t>(b.node_b)]) continue;
+    const BeamGeometry g = beam_geometry(model, b);
+    const double entry = std::max({beam_local_stiffness(g.data).cwiseAbs().maxCoeff(),
+                                   beam_local_mass(g.data, MassFormulation::consistent).cwiseAbs().maxCoeff(),
+                                   beam_local_mass(g.data, MassFormulation::lumped).cwiseAbs().maxCoeff()});
+    note(b.node_a, 3.0 * entry);  // a rotation of 3x3 blocks to global axes: at most 3 times the largest entry
+    note(b.node_b, 3.0 * entry);
+  }
+  for (const PointMass& pm : model.point_masses) note(pm.node, std::max(pm.mass, pm.rotary_inertia.cwiseAbs().maxCoeff()));
+  for (const Spring& sp : model.springs) {
+    note(sp.node_a, sp.stiffness);
+    if (sp.node_b >= 0) note(sp.node_b, sp.stiffness);
+  }
+  for (const NodalLoad& l : model.loads) note(l.node, l.value);
+  for (std::size_t li = 0; li < model.rigid_links.size(); ++li) {
+    const RigidLink& link = model.rigid_links[li];
+    const Eigen::Vector3d& xr = model.nodes[static_cast<std::size_t>(link.reference_node)].position;
+    for (int n : link.slave_nodes) {
+      const double d = (model.nodes[static_cast<std::size_t>(n)].position - xr).norm();
+      // Up to 4 x 4 terms of T's row (R.1) per entry: 16 (1 + d)^2 times the largest.
+      const double reduced = 16.0 * largest[static_cast<std::size_t>(n)] * (1.0 + d) * (1.0 + d);
+      if (largest[static_cast<std::size_t>(n)] > 0.0 && !(reduced <= kLargestSi))
+        throw InputError(rigid_links_[li].where,
+                         "a lever arm that keeps the tied node's stiffness, mass and loads within floating point once carried to the "
+                         "reference node (at most 1e300 in SI units)",
+                         fmt::format("node {} at d = {:g} m from reference node {}, with entries up to {:g}", model.nodes[static_cast<std::size_t>(n)].id,
+                                     d, model.nodes[static_cast<std::size_t>(link.reference_node)].id, largest[static_cast<std::size_t>(n)]));
+    }
+  }
 }
 
 void Parser::step_keyword(const Block& b) {

@@ -10,6 +10,7 @@
 //     the six frequencies from the 2x2 problems with the mass's inertia about
 //     the tip (m d^2 plus its own rotary inertia), and the stiff-arm model's
 //     frequencies converging to them as 1/f;
+//   - which end of a link is the reference node changes no frequency;
 //   - mass bookkeeping: total mass and centre of mass of a free frame with
 //     offset masses on links from the reduced mass matrix T^T M T equal the
 //     hand sum; six rigid-body modes;
@@ -242,6 +243,33 @@ TEST(RigidLinks, OffsetMassOnARigidArmHasTheFrequenciesOfItsInertiaAboutTheTip) 
   EXPECT_GT(std::abs(exact[0] - naive), 0.2 * naive);
 }
 
+TEST(RigidLinks, WhichEndOfARigidLinkIsTheReferenceChangesNothing) {
+  // The same offset mass, once with the beam's tip as the reference node and
+  // once with the mass's node as the reference (the beam element then ends on
+  // a slave node): a rigid link is symmetric, the choice is bookkeeping.
+  const OffsetMassCase c;
+  std::vector<Eigen::VectorXd> eigenvalues;
+  for (bool tip_is_reference : {true, false}) {
+    FrameModel m = cantilever(2.0, 10, c.section, 7850.0);
+    const int off = support::add_node(m, Eigen::Vector3d(2.0 + c.arm, 0.1, -0.2));
+    if (tip_is_reference) add_link(m, 10, {off});
+    else add_link(m, off, {10});
+    add_point_mass(m, off, c.mass, c.inertia);
+    support::add_nodal_force(m, off, Eigen::Vector3d(100.0, -200.0, 300.0));
+    fem::ModalOptions o;
+    o.mode_count = 8;
+    const fem::ModalResult modes = fem::compute_modes(m, o);
+    Eigen::VectorXd ev(8);
+    for (int i = 0; i < 8; ++i) ev(i) = modes.modes[static_cast<std::size_t>(i)].eigenvalue;
+    eigenvalues.push_back(ev);
+    if (!tip_is_reference) {
+      const fem::StaticResult r = fem::solve_static(m);
+      EXPECT_LT(out_of_balance(m, r).norm(), 1e-12 * applied_scale(m, r));
+    }
+  }
+  for (int i = 0; i < 8; ++i) EXPECT_NEAR(eigenvalues[1](i), eigenvalues[0](i), 1e-9 * eigenvalues[0](i)) << "mode " << i + 1;
+}
+
 TEST(RigidLinks, StiffBeamArmFrequenciesConvergeToTheRigidLinkAsOneOverItsStiffness) {
   const OffsetMassCase c;
   // A small mass at the tip so that the beam-arm model has no massless node.
@@ -459,6 +487,18 @@ TEST(RigidLinksReader, OtherMpcTypesAndMalformedLinesAreRefused) {
             "carries, found none");
   EXPECT_EQ(read_error(engine_with("REF NODE=3", "REF NODE=ENGINE")),
             "frame.inp:26: *RIGID BODY: expected one reference node, found set ENGINE of 3 nodes");
+}
+
+TEST(RigidLinksReader, LeverArmThatWouldOverflowTheReducedMatricesIsRefused) {
+  // Each element is within range, but T^T K T multiplies by d^2 (found by thinking like the fuzzer).
+  const std::string msg = read_error(engine_with("20, 2.0, 0.2, -0.5", "20, 2.0, 0.2, -1e150"));
+  EXPECT_EQ(msg.rfind("frame.inp:28: *MPC: expected a lever arm that keeps the tied node's stiffness, mass and loads within floating "
+                      "point once carried to the reference node (at most 1e300 in SI units), found node 20 at d = 1e+150 m",
+                      0),
+            0u)
+      << msg;
+  // A long but sane arm is accepted.
+  EXPECT_EQ(read_error(engine_with("20, 2.0, 0.2, -0.5", "20, 2.0, 0.2, -1e3")), "");
 }
 
 TEST(RigidLinksReader, PinNsetTiesTranslationsOnly) {
