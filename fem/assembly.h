@@ -46,8 +46,9 @@ struct AssemblyOptions {
   Storage storage = Storage::lower;
 };
 
-// K_ff and M_ff on the free DOFs. Throws std::invalid_argument naming the
-// element for a zero-length element or a bad orientation.
+// K_ff and M_ff on the free DOFs (with rigid links, T^T K T and T^T M T on
+// the masters, Eq. R.2 of rigid_links.h). Throws std::invalid_argument naming
+// the element for a zero-length element or a bad orientation.
 struct FreeSystem {
   SparseMatrix stiffness;
   SparseMatrix mass;
