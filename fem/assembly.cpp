@@ -23,14 +23,30 @@ DofMap make_dof_map(const FrameModel& model) {
       map.constrained_dofs.push_back(g);
     }
   }
+  map.links = rigid_link_constraints(model);
   map.free_index.assign(static_cast<std::size_t>(n), -1);
-  map.free_dofs.reserve(static_cast<std::size_t>(n) - map.constrained_dofs.size());
+  map.free_dofs.reserve(static_cast<std::size_t>(n) - map.constrained_dofs.size() - map.links.slaves.size());
   for (int g = 0; g < n; ++g)
-    if (!constrained[static_cast<std::size_t>(g)]) {
+    if (!constrained[static_cast<std::size_t>(g)] && !map.links.is_slave(g)) {
       map.free_index[static_cast<std::size_t>(g)] = static_cast<int>(map.free_dofs.size());
       map.free_dofs.push_back(g);
     }
   return map;
+}
+
+Eigen::VectorXd expand_free(const DofMap& dofs, const Eigen::VectorXd& u_free, const Eigen::VectorXd& prescribed) {
+  Eigen::VectorXd all = prescribed;
+  for (int e = 0; e < dofs.free_count(); ++e) all(dofs.free_dofs[static_cast<std::size_t>(e)]) = u_free(e);
+  fill_slave_dofs(dofs.links, all);
+  return all;
+}
+
+Eigen::VectorXd restrict_load(const DofMap& dofs, const Eigen::VectorXd& f_all) {
+  Eigen::VectorXd folded = f_all;
+  fold_slave_forces(dofs.links, folded);
+  Eigen::VectorXd out(dofs.free_count());
+  for (int e = 0; e < dofs.free_count(); ++e) out(e) = folded(dofs.free_dofs[static_cast<std::size_t>(e)]);
+  return out;
 }
 
 namespace {
@@ -115,8 +131,54 @@ std::array<int, 12> element_dofs(const BeamElement& beam) {
   return d;
 }
 
+// The equations a global DOF acts on and with which factor: its own equation
+// (factor 1) if free, its free masters' (Eq. R.1 coefficients) if a slave of a
+// rigid link, none if constrained. Returns the count (at most 4).
+int equation_terms(const DofMap& dofs, int g, std::array<int, 4>& eq, std::array<double, 4>& factor) {
+  const int f = dofs.free_index[static_cast<std::size_t>(g)];
+  if (f >= 0) {
+    eq[0] = f;
+    factor[0] = 1.0;
+    return 1;
+  }
+  if (!dofs.links.is_slave(g)) return 0;
+  const SlaveDof& s = dofs.links.slaves[static_cast<std::size_t>(dofs.links.slave_of[static_cast<std::size_t>(g)])];
+  int n = 0;
+  for (int k = 0; k < s.count; ++k) {
+    const int fm = dofs.free_index[static_cast<std::size_t>(s.master[static_cast<std::size_t>(k)])];
+    if (fm < 0) continue;  // a supported master: its part is in the prescribed displacement
+    eq[static_cast<std::size_t>(n)] = fm;
+    factor[static_cast<std::size_t>(n++)] = s.coefficient[static_cast<std::size_t>(k)];
+  }
+  return n;
+}
+
+// T^T m T scattered (Eq. R.2) for elements that touch slave DOFs.
+template <int N>
+void scatter_linked(Triplets& out, const Eigen::Matrix<double, N, N>& m, const std::array<int, N>& global, const DofMap& dofs, Storage storage) {
+  std::array<std::array<int, 4>, N> eq;
+  std::array<std::array<double, 4>, N> factor;
+  std::array<int, N> count;
+  for (int i = 0; i < N; ++i)
+    count[static_cast<std::size_t>(i)] = equation_terms(dofs, global[static_cast<std::size_t>(i)], eq[static_cast<std::size_t>(i)], factor[static_cast<std::size_t>(i)]);
+  for (int c = 0; c < N; ++c)
+    for (int r = 0; r < N; ++r) {
+      const double v = m(r, c);
+      if (v == 0.0) continue;
+      for (int kc = 0; kc < count[static_cast<std::size_t>(c)]; ++kc)
+        for (int kr = 0; kr < count[static_cast<std::size_t>(r)]; ++kr) {
+          const int fr = eq[static_cast<std::size_t>(r)][static_cast<std::size_t>(kr)], fc = eq[static_cast<std::size_t>(c)][static_cast<std::size_t>(kc)];
+          if (storage == Storage::lower && fr < fc) continue;
+          out.emplace_back(fr, fc, factor[static_cast<std::size_t>(r)][static_cast<std::size_t>(kr)] * v * factor[static_cast<std::size_t>(c)][static_cast<std::size_t>(kc)]);
+        }
+    }
+}
+
 template <int N>
 void scatter(Triplets& out, const Eigen::Matrix<double, N, N>& m, const std::array<int, N>& global, const DofMap& dofs, Storage storage) {
+  if (!dofs.links.empty())
+    for (int i = 0; i < N; ++i)
+      if (dofs.links.is_slave(global[static_cast<std::size_t>(i)])) return scatter_linked<N>(out, m, global, dofs, storage);
   for (int c = 0; c < N; ++c) {
     const int fc = dofs.free_index[static_cast<std::size_t>(global[static_cast<std::size_t>(c)])];
     if (fc < 0) continue;

@@ -9,21 +9,32 @@
 
 #include "fem/beam_element.h"
 #include "fem/frame_model.h"
+#include "fem/rigid_links.h"
 
 namespace framedyn::fem {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 // Numbering of the free DOFs: free_index[g] is the equation number of global
-// DOF g, or -1 if g is constrained.
+// DOF g, or -1 if g is constrained or a slave of a rigid link (rigid_links.h:
+// its value follows from its reference node's DOFs by `links`).
 struct DofMap {
   std::vector<int> free_index;
   std::vector<int> free_dofs;         // equation number -> global DOF
   std::vector<int> constrained_dofs;  // global DOFs with a *BOUNDARY, in order
+  RigidLinkConstraints links;         // slave rows of u = T u_m (empty without rigid links)
   int free_count() const { return static_cast<int>(free_dofs.size()); }
 };
 
+// Throws RigidLinkError (a std::invalid_argument) for a rigid link that cannot be used.
 DofMap make_dof_map(const FrameModel& model);
+
+// All-DOF vector from free-DOF values: u_f at the free DOFs, `prescribed`
+// (all DOFs) at the constrained ones, then the slaves of rigid links (Eq. R.3).
+Eigen::VectorXd expand_free(const DofMap& dofs, const Eigen::VectorXd& u_free, const Eigen::VectorXd& prescribed);
+// T^T f restricted to the free DOFs: an all-DOF load vector on the equations,
+// loads on slave nodes carried to their reference nodes (Eq. R.2).
+Eigen::VectorXd restrict_load(const DofMap& dofs, const Eigen::VectorXd& f_all);
 
 enum class Storage {
   lower,  // lower triangle only: what CHOLMOD and Spectra read; half the memory
@@ -35,8 +46,9 @@ struct AssemblyOptions {
   Storage storage = Storage::lower;
 };
 
-// K_ff and M_ff on the free DOFs. Throws std::invalid_argument naming the
-// element for a zero-length element or a bad orientation.
+// K_ff and M_ff on the free DOFs (with rigid links, T^T K T and T^T M T on
+// the masters, Eq. R.2 of rigid_links.h). Throws std::invalid_argument naming
+// the element for a zero-length element or a bad orientation.
 struct FreeSystem {
   SparseMatrix stiffness;
   SparseMatrix mass;

@@ -104,6 +104,16 @@ struct ElementLoad {
   Eigen::Vector3d force_per_length = Eigen::Vector3d::Zero();  // N/m, global axes
 };
 
+// A rigid link (*RIGID BODY, *MPC BEAM): the slave nodes follow the small
+// rigid motion of the reference node, u_s = u_r + theta_r x (x_s - x_r) and,
+// when `slave_rotations`, theta_s = theta_r (docs/theory/fem.md, "Rigid links").
+struct RigidLink {
+  int reference_node = 0;          // index into nodes
+  std::vector<int> slave_nodes;    // indices into nodes
+  bool slave_rotations = true;     // false for a PIN NSET: only the translations follow
+  std::string source;              // where it was defined ("*RIGID BODY at f.inp:12"), for messages
+};
+
 struct FrameModel {
   std::vector<Node> nodes;
   std::vector<BeamElement> beams;
@@ -113,6 +123,7 @@ struct FrameModel {
   std::vector<Constraint> constraints;
   std::vector<NodalLoad> loads;                // *CLOAD, and GRAV on point masses
   std::vector<ElementLoad> element_loads;     // *DLOAD on beams (see fem/distributed_loads.h)
+  std::vector<RigidLink> rigid_links;
   std::map<std::string, std::vector<int>> node_sets;     // upper-case name -> node indices
   std::map<std::string, std::vector<int>> element_sets;  // upper-case name -> element ids (beams and others)
   core::UnitSystem units = core::UnitSystem::si();       // the unit system the input was written in

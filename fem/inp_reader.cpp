@@ -23,6 +23,7 @@
 #include "fem/beam_element.h"
 #include "fem/quadratic_beam_element.h"
 #include "fem/member_releases.h"
+#include "fem/rigid_links.h"
 
 namespace framedyn::fem {
 
@@ -343,6 +344,12 @@ struct RawLoad {
   InputLocation where;
 };
 
+struct RawRigidLink {  // *RIGID BODY (one per node set) or one *MPC BEAM line
+  std::string reference, slaves;  // node number or node set name
+  bool slave_rotations = true;    // false for PIN NSET
+  InputLocation where;
+};
+
 struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
   std::string keyword, elset;
   std::vector<double> values;
@@ -445,6 +452,7 @@ class Parser {
   std::vector<RawBoundary> boundaries_;
   std::vector<RawLoad> loads_;
   std::vector<RawElementProperty> properties_;
+  std::vector<RawRigidLink> rigid_links_;
   std::optional<int> frequency_count_;
   bool in_step_ = false;
   int steps_ = 0;
@@ -473,6 +481,9 @@ class Parser {
   void apply_section_extras(FrameModel& model, const core::UnitSystem& units) const;
   void apply_releases(FrameModel& model) const;
   void apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const;
+  void rigid_body(const Block& b);
+  void mpc(const Block& b);
+  void build_rigid_links(FrameModel& model) const;
   FrameModel build(const core::UnitSystem& units);
   std::vector<int> set_members(const std::string& name, bool nodes, const InputLocation& where) const;
 };
@@ -805,6 +816,127 @@ void Parser::element_property(const Block& b) {
   properties_.push_back(p);
 }
 
+// ------------------------------------------------------------ rigid links
+// *RIGID BODY, NSET=..., REF NODE=... (CalculiX; Abaqus's TIE NSET and PIN
+// NSET too) and *MPC with BEAM lines ("BEAM, slave, master", as Abaqus
+// defines it): the nodes follow the reference node rigidly (fem/rigid_links.h).
+
+void Parser::rigid_body(const Block& b) {
+  check_params(b.keyword, {"NSET", "TIE NSET", "PIN NSET", "REF NODE", "ROT NODE", "ELSET", "POSITION"});
+  const Keyword& k = b.keyword;
+  if (k.params.count("ROT NODE"))
+    throw InputError(k.where, "no ROT NODE (framedyn's nodes have rotations: the REF NODE's DOFs 4-6 are the body's rotations; put the "
+                              "*BOUNDARY and *CLOAD of the rotation node's DOFs 1-3 on DOFs 4-6 of the REF NODE)",
+                     "ROT NODE=" + k.params.at("ROT NODE"));
+  if (k.params.count("ELSET"))
+    throw InputError(k.where, "the tied nodes as NSET=, TIE NSET= or PIN NSET= (framedyn has no rigid elements)", "ELSET=" + k.params.at("ELSET"));
+  if (k.params.count("POSITION"))
+    throw InputError(k.where, "the reference node where it is defined (no POSITION parameter)", "POSITION=" + k.params.at("POSITION"));
+  if (!b.data.empty()) throw InputError(at(b.data[0], k), "no data lines after *RIGID BODY", "'" + b.data[0].text + "'");
+  RawRigidLink r;
+  r.where = k.where;
+  r.reference = required_param(k, "REF NODE");
+  bool any = false;
+  for (const char* name : {"NSET", "TIE NSET", "PIN NSET"}) {
+    if (!k.params.count(name)) continue;
+    r.slaves = required_param(k, name);
+    r.slave_rotations = std::string(name) != "PIN NSET";
+    rigid_links_.push_back(r);
+    any = true;
+  }
+  if (!any) throw InputError(k.where, "NSET=, TIE NSET= or PIN NSET= naming the nodes the reference node carries", "none");
+}
+
+void Parser::mpc(const Block& b) {
+  check_params(b.keyword, {});
+  if (b.data.empty()) throw InputError(b.keyword.where, "data lines 'BEAM, slave node, master node'", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    const std::string type = upper(f[0]);
+    if (type != "BEAM")
+      throw InputError(at(l, b.keyword), "an MPC of type BEAM (a rigid link; framedyn reads no other MPC type)", "'" + f[0] + "'");
+    if (f.size() != 3 || f[1].empty() || f[2].empty())
+      throw InputError(at(l, b.keyword), "BEAM, slave node, master node", "'" + l.text + "'");
+    RawRigidLink r;
+    r.where = at(l, b.keyword);
+    r.slaves = f[1];
+    r.reference = f[2];
+    rigid_links_.push_back(r);
+  }
+}
+
+// Resolves node numbers and sets, then checks the links against each other
+// and the supports (rigid_link_constraints), each error at its line.
+void Parser::build_rigid_links(FrameModel& model) const {
+  auto nodes_of = [&](const std::string& t, const InputLocation& where, const char* role) {
+    if (is_integer(t)) {
+      const int id = static_cast<int>(parse_int(t, where, "node"));
+      const int i = model.node_index(id);
+      if (i < 0) throw InputError(where, fmt::format("a {} defined by *NODE", role), fmt::format("node {}", id));
+      return std::vector<int>{i};
+    }
+    auto it = model.node_sets.find(upper(t));
+    if (it == model.node_sets.end()) throw InputError(where, fmt::format("a {} given by its number or a defined *NSET", role), "'" + t + "'");
+    return it->second;
+  };
+  for (const RawRigidLink& raw : rigid_links_) {
+    const std::vector<int> ref = nodes_of(raw.reference, raw.where, "reference node");
+    if (ref.size() != 1)
+      throw InputError(raw.where, "one reference node", fmt::format("set {} of {} nodes", upper(raw.reference), ref.size()));
+    RigidLink link;
+    link.reference_node = ref[0];
+    link.slave_nodes = nodes_of(raw.slaves, raw.where, "tied node");
+    link.slave_rotations = raw.slave_rotations;
+    link.source = core::format_location(raw.where);
+    model.rigid_links.push_back(std::move(link));
+  }
+  try {
+    (void)rigid_link_constraints(model);
+  } catch (const RigidLinkError& e) {
+    throw InputError(rigid_links_[static_cast<std::size_t>(e.link())].where, e.expected(), e.found());
+  }
+  if (model.rigid_links.empty()) return;
+  // T^T K T multiplies what acts on a tied node by up to (1 + |d|)^2 (Eq. R.2):
+  // each element is within range (checked above), the reduced one must be too.
+  std::vector<double> largest(model.nodes.size(), 0.0);
+  std::vector<char> tied(model.nodes.size(), 0);
+  for (const RigidLink& link : model.rigid_links)
+    for (int n : link.slave_nodes) tied[static_cast<std::size_t>(n)] = 1;
+  auto note = [&](int node, double value) {
+    if (tied[static_cast<std::size_t>(node)]) largest[static_cast<std::size_t>(node)] = std::max(largest[static_cast<std::size_t>(node)], std::abs(value));
+  };
+  for (const BeamElement& b : model.beams) {
+    if (!tied[static_cast<std::size_t>(b.node_a)] && !tied[static_cast<std::size_t>(b.node_b)]) continue;
+    const BeamGeometry g = beam_geometry(model, b);
+    const double entry = std::max({beam_local_stiffness(g.data).cwiseAbs().maxCoeff(),
+                                   beam_local_mass(g.data, MassFormulation::consistent).cwiseAbs().maxCoeff(),
+                                   beam_local_mass(g.data, MassFormulation::lumped).cwiseAbs().maxCoeff()});
+    note(b.node_a, 3.0 * entry);  // a rotation of 3x3 blocks to global axes: at most 3 times the largest entry
+    note(b.node_b, 3.0 * entry);
+  }
+  for (const PointMass& pm : model.point_masses) note(pm.node, std::max(pm.mass, pm.rotary_inertia.cwiseAbs().maxCoeff()));
+  for (const Spring& sp : model.springs) {
+    note(sp.node_a, sp.stiffness);
+    if (sp.node_b >= 0) note(sp.node_b, sp.stiffness);
+  }
+  for (const NodalLoad& l : model.loads) note(l.node, l.value);
+  for (std::size_t li = 0; li < model.rigid_links.size(); ++li) {
+    const RigidLink& link = model.rigid_links[li];
+    const Eigen::Vector3d& xr = model.nodes[static_cast<std::size_t>(link.reference_node)].position;
+    for (int n : link.slave_nodes) {
+      const double d = (model.nodes[static_cast<std::size_t>(n)].position - xr).norm();
+      // Up to 4 x 4 terms of T's row (R.1) per entry: 16 (1 + d)^2 times the largest.
+      const double reduced = 16.0 * largest[static_cast<std::size_t>(n)] * (1.0 + d) * (1.0 + d);
+      if (largest[static_cast<std::size_t>(n)] > 0.0 && !(reduced <= kLargestSi))
+        throw InputError(rigid_links_[li].where,
+                         "a lever arm that keeps the tied node's stiffness, mass and loads within floating point once carried to the "
+                         "reference node (at most 1e300 in SI units)",
+                         fmt::format("node {} at d = {:g} m from reference node {}, with entries up to {:g}", model.nodes[static_cast<std::size_t>(n)].id,
+                                     d, model.nodes[static_cast<std::size_t>(link.reference_node)].id, largest[static_cast<std::size_t>(n)]));
+    }
+  }
+}
+
 void Parser::step_keyword(const Block& b) {
   const std::string& k = b.keyword.name;
   if (k == "*STEP") {
@@ -1067,13 +1199,15 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*RELEASE") release(b);
     else if (k == "*TRANSVERSE SHEAR STIFFNESS") transverse_shear_stiffness(b, &b == &blocks.front() ? nullptr : &b - 1);
     else if (k == "*MASS" || k == "*ROTARY INERTIA" || k == "*SPRING") element_property(b);
+    else if (k == "*RIGID BODY") rigid_body(b);
+    else if (k == "*MPC") mpc(b);
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
-                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *INCLUDE, "
+                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *RIGID BODY, *MPC, *INCLUDE, "
                        "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
@@ -1311,6 +1445,7 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   for (const RawLoad& l : loads_)
     for (int n : targets(l.target, l.where))
       model.loads.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
+  build_rigid_links(model);
   if (model.beams.empty() && model.nodes.empty())
     throw InputError({src_.name, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");
   return model;

@@ -288,6 +288,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
           largest_motion_nodes(model, dofs, phi)));
     result.modes.push_back(mode);
   }
+  fill_slave_dofs_columns(dofs.links, result.shapes);  // rigid links' slaves follow their reference nodes (Eq. R.3)
   return result;
 }
 

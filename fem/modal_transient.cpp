@@ -147,16 +147,21 @@ FrameDynamics::FrameDynamics(const FrameModel& model, MassFormulation mass) : mo
   // translations of node A, and the three DOFs of nodes B (farthest from A)
   // and C (farthest from the line AB) that best fix the remaining rotations.
   const auto pos = [&](std::size_t i) { return model.nodes[i].position; };
-  std::size_t a = 0;
-  for (std::size_t i = 1; i < model.nodes.size(); ++i)
-    if (pos(i).x() < pos(a).x() || (pos(i).x() == pos(a).x() && pos(i).y() < pos(a).y())) a = i;
-  std::size_t b = a == 0 ? 1 : 0;
+  // Only nodes whose DOFs are equations can carry them (not the slaves of rigid links).
+  std::vector<std::size_t> candidates_nodes;
   for (std::size_t i = 0; i < model.nodes.size(); ++i)
+    if (!dofs_.links.is_slave(kDofsPerNode * static_cast<int>(i))) candidates_nodes.push_back(i);
+  if (candidates_nodes.size() < 2) throw core::NumericalError("a free-free frame needs at least two nodes that are not tied by rigid links");
+  std::size_t a = candidates_nodes[0];
+  for (std::size_t i : candidates_nodes)
+    if (pos(i).x() < pos(a).x() || (pos(i).x() == pos(a).x() && pos(i).y() < pos(a).y())) a = i;
+  std::size_t b = a == candidates_nodes[0] ? candidates_nodes[1] : candidates_nodes[0];
+  for (std::size_t i : candidates_nodes)
     if ((pos(i) - pos(a)).norm() > (pos(b) - pos(a)).norm()) b = i;
   const Eigen::Vector3d d = (pos(b) - pos(a)).normalized();
   std::size_t c = b;
   double best_off = -1.0;
-  for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+  for (std::size_t i : candidates_nodes) {
     if (i == a || i == b) continue;
     const Eigen::Vector3d v = pos(i) - pos(a);
     const double off = (v - v.dot(d) * d).norm();
@@ -229,8 +234,17 @@ Eigen::MatrixXd FrameDynamics::free_loads(const SparseMatrix& distribution) cons
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(dofs_.free_count(), distribution.cols());
   for (int col = 0; col < distribution.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(distribution, col); it; ++it) {
-      const int e = dofs_.free_index[static_cast<std::size_t>(it.row())];
-      if (e >= 0) b(e, col) += it.value();
+      const int g = static_cast<int>(it.row());
+      const int e = dofs_.free_index[static_cast<std::size_t>(g)];
+      if (e >= 0) {
+        b(e, col) += it.value();
+      } else if (dofs_.links.is_slave(g)) {  // T^T: a load on a rigid link's slave acts on its reference node (Eq. R.2)
+        const SlaveDof& s = dofs_.links.slaves[static_cast<std::size_t>(dofs_.links.slave_of[static_cast<std::size_t>(g)])];
+        for (int k = 0; k < s.count; ++k) {
+          const int em = dofs_.free_index[static_cast<std::size_t>(s.master[static_cast<std::size_t>(k)])];
+          if (em >= 0) b(em, col) += s.coefficient[static_cast<std::size_t>(k)] * it.value();
+        }
+      }
     }
   if (free_free_) b -= mass_rigid_ * (rigid_.transpose() * b);
   return b;
@@ -257,6 +271,7 @@ Eigen::VectorXd FrameDynamics::expand(const Eigen::VectorXd& u) const {
   Eigen::VectorXd all = Eigen::VectorXd::Zero(model_.dof_count());
   for (int e = 0; e < dofs_.free_count(); ++e) all(dofs_.free_dofs[static_cast<std::size_t>(e)]) = u(e);
   for (const Constraint& c : model_.constraints) all(kDofsPerNode * c.node + c.dof) = c.value;
+  fill_slave_dofs(dofs_.links, all);
   return all;
 }
 

@@ -59,17 +59,14 @@ StaticResult solve_static(const FrameModel& model, const std::function<void(cons
   r.applied = applied_load_vector(model);  // nodal loads and the consistent loads of *DLOAD
   Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
   for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
+  fill_slave_dofs(dofs.links, prescribed);  // slaves of a supported reference node move with it
 
   if (progress) progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), dofs.free_count()));
   const SparseMatrix k = assemble(model, dofs, {MassFormulation::consistent, Storage::lower}).stiffness;
 
-  // f_f - K_fc u_c, with K u_c computed element by element.
-  const Eigen::VectorXd k_uc = internal_force(model, prescribed);
-  Eigen::VectorXd rhs(dofs.free_count());
-  for (int e = 0; e < dofs.free_count(); ++e) {
-    const int g = dofs.free_dofs[static_cast<std::size_t>(e)];
-    rhs(e) = r.applied(g) - k_uc(g);
-  }
+  // T^T (f - K u_c) on the free DOFs, with K u_c computed element by element
+  // (T: rigid links' slaves, Eq. R.2; the identity without links).
+  const Eigen::VectorXd rhs = restrict_load(dofs, r.applied - internal_force(model, prescribed));
 
   if (progress) progress(fmt::format("factorising K ({} equations)", dofs.free_count()));
   SparseCholesky chol;
@@ -89,11 +86,13 @@ StaticResult solve_static(const FrameModel& model, const std::function<void(cons
   const Eigen::VectorXd residual = k.selfadjointView<Eigen::Lower>() * uf - rhs;
   r.relative_residual = rhs.norm() > 0 ? residual.norm() / rhs.norm() : residual.norm();
 
-  r.displacement = prescribed;
-  for (int e = 0; e < dofs.free_count(); ++e) r.displacement(dofs.free_dofs[static_cast<std::size_t>(e)]) = uf(e);
-  const Eigen::VectorXd ku = internal_force(model, r.displacement);
+  r.displacement = expand_free(dofs, uf, prescribed);
+  // R = T^T (K u - f) at the constrained DOFs: a supported reference node
+  // also carries what its slaves transmit (Eq. R.4).
+  Eigen::VectorXd residual_all = internal_force(model, r.displacement) - r.applied;
+  fold_slave_forces(dofs.links, residual_all);
   r.reaction = Eigen::VectorXd::Zero(ndof);
-  for (int g : dofs.constrained_dofs) r.reaction(g) = ku(g) - r.applied(g);
+  for (int g : dofs.constrained_dofs) r.reaction(g) = residual_all(g);
   return r;
 }
 

@@ -1,8 +1,10 @@
 // Linear static solve under nodal loads, the consistent nodal loads of
 // distributed loads (fem/distributed_loads.h) and prescribed displacements:
 // K_ff u_f = f_f - K_fc u_c on a CHOLMOD factorisation, then reactions
-// R = K u - f at the constrained DOFs. A singular stiffness (a mechanism,
-// a frame without supports) is reported with the nodes that can move freely.
+// R = K u - f at the constrained DOFs (with rigid links: T^T (K u - f), so a
+// supported reference node carries its tied nodes' loads; rigid_links.h).
+// A singular stiffness (a mechanism, a frame without supports) is reported
+// with the nodes that can move freely.
 #pragma once
 
 #include <Eigen/Dense>

@@ -318,6 +318,16 @@ std::vector<Row> rows() {
       mesh_row("INP-50", kData, "*RELEASE\n2, S1, T\n2, S2, T\n" + kData, "S2, T", "*RELEASE"),
       mesh_row("INP-51", kData, "*TRANSVERSE SHEAR STIFFNESS\n1e8, 1e8\n" + kData, "*TRANSVERSE", "*TRANSVERSE SHEAR STIFFNESS"),
       mesh_row("INP-52", "SECTION=RECT", "SECTION=RECT, RAYLEIGH=YES", "*BEAM SECTION", "*BEAM SECTION"),
+      // rigid links (fem/rigid_links.cpp, through the reader)
+      mesh_row("INP-55", kData, "*NODE\n4, 0, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=1\n*BOUNDARY\n4, 1\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=1", "*RIGID BODY"),
+      mesh_row("INP-56", kData, "*NODE\n4, 2, 0, 0.5\n*MPC\nBEAM, 4, 3\nBEAM, 4, 2\n" + kData, "BEAM, 4, 2", "*MPC"),
+      mesh_row("INP-57", kData, "*NODE\n4, 2, 0, 0.5\n5, 2, 0, 1\n*MPC\nBEAM, 4, 3\nBEAM, 5, 4\n" + kData, "BEAM, 5, 4", "*MPC"),
+      mesh_row("INP-58", kData, "*NODE\n4, 2, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=9\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=9", "*RIGID BODY"),
+      mesh_row("INP-59", kData, "*NODE\n4, 2, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=3, ROT NODE=5\n" + kData,
+               "*RIGID BODY, NSET=ARM, REF NODE=3, ROT NODE=5", "*RIGID BODY"),
+      mesh_row("INP-60", kData, "*MPC\nTIE, 3, 2\n" + kData, "TIE, 3, 2", "*MPC"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
   for (Row& row : r) {
