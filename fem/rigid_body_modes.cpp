@@ -122,7 +122,8 @@ FreeRigidMotions free_rigid_motions(const FrameModel& model) {
         if (sv(i) > 1e-9 * sv(0)) ++rank;
       kernel = svd.matrixV().rightCols(nc - rank);
     }
-    if (gp.size() == 1) out.free_per_part[static_cast<std::size_t>(gp[0])] = static_cast<int>(kernel.cols());
+    // Parts joined by springs share their motions: counted under the first.
+    out.free_per_part[static_cast<std::size_t>(gp[0])] = static_cast<int>(kernel.cols());
     kernels.push_back(kernel);
     kernel_group.push_back(g);
   }
@@ -155,10 +156,21 @@ std::string FreeRigidMotions::describe(const FrameModel& model) const {
     if (first[static_cast<std::size_t>(p)] < 0) first[static_cast<std::size_t>(p)] = model.nodes[i].id;
     ++nodes[static_cast<std::size_t>(p)];
   }
+  // Parts with free motions first, at most five named.
   std::string out;
-  for (int p = 0; p < parts; ++p)
-    out += fmt::format("{}part {} ({} nodes, node {} among them): {} free rigid motion(s)", p ? "; " : "", p + 1,
+  int named = 0, rest = 0;
+  for (int p = 0; p < parts; ++p) {
+    if (free_per_part[static_cast<std::size_t>(p)] == 0) continue;
+    if (named == 5) {
+      ++rest;
+      continue;
+    }
+    out += fmt::format("{}part {} ({} nodes, node {} among them): {} free", named ? "; " : "", p + 1,
                        nodes[static_cast<std::size_t>(p)], first[static_cast<std::size_t>(p)], free_per_part[static_cast<std::size_t>(p)]);
+    ++named;
+  }
+  if (rest > 0) out += fmt::format("; {} more part(s) with free motions", rest);
+  if (out.empty()) out = parts == 1 ? "the frame is held against every rigid motion" : fmt::format("{} parts, each held against every rigid motion", parts);
   return out;
 }
 

@@ -27,8 +27,11 @@ struct FreeRigidMotions {
   Eigen::MatrixXd shapes;
   int parts = 0;                     // connected parts (beam elements join nodes)
   std::vector<int> part_of_node;     // node index -> part
-  std::vector<int> free_per_part;    // motions left free per part (6 - rank of its restraints), when no spring joins parts
-  // "part 1 (nodes 1..41): 3 free (rx, ry, rz about node 1)"-like summary, one line per part with free motions.
+  // Motions left free per part (6 - rank of its restraints); parts joined by
+  // springs between them are counted together, under the first of them.
+  std::vector<int> free_per_part;
+  // "part 2 (41 nodes, node 42 among them): 6 free; ..." for the parts with
+  // free motions (at most five named), for messages.
   std::string describe(const FrameModel& model) const;
 };
 
