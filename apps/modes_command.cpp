@@ -52,7 +52,7 @@ int run_modes(const ModesOptions& opt) {
   const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
   const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);
   auto eff_in_units = [&](const fem::Vector6d& v, int d) { return v(d) * (d < 3 ? mass_f : rot_f); };
-  // Effective masses as fractions of the model's total mass (Eq. 7.6).
+  // Effective masses as fractions of the model's total mass (Eq. 7.5).
   auto fraction = [&](const fem::Vector6d& v, int d) { return r.total_mass(d) > 0 ? v(d) / r.total_mass(d) : 0.0; };
 
   // summary.json
@@ -65,7 +65,7 @@ int run_modes(const ModesOptions& opt) {
   frame["dofs"] = model.dof_count();
   frame["free_dofs"] = r.free_dofs;
   frame["mass_formulation"] = opt.lumped ? "lumped" : "consistent";
-  // Masses (docs/theory/fem.md Eqs. 7.5, 7.6): the whole model's, supported
+  // Masses (docs/theory/fem.md Eqs. 7.4, 7.5): the whole model's, supported
   // DOFs included; the part the free DOFs carry, per direction.
   frame["total_mass"] = {{"value", r.total_mass(0) * mass_f}, {"unit", u.label(Quantity::mass)}};
   frame["total_rotary_inertia"] = {{"x", r.total_mass(3) * rot_f}, {"y", r.total_mass(4) * rot_f}, {"z", r.total_mass(5) * rot_f},

@@ -229,7 +229,7 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
       throw core::NumericalError(fmt::format("the eigensolver found {} of {} modes", lambdas.size(), want));
     if (!o.certify) break;
 
-    // Sturm check (Eq. 7.4). lambda_N's cluster: the values within 1e-6 of
+    // Sturm check (Eq. 7.3). lambda_N's cluster: the values within 1e-6 of
     // it (copies of a repeated root agree far better than that); the shift
     // goes halfway to the next value found, at most 5 % above lambda_N, so
     // that it lies away from every eigenvalue found.
@@ -372,7 +372,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   if (options.mode_count >= dofs.free_count())
     throw std::invalid_argument(fmt::format("{} modes asked for but the model has only {} free DOFs", options.mode_count, dofs.free_count()));
 
-  // The rigid motions the supports and springs leave free (Eq. 7.3): exact
+  // The rigid motions the supports and springs leave free (Eq. 7.2): exact
   // zero modes, deflated from the iteration.
   const FreeRigidMotions rigid = free_rigid_motions(model);
   const int nf = dofs.free_count();
@@ -402,7 +402,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   result.lanczos_runs = es.lanczos_runs;
   result.sturm_seconds = es.sturm_seconds;
 
-  // Mass bookkeeping over all DOFs (Eqs. 7.5, 7.6): M assembled with every
+  // Mass bookkeeping over all DOFs (Eqs. 7.4, 7.5): M assembled with every
   // DOF free gives the model's total mass and, in the rows of the free DOFs,
   // M_ff r_f + M_fs r_s, the inertia force of a rigid acceleration of the
   // whole model (supports included) on the free DOFs.

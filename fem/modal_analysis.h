@@ -11,7 +11,7 @@
 // repeated root) are recovered by a further Lanczos run deflated against the
 // pairs already found. Participation factors include the consistent-mass
 // coupling to the supports; effective masses are fractions of the model's
-// total mass. Theory: docs/theory/fem.md, "Modes" (Eqs. 7.1 to 7.6).
+// total mass. Theory: docs/theory/fem.md, "Modes" (Eqs. 7.1 to 7.5).
 #pragma once
 
 #include <Eigen/Dense>
@@ -46,7 +46,7 @@ struct EigenOptions {
   // motions). They are M-orthonormalised, returned as eigenvalue 0 (counted
   // in `count`), and deflated from the Lanczos iteration.
   Eigen::MatrixXd null_space;
-  // Check the set with a Sturm count and recover missed roots (Eq. 7.4).
+  // Check the set with a Sturm count and recover missed roots (Eq. 7.3).
   bool certify = true;
   int certification_rounds = 4;  // Lanczos runs at most (the first and the recoveries)
 };
@@ -57,7 +57,7 @@ struct EigenSolution {
   int iterations = 0;            // restarts of the Lanczos process (all runs)
   int operator_solves = 0;       // solves with the factorisation
   std::vector<char> null_space;  // per returned pair: 1 if it is one of EigenOptions::null_space's vectors
-  // Certification (Eq. 7.4): the number of eigenvalues below sturm_shift,
+  // Certification (Eq. 7.3): the number of eigenvalues below sturm_shift,
   // counted from the inertia of K - sturm_shift M; certified when it equals
   // the number of pairs found below it. -1 when not checked.
   long sturm_count = -1;
@@ -96,7 +96,7 @@ struct Mode {
   bool rigid_body = false;
   // Gamma_d = phi_f^T (M_ff r_f + M_fs r_s), d = x, y, z, rx, ry, rz: the
   // modal force of a unit rigid acceleration of the whole model, supports
-  // included (Eq. 7.5).
+  // included (Eq. 7.4).
   Vector6d participation;
   Vector6d effective_mass;      // Gamma_d^2 (kg; kg m^2 for rotations)
 };
@@ -115,7 +115,7 @@ struct ModalResult {
   int parts = 0;                      // connected parts of the mesh
   int iterations = 0;
   int operator_solves = 0;
-  // Certification (Eq. 7.4): eigenvalues below sturm_shift by the Sturm count.
+  // Certification (Eq. 7.3): eigenvalues below sturm_shift by the Sturm count.
   long sturm_count = -1;
   double sturm_shift_hz = 0.0;        // sqrt(sturm_shift) / 2 pi
   bool certified = false;

@@ -3,7 +3,7 @@
 // a rigid one, so the zero-energy motions of a frame are the rigid motions
 // of its connected parts (nodes joined by beam elements) that the supports
 // and springs do not restrain: per part, the six motions
-//     u_i = t + theta x (x_i - c),  rotation theta       (docs/theory/fem.md, Eq. 7.3)
+//     u_i = t + theta x (x_i - c),  rotation theta       (docs/theory/fem.md, Eq. 7.2)
 // about the part's centroid c, less the rank of the restraints on them
 // (fixed DOFs, grounded springs, springs between two DOFs). A part with no
 // restraint keeps six; a frame pinned at one node keeps its three rotations

@@ -1,7 +1,7 @@
 // Sturm sequence count for the generalised symmetric problem K phi = lambda M
 // phi (M positive definite): the number of eigenvalues below s equals the
 // number of negative pivots of K - s M = P^T L D L^T P (Sylvester's law of
-// inertia; docs/theory/fem.md Eq. 7.4). The modal solver uses it to certify
+// inertia; docs/theory/fem.md Eq. 7.3). The modal solver uses it to certify
 // that the set it returns is the complete set of the lowest eigenvalues.
 #pragma once
 
