@@ -232,7 +232,9 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
     // Sturm check (Eq. 7.3). lambda_N's cluster: the values within 1e-6 of
     // it (copies of a repeated root agree far better than that); the shift
     // goes halfway to the next value found, at most 5 % above lambda_N, so
-    // that it lies away from every eigenvalue found.
+    // that it lies away from every eigenvalue found. Above the zero cluster
+    // (rigid-body modes only) it goes halfway to the first elastic mode, far
+    // above the round-off of the zero eigenvalues in the LDL^T.
     std::vector<double> sorted = lambdas;
     std::sort(sorted.begin(), sorted.end());
     const double lambda_n = sorted[static_cast<std::size_t>(want - 1)];
@@ -243,8 +245,10 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
       if (l <= lambda_n + cluster) ++found;
       else next = std::min(next, l);
     }
-    const double window = std::abs(lambda_n) > cluster ? 0.05 * std::abs(lambda_n) : 0.01 * std::abs(o.shift);
-    const double shift = lambda_n + (std::isfinite(next) ? std::min(0.5 * (next - lambda_n), std::max(window, 2.0 * cluster)) : std::max(window, 2.0 * cluster));
+    const bool zero_cluster = std::abs(lambda_n) <= cluster;
+    const double window = zero_cluster ? 0.01 * std::abs(o.shift) : 0.05 * std::abs(lambda_n);
+    double shift = lambda_n + std::max(window, 2.0 * cluster);
+    if (std::isfinite(next)) shift = zero_cluster ? lambda_n + 0.5 * (next - lambda_n) : std::min(shift, lambda_n + 0.5 * (next - lambda_n));
     if (o.progress) o.progress(fmt::format("Sturm count below {:.6g} Hz", std::sqrt(std::max(shift, 0.0)) / kTwoPi));
     const auto t0 = std::chrono::steady_clock::now();
     const SturmCount count = count_eigenvalues_below(k, m, shift, 1e-3 * (shift - lambda_n));

@@ -279,6 +279,30 @@ TEST(PartiallySupportedFrames, HalfModelWithSymmetryConditionsGivesTheSymmetricF
   EXPECT_NEAR(r.modes[4].frequency_hz / f1, 1.0, 1e-5);
 }
 
+TEST(PartiallySupportedFrames, FewerModesThanRigidMotionsOfAFineFreeBeamAreCertifiedRigidMotions) {
+  // 640 slender Euler-Bernoulli elements, free: the round-off of a zero
+  // eigenvalue is about eps max_i K_ii / M_ii (0.05 rad^2/s^2 here). Asking
+  // for 3 modes (fewer than the six rigid motions) puts the Sturm shift
+  // halfway to the first elastic mode, far above it.
+  support::StraightBeamSpec spec;
+  spec.direction = Eigen::Vector3d(1.0, 2.0, -0.5);
+  spec.length = 2.0;
+  spec.elements = 640;
+  spec.section = fem::rectangle_section(0.04, 0.02, 0.3);
+  spec.material = support::steel();
+  spec.theory = BeamTheory::euler_bernoulli;
+  const FrameModel model = support::straight_beam(spec);
+  fem::ModalOptions options;
+  options.mode_count = 3;
+  const fem::ModalResult r = fem::compute_modes(model, options);
+  EXPECT_TRUE(r.certified);
+  EXPECT_EQ(r.sturm_count, 6);  // all six zero eigenvalues lie below the shift
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(r.modes[static_cast<std::size_t>(i)].rigid_body) << "mode " << i + 1;
+    EXPECT_LT(distance_from_rigid_motion(model, r.shapes.col(i)), 1e-12) << "mode " << i + 1;
+  }
+}
+
 TEST(PartiallySupportedFrames, FreeRigidMotionsPerPartFromSupportsAndSprings) {
   // Two unconnected beams: one pinned at one node (3 free), one held by a
   // grounded spring on ux only (5 free): 8, as two parts.
