@@ -52,6 +52,8 @@ int run_modes(const ModesOptions& opt) {
   const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
   const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);
   auto eff_in_units = [&](const fem::Vector6d& v, int d) { return v(d) * (d < 3 ? mass_f : rot_f); };
+  // Effective masses as fractions of the model's total mass (Eq. 7.5).
+  auto fraction = [&](const fem::Vector6d& v, int d) { return r.total_mass(d) > 0 ? v(d) / r.total_mass(d) : 0.0; };
 
   // summary.json
   nlohmann::ordered_json j;
@@ -63,10 +65,22 @@ int run_modes(const ModesOptions& opt) {
   frame["dofs"] = model.dof_count();
   frame["free_dofs"] = r.free_dofs;
   frame["mass_formulation"] = opt.lumped ? "lumped" : "consistent";
+  // Masses (docs/theory/fem.md Eqs. 7.4, 7.5): the whole model's, supported
+  // DOFs included; the part the free DOFs carry, per direction.
   frame["total_mass"] = {{"value", r.total_mass(0) * mass_f}, {"unit", u.label(Quantity::mass)}};
+  frame["total_rotary_inertia"] = {{"x", r.total_mass(3) * rot_f}, {"y", r.total_mass(4) * rot_f}, {"z", r.total_mass(5) * rot_f},
+                                   {"unit", u.label(Quantity::rotary_inertia)}, {"about", "reference_point"}};
+  nlohmann::ordered_json free_mass;
+  for (int d = 0; d < 6; ++d) free_mass[kDirections[d]] = eff_in_units(r.free_mass, d);
+  frame["free_dof_mass"] = free_mass;
   frame["reference_point"] = {{"value", {0.0, 0.0, 0.0}}, {"unit", u.label(Quantity::length)}};
   frame["effective_mass_unit"] = {{"translation", u.label(Quantity::mass)}, {"rotation", u.label(Quantity::rotary_inertia)}};
+  frame["participation_factor_unit"] = {{"translation", "sqrt(" + u.label(Quantity::mass) + ")"},
+                                        {"rotation", "sqrt(" + u.label(Quantity::rotary_inertia) + ")"}};
   frame["rigid_body_modes_expected"] = r.rigid_body_modes_expected;
+  frame["parts"] = r.parts;
+  frame["sturm_check"] = {{"certified", r.certified}, {"eigenvalues_below", r.sturm_count}, {"below_hz", r.sturm_shift_hz},
+                          {"lanczos_runs", r.lanczos_runs}};
   nlohmann::ordered_json modes = nlohmann::ordered_json::array();
   fem::Vector6d sum = fem::Vector6d::Zero();
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
@@ -78,19 +92,22 @@ int run_modes(const ModesOptions& opt) {
     nlohmann::ordered_json eff, frac;
     for (int d = 0; d < 6; ++d) {
       eff[kDirections[d]] = eff_in_units(m.effective_mass, d);
-      frac[kDirections[d]] = r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0;
+      frac[kDirections[d]] = fraction(m.effective_mass, d);
     }
     sum += m.effective_mass;
+    nlohmann::ordered_json gamma;
+    for (int d = 0; d < 6; ++d) gamma[kDirections[d]] = m.participation(d) * std::sqrt(d < 3 ? mass_f : rot_f);
+    jm["participation_factor"] = gamma;
     jm["effective_mass"] = eff;
     jm["effective_mass_fraction"] = frac;
     modes.push_back(jm);
   }
   frame["modes"] = modes;
   nlohmann::ordered_json cumulative;
-  for (int d = 0; d < 6; ++d) cumulative[kDirections[d]] = r.total_mass(d) > 0 ? sum(d) / r.total_mass(d) : 0.0;
+  for (int d = 0; d < 6; ++d) cumulative[kDirections[d]] = fraction(sum, d);
   frame["effective_mass_fraction_sum"] = cumulative;
-  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD"}, {"shift_hz", -opt.shift_hz}, {"restarts", r.iterations},
-                     {"operator_solves", r.operator_solves}};
+  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD, Sturm-count certified"}, {"shift_hz", -opt.shift_hz},
+                     {"restarts", r.iterations}, {"operator_solves", r.operator_solves}};
   j["frame"] = frame;
   folder.write_text("summary.json", j.dump(2) + "\n");
 
@@ -104,7 +121,7 @@ int run_modes(const ModesOptions& opt) {
     const fem::Mode& m = r.modes[i];
     table.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(std::string(m.rigid_body ? "yes" : "no"));
     for (int d = 0; d < 6; ++d) table.add(eff_in_units(m.effective_mass, d));
-    for (int d = 0; d < 6; ++d) table.add(r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0);
+    for (int d = 0; d < 6; ++d) table.add(fraction(m.effective_mass, d));
   }
   folder.write_text("modes.csv", table.str());
 
@@ -137,15 +154,25 @@ int run_modes(const ModesOptions& opt) {
   // The table.
   fmt::print("framedyn modes: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.mesh.path, model.nodes.size(),
              model.beams.size(), r.free_dofs, u.name());
-  fmt::print("total mass {:.6g} {}\n\n", r.total_mass(0) * mass_f, u.label(Quantity::mass));
-  fmt::print(" mode  frequency [Hz]   effective mass fraction: x      y      z      rx     ry     rz\n");
+  fmt::print("total mass {:.6g} {} (supported DOFs included); carried by the free DOFs: x {:.6g}, y {:.6g}, z {:.6g}\n",
+             r.total_mass(0) * mass_f, u.label(Quantity::mass), r.free_mass(0) * mass_f, r.free_mass(1) * mass_f, r.free_mass(2) * mass_f);
+  fmt::print("rotary inertia about the origin {:.6g}, {:.6g}, {:.6g} {}\n", r.total_mass(3) * rot_f, r.total_mass(4) * rot_f,
+             r.total_mass(5) * rot_f, u.label(Quantity::rotary_inertia));
+  fmt::print("rigid-body modes {} ({} part(s)); Sturm check: {} eigenvalue(s) below {:.6g} Hz, {}\n\n", r.rigid_body_modes_expected,
+             r.parts, r.sturm_count, r.sturm_shift_hz, r.certified ? "the set is complete" : "not checked");
+  fmt::print(" mode  frequency [Hz]   effective mass / total mass:  x      y      z      rx     ry     rz\n");
+  fem::Vector6d sum_all = fem::Vector6d::Zero();
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const fem::Mode& m = r.modes[i];
     std::string line = fmt::format("{:5d}  {:>14}", i + 1, m.rigid_body ? "0 (rigid body)" : fmt::format("{:.6g}", m.frequency_hz));
-    line += "                         ";
-    for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", r.total_mass(d) > 0 ? m.effective_mass(d) / r.total_mass(d) : 0.0);
+    line += "                            ";
+    for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", fraction(m.effective_mass, d));
+    sum_all += m.effective_mass;
     fmt::print("{}\n", line);
   }
+  std::string line = fmt::format("{:>5}  {:>14}                            ", "sum", "");
+  for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", fraction(sum_all, d));
+  fmt::print("{}\n", line);
   fmt::print("\nresults in {}/ (summary.json, modes.csv, mode_shapes.csv, modes.vtu)\n", out_dir);
   return 0;
 }

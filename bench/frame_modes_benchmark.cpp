@@ -1,14 +1,17 @@
 // Benchmark: the lowest 10 and 50 modes of refined R-100-like frames from
 // about 10^3 to 10^6 DOF, wall time and peak memory, with two baselines run
 // in the same invocation on the same deck: CalculiX (ccx, the peer FE code)
-// and framedyn with Eigen's SimplicialLDLT in place of CHOLMOD.
+// and framedyn with Eigen's SimplicialLDLT in place of CHOLMOD; and the cost
+// of the Sturm-count certification (docs/theory/fem.md Eq. 7.3): framedyn
+// with the check off, same deck, same run, as a ratio (--sturm-off-max-dofs).
 //
 // Each case runs in a child process (fork), so its peak resident memory is
 // its own (wait4's ru_maxrss); framedyn's time covers reading the .inp,
 // assembly, factorisation and the Lanczos iteration.
 //
 //   frame_modes_benchmark [--sizes 1e3,1e4,1e5,1e6] [--modes 10,50]
-//                         [--calculix-max-dofs 1e5] [--ldlt-max-dofs 1e6] [--out DIR]
+//                         [--calculix-max-dofs 1e5] [--ldlt-max-dofs 1e6]
+//                         [--sturm-off-max-dofs 1e6] [--out DIR]
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -41,6 +44,8 @@ struct Measurement {
   double seconds = 0.0;
   double peak_mib = 0.0;
   std::vector<double> frequencies;
+  double sturm_seconds = 0.0;  // the Sturm counts' share of `seconds`
+  bool certified = false;
 };
 
 std::vector<double> parse_list(const std::string& s) {
@@ -52,7 +57,7 @@ std::vector<double> parse_list(const std::string& s) {
 }
 
 // Runs framedyn's modal analysis of `deck` in a child process.
-Measurement run_framedyn(const std::string& deck, int modes, fem::Factorization factorization) {
+Measurement run_framedyn(const std::string& deck, int modes, fem::Factorization factorization, bool certify = true) {
   int fd[2];
   if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
   const auto start = std::chrono::steady_clock::now();
@@ -65,7 +70,9 @@ Measurement run_framedyn(const std::string& deck, int modes, fem::Factorization 
       fem::ModalOptions o;
       o.mode_count = modes;
       o.factorization = factorization;
+      o.certify = certify;
       const fem::ModalResult r = fem::compute_modes(model, o);
+      out += fmt::format("{:.6f} {}\n", r.sturm_seconds, r.certified ? 1 : 0);
       for (const fem::Mode& m : r.modes) out += fmt::format("{:.12g}\n", m.frequency_hz);
     } catch (const std::exception& e) {
       out = std::string("error: ") + e.what() + "\n";
@@ -91,6 +98,9 @@ Measurement run_framedyn(const std::string& deck, int modes, fem::Factorization 
     return m;
   }
   std::stringstream ss(text);
+  int certified = 0;
+  ss >> m.sturm_seconds >> certified;
+  m.certified = certified != 0;
   double f;
   while (ss >> f) m.frequencies.push_back(f);
   m.ok = true;
@@ -150,7 +160,7 @@ std::string cell(const Measurement& m) {
 int main(int argc, char** argv) {
   std::vector<double> sizes = {1e3, 1e4, 1e5, 1e6};
   std::vector<double> mode_counts = {10, 50};
-  double calculix_max = 1e5, ldlt_max = 1e6;
+  double calculix_max = 1e5, ldlt_max = 1e6, sturm_off_max = 1e6;
   fs::path out = "bench_results";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -158,6 +168,7 @@ int main(int argc, char** argv) {
     else if (k == "--modes") mode_counts = parse_list(v);
     else if (k == "--calculix-max-dofs") calculix_max = std::stod(v);
     else if (k == "--ldlt-max-dofs") ldlt_max = std::stod(v);
+    else if (k == "--sturm-off-max-dofs") sturm_off_max = std::stod(v);
     else if (k == "--out") out = v;
     else {
       std::cerr << "unknown option " << k << "\n";
@@ -170,8 +181,8 @@ int main(int argc, char** argv) {
 
   std::ofstream csv(out / "frame_modes_benchmark.csv");
   csv << "target_dofs,subdivisions,modes,code,ok,wall [s],peak_memory [MiB],f1 [Hz],f_last [Hz],max_rel_diff_vs_framedyn\n";
-  fmt::print("| DOF | modes | framedyn (CHOLMOD) | Eigen SimplicialLDLT | CalculiX | LDLT / CHOLMOD time | CalculiX / framedyn time | max freq. diff. LDLT | CalculiX nearest-match diff., first 10 modes (median / max) |\n");
-  fmt::print("|---|---|---|---|---|---|---|---|---|\n");
+  fmt::print("| DOF | modes | framedyn (CHOLMOD) | of which Sturm counts | Sturm check off | on / off time | Eigen SimplicialLDLT | CalculiX | LDLT / CHOLMOD time | CalculiX / framedyn time | max freq. diff. LDLT | CalculiX nearest-match diff., first 10 modes (median / max) |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (double target : sizes) {
     const int k = testing::subdivisions_for(base, static_cast<long>(target));
     const fs::path deck = out / fmt::format("frame_{:.0e}.inp", target);
@@ -183,16 +194,20 @@ int main(int argc, char** argv) {
     for (double mc : mode_counts) {
       const int modes = static_cast<int>(mc);
       const Measurement fd = run_framedyn(deck.string(), modes, fem::Factorization::cholmod);
-      Measurement ld, cx;
+      Measurement ld, cx, off;
+      if (target <= sturm_off_max) off = run_framedyn(deck.string(), modes, fem::Factorization::cholmod, false);
       if (target <= ldlt_max) ld = run_framedyn(deck.string(), modes, fem::Factorization::eigen_simplicial_ldlt);
       if (have_ccx && target <= calculix_max) cx = run_ccx(fs::absolute(deck).string(), modes, out / fmt::format("ccx_{:.0e}_{}", target, modes));
       const std::string ld_ratio = (fd.ok && ld.ok) ? fmt::format("{:.2f}", ld.seconds / fd.seconds) : "-";
       const std::string cx_ratio = (fd.ok && cx.ok) ? fmt::format("{:.1f}", cx.seconds / fd.seconds) : "-";
       const std::string ld_diff = (fd.ok && ld.ok) ? fmt::format("{:.1e}", max_relative_difference(fd.frequencies, ld.frequencies, 1000)) : "-";
       const std::string cx_diff = (fd.ok && cx.ok) ? median_and_max(nearest_match_differences(fd.frequencies, cx.frequencies, 10)) : "-";
-      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", dofs, modes, cell(fd), cell(ld), cell(cx), ld_ratio, cx_ratio, ld_diff, cx_diff);
+      const std::string sturm = fd.ok ? fmt::format("{:.3g} s{}", fd.sturm_seconds, fd.certified ? "" : " (not certified)") : "-";
+      const std::string off_ratio = (fd.ok && off.ok) ? fmt::format("{:.2f}", fd.seconds / off.seconds) : "-";
+      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", dofs, modes, cell(fd), sturm, cell(off), off_ratio, cell(ld),
+                 cell(cx), ld_ratio, cx_ratio, ld_diff, cx_diff);
       std::cout.flush();
-      for (const auto& [name, m] : {std::pair<std::string, const Measurement*>{"framedyn_cholmod", &fd}, {"framedyn_simplicial_ldlt", &ld}, {"calculix", &cx}}) {
+      for (const auto& [name, m] : {std::pair<std::string, const Measurement*>{"framedyn_cholmod", &fd}, {"framedyn_simplicial_ldlt", &ld}, {"framedyn_sturm_off", &off}, {"calculix", &cx}}) {
         csv << fmt::format("{:.0f},{},{},{},{},{:.4f},{:.1f},{},{},{}\n", target, k, modes, name, m->ok ? 1 : 0, m->seconds, m->peak_mib,
                            m->frequencies.empty() ? 0.0 : m->frequencies.front(), m->frequencies.empty() ? 0.0 : m->frequencies.back(),
                            (fd.ok && m->ok) ? max_relative_difference(fd.frequencies, m->frequencies, name == "calculix" ? 10 : 1000) : -1.0);

@@ -9,10 +9,15 @@
 #include <cmath>
 #include <exception>
 #include <numeric>
+#include <chrono>
+#include <limits>
+#include <random>
 #include <thread>
 
 #include "core/error.h"
+#include "fem/rigid_body_modes.h"
 #include "fem/sparse_cholesky.h"
+#include "fem/sturm_count.h"
 
 namespace framedyn::fem {
 
@@ -73,23 +78,33 @@ MassFactor mass_factor(const SparseMatrix& m, const Eigen::SimplicialLDLT<Sparse
 //     C y = nu y,   C = S^T A^{-1} S,   nu = 1 / (lambda - sigma),   phi = S^{-T} y,
 // a symmetric standard problem: Spectra's Lanczos then needs no M-inner
 // products (which cost a sparse product each, five to eight per step).
+// Pairs already known (orthonormal columns Y, y-space) are deflated: the
+// operator is (I - Y Y^T) C (I - Y Y^T), whose eigenvalue for them is 0 (an
+// infinite lambda), never among the largest nu.
 template <class Solver>
 class StandardFormOperator {
  public:
   using Scalar = double;
-  StandardFormOperator(const Solver& solver, const MassFactor& mass)
-      : solver_(solver), mass_(mass), a_(mass.lower.rows()), b_(mass.lower.rows()) {}
+  StandardFormOperator(const Solver& solver, const MassFactor& mass, const Eigen::MatrixXd& locked)
+      : solver_(solver), mass_(mass), locked_(locked), a_(mass.lower.rows()), b_(mass.lower.rows()), c_(mass.lower.rows()) {}
   Eigen::Index rows() const { return mass_.lower.rows(); }
   Eigen::Index cols() const { return mass_.lower.rows(); }
   void perform_op(const Scalar* x, Scalar* y) const {
     const Eigen::Index n = rows();
     Eigen::Map<const Eigen::VectorXd> in(x, n);
     Eigen::Map<Eigen::VectorXd> out(y, n);
-    a_.noalias() = mass_.lower * in;                           // L x
+    if (locked_.cols() > 0) {
+      c_ = in;
+      c_.noalias() -= locked_ * (locked_.transpose() * c_);
+      a_.noalias() = mass_.lower * c_;                            // L x
+    } else {
+      a_.noalias() = mass_.lower * in;                            // L x
+    }
     for (Eigen::Index i = 0; i < n; ++i) b_(mass_.perm(i)) = a_(i);  // S x = P^T L x
     solve_into(solver_, b_, a_);                                 // A^{-1} S x
     for (Eigen::Index i = 0; i < n; ++i) b_(i) = a_(mass_.perm(i));  // P ...
     out.noalias() = mass_.lower.transpose() * b_;               // S^T ... = L^T P ...
+    if (locked_.cols() > 0) out.noalias() -= locked_ * (locked_.transpose() * out);
     ++solves_;
   }
   // phi = S^{-T} y = P^T L^{-T} y.
@@ -99,21 +114,60 @@ class StandardFormOperator {
     for (Eigen::Index i = 0; i < u.size(); ++i) phi(mass_.perm(i)) = u(i);
     return phi;
   }
+  // y = S^T phi = L^T P phi.
+  Eigen::VectorXd to_standard(const Eigen::VectorXd& phi) const {
+    Eigen::VectorXd p(phi.size());
+    for (Eigen::Index i = 0; i < phi.size(); ++i) p(i) = phi(mass_.perm(i));
+    return mass_.lower.transpose() * p;
+  }
   int solves() const { return solves_; }
 
  private:
   const Solver& solver_;
   const MassFactor& mass_;
-  mutable Eigen::VectorXd a_, b_;
+  const Eigen::MatrixXd& locked_;
+  mutable Eigen::VectorXd a_, b_, c_;
   mutable int solves_ = 0;
 };
+
+// One Lanczos run for the `nev` largest nu of the deflated operator.
+template <class Op>
+void lanczos_run(Op& op, const Eigen::MatrixXd& locked, Eigen::Index nev, Eigen::Index ncv, long wanted, int run, const EigenOptions& o,
+                 std::vector<double>& lambdas, Eigen::MatrixXd& ys, int& iterations) {
+  const Eigen::Index n = op.rows();
+  Spectra::SymEigsSolver<Op> eigs(op, nev, ncv);
+  if (o.progress) o.progress(fmt::format("Lanczos iteration for {} modes (subspace {}{})", nev, ncv,
+                                         locked.cols() > 0 ? fmt::format(", {} known pairs deflated", locked.cols()) : ""));
+  if (locked.cols() == 0 && run == 0) {
+    eigs.init();
+  } else {
+    // A start vector with no component along the known pairs.
+    std::mt19937 rng(static_cast<unsigned>(12345 + run));
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    Eigen::VectorXd v0(n);
+    for (Eigen::Index i = 0; i < n; ++i) v0(i) = u(rng);
+    if (locked.cols() > 0) v0 -= locked * (locked.transpose() * v0);
+    eigs.init(v0.data());
+  }
+  const Eigen::Index converged = eigs.compute(Spectra::SortRule::LargestAlge, o.max_iterations, o.tolerance);
+  if (eigs.info() != Spectra::CompInfo::Successful)
+    throw core::NumericalError(non_convergence_message(std::min<long>(converged, wanted), wanted, ncv, n, o));
+  const Eigen::VectorXd nu = eigs.eigenvalues();
+  const Eigen::MatrixXd y = eigs.eigenvectors();
+  const Eigen::Index old = ys.cols();
+  ys.conservativeResize(n, old + nu.size());
+  // lambda = sigma + 1/nu: the largest nu are the lowest lambda, in order.
+  for (Eigen::Index i = 0; i < nu.size(); ++i) {
+    lambdas.push_back(o.shift + 1.0 / nu(i));
+    ys.col(old + i) = y.col(i);
+  }
+  iterations += static_cast<int>(eigs.num_iterations());
+}
 
 template <class Solver>
 EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatrix& m, const EigenOptions& o) {
   const Eigen::Index n = k.rows();
-  const Eigen::Index nev = std::min<Eigen::Index>(o.count, n - 1);
-  const Eigen::Index ncv = std::min<Eigen::Index>(
-      n, o.subspace > nev ? o.subspace : std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+  const Eigen::Index want = std::min<Eigen::Index>(o.count, n - 1);
   if (o.progress) o.progress(fmt::format("factorising K - sigma M and M ({} equations)", n));
   // The two factorisations are independent: M's on a second thread.
   MassFactor mass;
@@ -134,30 +188,132 @@ EigenSolution solve_with(Solver& solver, const SparseMatrix& k, const SparseMatr
         "the factorisation of K - sigma M failed{}: the stiffness matrix is not positive semi-definite "
         "or the mass matrix is not positive definite (check for a massless degree of freedom, a negative "
         "stiffness or density)", at_equation(o, failed_equation(solver))));
+
+  // Candidates: every pair found so far, as eigenvalues and orthonormal
+  // columns in y-space; all are deflated from the next Lanczos run.
+  Eigen::MatrixXd ys(n, 0);
+  std::vector<double> lambdas;
   using Op = StandardFormOperator<Solver>;
-  Op op(solver, mass);
-  Spectra::SymEigsSolver<Op> eigs(op, nev, ncv);
-  if (o.progress) o.progress(fmt::format("Lanczos iteration for {} modes (subspace {})", nev, ncv));
-  eigs.init();
-  const Eigen::Index converged = eigs.compute(Spectra::SortRule::LargestAlge, o.max_iterations, o.tolerance);
-  if (eigs.info() != Spectra::CompInfo::Successful)
-    throw core::NumericalError(non_convergence_message(converged, nev, ncv, n, o));
+  Op op(solver, mass, ys);
   EigenSolution s;
-  const Eigen::VectorXd nu = eigs.eigenvalues();
-  const Eigen::MatrixXd y = eigs.eigenvectors();
-  // lambda = sigma + 1/nu: the largest nu are the lowest lambda, in order.
-  s.eigenvalues.resize(nu.size());
-  s.vectors.resize(n, nu.size());
-  for (Eigen::Index i = 0; i < nu.size(); ++i) {
-    s.eigenvalues(i) = o.shift + 1.0 / nu(i);
-    Eigen::VectorXd v = op.back_transform(y.col(i));
+  const Eigen::Index p = o.null_space.cols();
+  if (p > 0) {
+    if (o.null_space.rows() != n) throw std::invalid_argument("lowest_eigenpairs: null space of the wrong size");
+    Eigen::MatrixXd y0(n, p);
+    for (Eigen::Index j = 0; j < p; ++j) y0.col(j) = op.to_standard(o.null_space.col(j));
+    // Orthonormal in y-space = M-orthonormal in phi-space.
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr(y0);
+    const Eigen::VectorXd r = qr.matrixQR().diagonal().head(p).cwiseAbs();
+    if (r.minCoeff() <= 1e-10 * r.maxCoeff()) throw std::invalid_argument("lowest_eigenpairs: the null-space vectors are not independent");
+    ys = qr.householderQ() * Eigen::MatrixXd::Identity(n, p);
+    lambdas.assign(static_cast<std::size_t>(p), 0.0);
+  }
+  const std::size_t known = lambdas.size();
+
+  // First run: the wanted modes not known, and one more, so that the Sturm
+  // shift can be put in the gap above the highest wanted one.
+  Eigen::Index nev = std::max<Eigen::Index>(want - p, 0) + 1;
+  Eigen::Index first_subspace = o.subspace;
+  for (int run = 0;; ++run) {
+    const Eigen::Index room = n - static_cast<Eigen::Index>(lambdas.size());  // dimension left after deflation
+    nev = std::min(nev, room - 1);
+    if (nev >= 1) {
+      const Eigen::Index ncv = std::min<Eigen::Index>(
+          n, first_subspace > nev ? first_subspace : std::max<Eigen::Index>(2 * nev + 1, nev + 20));
+      first_subspace = 0;
+      lanczos_run(op, ys, nev, ncv, run == 0 ? static_cast<long>(std::max<Eigen::Index>(want - p, 1)) : static_cast<long>(nev), run, o,
+                  lambdas, ys, s.iterations);
+      ++s.lanczos_runs;
+    }
+    if (static_cast<Eigen::Index>(lambdas.size()) < want)
+      throw core::NumericalError(fmt::format("the eigensolver found {} of {} modes", lambdas.size(), want));
+    if (!o.certify) break;
+
+    // Sturm check (Eq. 7.3). lambda_N's cluster: the values within 1e-6 of
+    // it (copies of a repeated root agree far better than that); the shift
+    // goes halfway to the next value found, at most 5 % above lambda_N, so
+    // that it lies away from every eigenvalue found. Above the zero cluster
+    // (rigid-body modes only) it goes halfway to the first elastic mode, far
+    // above the round-off of the zero eigenvalues in the LDL^T.
+    std::vector<double> sorted = lambdas;
+    std::sort(sorted.begin(), sorted.end());
+    const double lambda_n = sorted[static_cast<std::size_t>(want - 1)];
+    const double cluster = 1e-6 * std::max(std::abs(lambda_n), std::abs(o.shift));
+    long found = 0;
+    double next = std::numeric_limits<double>::infinity();
+    for (double l : sorted) {
+      if (l <= lambda_n + cluster) ++found;
+      else next = std::min(next, l);
+    }
+    const bool zero_cluster = std::abs(lambda_n) <= cluster;
+    const double window = zero_cluster ? 0.01 * std::abs(o.shift) : 0.05 * std::abs(lambda_n);
+    double shift = lambda_n + std::max(window, 2.0 * cluster);
+    if (std::isfinite(next)) shift = zero_cluster ? lambda_n + 0.5 * (next - lambda_n) : std::min(shift, lambda_n + 0.5 * (next - lambda_n));
+    if (o.progress) o.progress(fmt::format("Sturm count below {:.6g} Hz", std::sqrt(std::max(shift, 0.0)) / kTwoPi));
+    const auto t0 = std::chrono::steady_clock::now();
+    const SturmCount count = count_eigenvalues_below(k, m, shift, 1e-3 * (shift - lambda_n));
+    s.sturm_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    s.sturm_factorizations += count.factorizations;
+    s.sturm_count = count.below;
+    s.sturm_shift = count.shift;
+    if (count.below == found) {
+      s.certified = true;
+      break;
+    }
+    if (count.below > found && shift - lambda_n > 2.0 * cluster) {
+      // Some eigenvalues between lambda_N's cluster and the shift were not
+      // found: if they all lie above the cluster they are not among the N
+      // lowest. A second count just above the cluster tells.
+      const auto t1 = std::chrono::steady_clock::now();
+      const SturmCount tight = count_eigenvalues_below(k, m, lambda_n + 2.0 * cluster, 0.1 * cluster);
+      s.sturm_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      s.sturm_factorizations += tight.factorizations;
+      if (tight.below == found) {
+        s.sturm_count = tight.below;
+        s.sturm_shift = tight.shift;
+        s.certified = true;
+        break;
+      }
+    }
+    const long missing = count.below - found;
+    const std::string figures = fmt::format(
+        "the Sturm count (the negative pivots of K - s M = L D L^T) finds {} eigenvalue(s) below s = {:.6g} rad^2/s^2 "
+        "({:.6g} Hz) where the Lanczos iteration found {} (asked for {}; {} run(s), {} equations)",
+        count.below, count.shift, std::sqrt(std::max(count.shift, 0.0)) / kTwoPi, found, want, s.lanczos_runs, n);
+    if (missing < 0) {
+      s.certification_failure = "the mode set could not be certified: " + figures +
+                                ": the iteration returned pairs that are not eigenpairs (ill-conditioned K or M?)";
+      break;
+    }
+    if (run + 1 >= o.certification_rounds || nev < 1) {
+      s.certification_failure = "the mode set could not be certified: " + figures +
+                                ", after the recoveries. Try a shift nearer the wanted frequencies (--shift) or more modes";
+      break;
+    }
+    // Recovery: the missed roots are the lowest of the complement of the
+    // pairs found; one more than missed, for the gap above them.
+    if (o.progress) o.progress(fmt::format("{} eigenvalue(s) missed below {:.6g} Hz: searching again with the {} pairs found deflated",
+                                           missing, std::sqrt(std::max(count.shift, 0.0)) / kTwoPi, lambdas.size()));
+    nev = missing + 1;
+  }
+
+  // The `want` lowest, in order.
+  std::vector<std::size_t> order(lambdas.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lambdas[x] < lambdas[y]; });
+  s.eigenvalues.resize(want);
+  s.vectors.resize(n, want);
+  for (Eigen::Index i = 0; i < want; ++i) {
+    const std::size_t c = order[static_cast<std::size_t>(i)];
+    s.eigenvalues(i) = lambdas[c];
+    Eigen::VectorXd v = op.back_transform(ys.col(static_cast<Eigen::Index>(c)));
     // Deterministic sign: the largest component positive.
     Eigen::Index imax = 0;
     v.cwiseAbs().maxCoeff(&imax);
     if (v(imax) < 0) v = -v;
     s.vectors.col(i) = v;
+    s.null_space.push_back(c < known ? 1 : 0);
   }
-  s.iterations = static_cast<int>(eigs.num_iterations());
   s.operator_solves = op.solves();
   return s;
 }
@@ -188,26 +344,16 @@ EigenSolution lowest_eigenpairs(const SparseMatrix& k, const SparseMatrix& m, co
 
 namespace {
 
-// Largest K_ii / M_ii: a lower bound on the largest eigenvalue, the scale of
-// the round-off in every computed eigenvalue.
-double eigenvalue_scale(const SparseMatrix& k, const SparseMatrix& m) {
-  const Eigen::VectorXd kd = k.diagonal(), md = m.diagonal();
-  double s = 0.0;
-  for (Eigen::Index i = 0; i < kd.size(); ++i)
-    if (md(i) > 0.0) s = std::max(s, kd(i) / md(i));
-  return s;
-}
-
-std::string largest_motion_nodes(const FrameModel& model, const DofMap& dofs, const Eigen::VectorXd& shape) {
-  std::vector<std::pair<double, int>> amp(model.nodes.size(), {0.0, 0});
-  for (std::size_t i = 0; i < model.nodes.size(); ++i) amp[i].second = model.nodes[i].id;
-  for (int e = 0; e < dofs.free_count(); ++e) {
-    const int g = dofs.free_dofs[static_cast<std::size_t>(e)];
-    amp[static_cast<std::size_t>(g / kDofsPerNode)].first += shape(e) * shape(e);
-  }
-  std::stable_sort(amp.begin(), amp.end(), [](auto& a, auto& b) { return a.first > b.first; });
+// "node 12 (ux), node 12 (uz), ..." for the largest components of a shape.
+std::string largest_motion_dofs(const FrameModel& model, const DofMap& dofs, const Eigen::VectorXd& shape) {
+  std::vector<int> order(static_cast<std::size_t>(dofs.free_count()));
+  std::iota(order.begin(), order.end(), 0);
+  const std::size_t shown = std::min<std::size_t>(6, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(shown), order.end(),
+                    [&](int a, int b) { return std::abs(shape(a)) > std::abs(shape(b)); });
   std::string out;
-  for (std::size_t i = 0; i < std::min<std::size_t>(5, amp.size()); ++i) out += (i ? ", " : "") + std::to_string(amp[i].second);
+  for (std::size_t i = 0; i < shown; ++i)
+    out += (i ? ", " : "") + model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(order[i])]);
   return out;
 }
 
@@ -230,65 +376,84 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   if (options.mode_count >= dofs.free_count())
     throw std::invalid_argument(fmt::format("{} modes asked for but the model has only {} free DOFs", options.mode_count, dofs.free_count()));
 
+  // The rigid motions the supports and springs leave free (Eq. 7.2): exact
+  // zero modes, deflated from the iteration.
+  const FreeRigidMotions rigid = free_rigid_motions(model);
+  const int nf = dofs.free_count();
+  Eigen::MatrixXd rigid_free(nf, rigid.shapes.cols());
+  for (int e = 0; e < nf; ++e) rigid_free.row(e) = rigid.shapes.row(dofs.free_dofs[static_cast<std::size_t>(e)]);
+
   EigenOptions eo;
   eo.count = options.mode_count;
   eo.shift = -std::pow(kTwoPi * options.shift_hz, 2);
   eo.factorization = options.factorization;
   eo.progress = options.progress;
+  eo.certify = options.certify;
+  eo.null_space = std::move(rigid_free);
   eo.describe_equation = [&](int e) { return model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(e)]); };
-  EigenSolution es = lowest_eigenpairs(sys.stiffness, sys.mass, eo);
+  const EigenSolution es = lowest_eigenpairs(sys.stiffness, sys.mass, eo);
   if (options.progress) options.progress("participation factors and effective masses");
 
   ModalResult result;
-  result.free_dofs = dofs.free_count();
+  result.free_dofs = nf;
   result.iterations = es.iterations;
   result.operator_solves = es.operator_solves;
-  bool grounded = !model.constraints.empty();
-  for (const Spring& s : model.springs) grounded = grounded || s.node_b < 0;
-  result.rigid_body_modes_expected = grounded ? 0 : 6;
+  result.rigid_body_modes_expected = static_cast<int>(rigid.shapes.cols());
+  result.parts = rigid.parts;
+  result.sturm_count = es.sturm_count;
+  result.sturm_shift_hz = std::sqrt(std::max(es.sturm_shift, 0.0)) / kTwoPi;
+  result.certified = es.certified;
+  result.lanczos_runs = es.lanczos_runs;
+  result.sturm_seconds = es.sturm_seconds;
 
-  // Rigid-body vectors restricted to the free DOFs.
+  // Mass bookkeeping over all DOFs (Eqs. 7.4, 7.5): M assembled with every
+  // DOF free gives the model's total mass and, in the rows of the free DOFs,
+  // M_ff r_f + M_fs r_s, the inertia force of a rigid acceleration of the
+  // whole model (supports included) on the free DOFs.
+  DofMap all;
+  all.free_index.resize(static_cast<std::size_t>(model.dof_count()));
+  std::iota(all.free_index.begin(), all.free_index.end(), 0);
+  all.free_dofs = all.free_index;
+  const SparseMatrix mass_all = assemble(model, all, {options.mass, Storage::lower}).mass;
   const Eigen::MatrixXd r_all = rigid_body_vectors(model, options.reference_point);
-  Eigen::MatrixXd r(dofs.free_count(), 6);
-  for (int e = 0; e < dofs.free_count(); ++e) r.row(e) = r_all.row(dofs.free_dofs[static_cast<std::size_t>(e)]);
-  const Eigen::MatrixXd mr = sys.mass.selfadjointView<Eigen::Lower>() * r;
-  result.total_mass = (r.transpose() * mr).diagonal();
+  const Eigen::MatrixXd mr_all = mass_all.selfadjointView<Eigen::Lower>() * r_all;
+  result.total_mass = (r_all.transpose() * mr_all).diagonal();
+  Eigen::MatrixXd r(nf, 6), mr(nf, 6);
+  for (int e = 0; e < nf; ++e) {
+    r.row(e) = r_all.row(dofs.free_dofs[static_cast<std::size_t>(e)]);
+    mr.row(e) = mr_all.row(dofs.free_dofs[static_cast<std::size_t>(e)]);
+  }
+  result.free_mass = (r.transpose() * (sys.mass.selfadjointView<Eigen::Lower>() * r)).diagonal();
 
-  // A zero eigenvalue comes out with two errors: the iteration's, far below
-  // |sigma| (1/(lambda - sigma) converges to `tolerance` relative to
-  // 1/|sigma|), and the factorisation's round-off, about eps * lambda_max
-  // whatever sigma is (measured up to 7e-17 max_i(K_ii/M_ii) on free-free
-  // beams of 40 to 1280 elements: 0.07 rad^2/s^2 for 640 Euler-Bernoulli
-  // elements of 3 mm, above 1e-4 |sigma| = 0.004). "Zero" is therefore below
-  // the larger of f < shift_hz / 100 and 1e-14 max_i(K_ii/M_ii) (about 45 eps,
-  // 150 times the measured round-off). An elastic mode below the latter has
-  // lost all but two digits to round-off anyway. (The scale term alone, at
-  // 1e-8, took the fundamental of a 40-element cantilever for a mechanism;
-  // the shift term alone missed rigid-body modes of fine meshes.)
-  const double zero_level = std::max(1e-4 * std::abs(eo.shift), 1e-14 * eigenvalue_scale(sys.stiffness, sys.mass));
+  // A mode that is not a free rigid motion but has a frequency below a
+  // hundredth of the shift (0.01 Hz by default) is a mechanism: a motion the
+  // beams do not resist (a section with no stiffness), which no rigid motion
+  // of a part explains. The threshold is relative to the frequencies the
+  // user asks about, not to the stiffest DOF: the rigid motions no longer
+  // need telling apart by their (round-off) eigenvalue.
+  const double zero_level = 1e-4 * std::abs(eo.shift);
   result.shapes = Eigen::MatrixXd::Zero(model.dof_count(), es.eigenvalues.size());
-  int near_zero = 0;
   for (Eigen::Index i = 0; i < es.eigenvalues.size(); ++i) {
     Mode mode;
-    mode.eigenvalue = es.eigenvalues(i);
     const Eigen::VectorXd phi = es.vectors.col(i);
-    const bool zero = std::abs(mode.eigenvalue) <= zero_level;
-    if (zero) ++near_zero;
-    mode.rigid_body = zero && near_zero <= result.rigid_body_modes_expected;
+    mode.rigid_body = es.null_space[static_cast<std::size_t>(i)] != 0;
+    mode.eigenvalue = mode.rigid_body ? 0.0 : es.eigenvalues(i);
     mode.frequency_hz = mode.rigid_body ? 0.0 : std::sqrt(std::max(mode.eigenvalue, 0.0)) / kTwoPi;
+    if (!mode.rigid_body && mode.eigenvalue <= zero_level)
+      throw core::NumericalError(fmt::format(
+          "mechanism: mode {} has zero frequency ({:.3g} Hz, below {:.3g} Hz = shift / 100) but is not a rigid motion of "
+          "the parts the supports leave free ({} expected: {}); part of the frame can move without straining. The motion "
+          "is largest at {}. Check the sections (a zero area, moment of inertia or torsion constant), the supports "
+          "(*BOUNDARY) and the springs",
+          i + 1, std::sqrt(std::max(es.eigenvalues(i), 0.0)) / kTwoPi, std::sqrt(zero_level) / kTwoPi,
+          result.rigid_body_modes_expected, rigid.describe(model), largest_motion_dofs(model, dofs, phi)));
     mode.participation = mr.transpose() * phi;
     mode.effective_mass = mode.participation.cwiseProduct(mode.participation);
-    for (int e = 0; e < dofs.free_count(); ++e) result.shapes(dofs.free_dofs[static_cast<std::size_t>(e)], i) = phi(e);
-    if (zero && !mode.rigid_body)
-      throw core::NumericalError(fmt::format(
-          "mechanism: mode {} has zero frequency ({:.3g} Hz) but is not a rigid-body motion of a {} frame; "
-          "part of the frame can move without straining. The motion is largest at nodes {}. Check the "
-          "supports (*BOUNDARY), disconnected parts and elements that share no node",
-          i + 1, std::sqrt(std::max(mode.eigenvalue, 0.0)) / kTwoPi, grounded ? "supported" : "free-free",
-          largest_motion_nodes(model, dofs, phi)));
+    for (int e = 0; e < nf; ++e) result.shapes(dofs.free_dofs[static_cast<std::size_t>(e)], i) = phi(e);
     result.modes.push_back(mode);
   }
   fill_slave_dofs_columns(dofs.links, result.shapes);  // rigid links' slaves follow their reference nodes (Eq. R.3)
+  if (options.certify && !es.certified) throw core::NumericalError(es.certification_failure);
   return result;
 }
 

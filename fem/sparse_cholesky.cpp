@@ -3,6 +3,7 @@
 
 #include <cholmod.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -130,6 +131,61 @@ SparseCholesky::ExplicitFactor SparseCholesky::explicit_factor() const {
   out.lower = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(n, n, lp[n], lp, li, lx);
   cholmod_free_sparse(&l, &c);
   cholmod_free_factor(&copy, &c);
+  return out;
+}
+
+Inertia ldlt_inertia(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower) {
+  if (!lower.isCompressed()) throw std::invalid_argument("ldlt_inertia: matrix must be compressed");
+  cholmod_common c;
+  cholmod_start(&c);
+  c.print = 0;
+  // Simplicial LDL^T, kept as LDL^T: a supernodal or LL^T factor stops at
+  // the first negative pivot.
+  c.supernodal = CHOLMOD_SIMPLICIAL;
+  c.final_ll = 0;
+  c.final_asis = 1;
+  cholmod_sparse a{};
+  a.nrow = static_cast<size_t>(lower.rows());
+  a.ncol = static_cast<size_t>(lower.cols());
+  a.nzmax = static_cast<size_t>(lower.nonZeros());
+  a.p = const_cast<int*>(lower.outerIndexPtr());
+  a.i = const_cast<int*>(lower.innerIndexPtr());
+  a.x = const_cast<double*>(lower.valuePtr());
+  a.stype = -1;
+  a.itype = CHOLMOD_INT;
+  a.xtype = CHOLMOD_REAL;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  Inertia out;
+  cholmod_factor* f = cholmod_analyze(&a, &c);
+  if (!f) {
+    cholmod_finish(&c);
+    throw std::runtime_error("CHOLMOD analysis failed (out of memory?)");
+  }
+  cholmod_factorize(&a, f, &c);
+  if (c.status < CHOLMOD_OK) {
+    cholmod_free_factor(&f, &c);
+    cholmod_finish(&c);
+    throw std::runtime_error("CHOLMOD LDL^T factorisation failed (out of memory?)");
+  }
+  // CHOLMOD stops at a zero pivot (status CHOLMOD_NOT_POSDEF, minor < n).
+  out.breakdown = c.status == CHOLMOD_NOT_POSDEF || f->minor < f->n || f->is_ll || f->is_super;
+  if (!out.breakdown) {
+    const int* lp = static_cast<const int*>(f->p);
+    const double* lx = static_cast<const double*>(f->x);
+    for (size_t j = 0; j < f->n; ++j) {
+      const double d = lx[lp[j]];  // D_jj: the first entry of column j
+      if (!std::isfinite(d) || d == 0.0) {
+        out.breakdown = true;
+        break;
+      }
+      if (d < 0.0) ++out.negative;
+      else ++out.positive;
+    }
+  }
+  cholmod_free_factor(&f, &c);
+  cholmod_finish(&c);
   return out;
 }
 

@@ -46,4 +46,16 @@ class SparseCholesky {
   Eigen::Index size_ = 0;
 };
 
+// Inertia of a symmetric, possibly indefinite matrix (lower triangle): the
+// signs of the pivots of A = P^T L D L^T P (CHOLMOD's simplicial LDL^T, no
+// pivoting; by Sylvester's law of inertia D has as many negative entries as
+// A has negative eigenvalues). `breakdown` is set when a pivot was zero or
+// not finite: the counts are then not to be trusted and the caller perturbs A.
+struct Inertia {
+  long negative = 0;
+  long positive = 0;
+  bool breakdown = false;
+};
+Inertia ldlt_inertia(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower);
+
 }  // namespace framedyn::fem

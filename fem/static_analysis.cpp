@@ -26,6 +26,7 @@ std::string describe_mechanism(const FrameModel& model, const DofMap& dofs, cons
   EigenOptions o;
   o.count = std::min(6, n - 1);
   o.shift = -1e-6 * scale;
+  o.certify = false;  // a diagnosis of a singular K, not a mode set
   try {
     const EigenSolution es = lowest_eigenpairs(k, identity, o);
     std::string out;
