@@ -51,12 +51,17 @@ std::string describe_mechanism(const FrameModel& model, const DofMap& dofs, cons
 
 }  // namespace
 
+Eigen::VectorXd applied_loads(const FrameModel& model) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.dof_count());
+  for (const NodalLoad& l : model.loads) f(kDofsPerNode * l.node + l.dof) += l.value;
+  return f;
+}
+
 StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress) {
   const DofMap dofs = make_dof_map(model);
   const int ndof = model.dof_count();
   StaticResult r;
-  r.applied = Eigen::VectorXd::Zero(ndof);
-  for (const NodalLoad& l : model.loads) r.applied(kDofsPerNode * l.node + l.dof) += l.value;
+  r.applied = applied_loads(model);
   Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
   for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
 
