@@ -21,7 +21,7 @@ struct RandomOptions {
   FrequencyResponseOptions response;
   std::vector<int> output_dofs;  // global DOFs whose response PSD is kept at every grid frequency
   int points_per_decade = 100;   // base log-spaced grid over the band
-  int points_per_mode = 101;     // refinement around each mode (Eq. R.5)
+  double mode_step = 0.03;       // refinement around each mode: the step in s of Eq. (R.5)
 };
 
 struct RandomResult {
@@ -53,8 +53,10 @@ struct RandomResult {
 };
 
 // The integration grid: the PSD's rows, a log-spaced grid and, for each
-// mode j with frequency f_j and ratio zeta_j, points f_j (1 + zeta_j tan theta)
-// with theta evenly spaced (Eq. R.5), all clipped to the band.
+// mode j with frequency f_j and ratio zeta_j, points f_j (1 + zeta_j sinh s)
+// with s evenly spaced (Eq. R.5): even steps of a fraction of the half-power
+// bandwidth across the peak, growing geometrically away from it, where
+// |H|^2 falls like 1/(f - f_j)^2; all clipped to the band.
 std::vector<double> random_response_grid(const LoadPsd& psd, const ModalFrequencyResponse& response, const RandomOptions& options);
 
 // Throws std::invalid_argument for an output DOF out of range, or a
