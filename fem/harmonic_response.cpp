@@ -60,9 +60,10 @@ HarmonicResult harmonic_response(const FrameDynamics& frame, const ModalBasis& b
     const Eigen::MatrixXcd q = modal_block(response, r.frequencies_hz, start, count);
     if (chosen.size() > 0) r.output.middleCols(start, count) = chosen.evaluate(q);
     if (displacement.size() > 0) {
-      const Eigen::MatrixXd amplitude = displacement.evaluate(q).cwiseAbs();
+      // Squared moduli: the maximum is the same, without a square root per entry.
+      const Eigen::MatrixXd amplitude2 = displacement.evaluate(q).cwiseAbs2();
       Eigen::Index row = 0, col = 0;
-      const double peak = amplitude.maxCoeff(&row, &col);
+      const double peak = std::sqrt(amplitude2.maxCoeff(&row, &col));
       if (peak > r.max_displacement || max_row < 0) {
         r.max_displacement = peak;
         max_row = row;
@@ -70,9 +71,9 @@ HarmonicResult harmonic_response(const FrameDynamics& frame, const ModalBasis& b
       }
     }
     if (stress.size() > 0) {
-      const Eigen::MatrixXd amplitude = stress.evaluate(q).cwiseAbs();
+      const Eigen::MatrixXd amplitude2 = stress.evaluate(q).cwiseAbs2();
       Eigen::Index row = 0, col = 0;
-      const double peak = amplitude.maxCoeff(&row, &col);
+      const double peak = std::sqrt(amplitude2.maxCoeff(&row, &col));
       if (peak > r.max_fiber_stress || stress_row < 0) {
         r.max_fiber_stress = peak;
         stress_row = row;
