@@ -1,9 +1,12 @@
-// `framedyn frame-response STUDY.yaml`: the frame side of the pipeline on its
-// own. A study with `model: frame_transient` names the frame mesh, a
-// load-history file (coupling/load_history.h), the supports, the number of
-// modes, the method and the damping; the command runs the transient, recovers
-// the rails' section forces and corner stresses, and writes DIR/summary.json
-// (key "frame"), CSV tables and, with `pvd: true`, a ParaView time series.
+// `framedyn frame-response STUDY.yaml`: the transient response of any beam
+// mesh to a load history (the frame side of the pipeline on its own). A study
+// with `model: frame_transient` names the mesh, a load-history file
+// (coupling/load_history.h), the supports (by node-set name, the mesh's
+// *BOUNDARY, or none), the modes, the method, the damping and its output
+// sets; the command runs the transient, recovers the section forces and
+// fiber stresses of the element sets and the nodal histories of the node
+// sets, and writes DIR/summary.json (key "frame"), CSV tables and, with
+// `pvd: true`, a ParaView time series.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -47,14 +50,20 @@ int run_frame_response(const FrameResponseOptions& opt) {
              r.wall_seconds);
   fmt::print("\n mode  frequency [Hz]\n");
   for (Eigen::Index i = 0; i < std::min<Eigen::Index>(10, r.frequencies_hz.size()); ++i) fmt::print("{:5d}  {:14.3f}\n", i + 1, r.frequencies_hz(i));
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  const auto at = [&](const coupling::RailPeak& p) {
+    return fmt::format("at ({:.4g}, {:.4g}, {:.4g}) {} (element {}), t = {:.4g} s", p.point.x() * lf, p.point.y() * lf, p.point.z() * lf,
+                       u.label(Quantity::length), p.element_id, p.time);
+  };
   for (const coupling::RailRecovery& rail : r.rails) {
-    const double lf = 1.0 / u.to_si_factor(Quantity::length);
-    fmt::print("\n{}: peak bending moment {:.5g} {} at X = {:.4g} {} (element {}), t = {:.4g} s\n", rail.spec.name,
-               u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment), rail.peak_bending_moment.point.x() * lf,
-               u.label(Quantity::length), rail.peak_bending_moment.element_id, rail.peak_bending_moment.time);
-    fmt::print("{}: peak normal stress {:.5g} {} at X = {:.4g} {} (element {}), t = {:.4g} s; bending share {:.1f} %\n", rail.spec.name,
-               u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), rail.peak_normal_stress.point.x() * lf,
-               u.label(Quantity::length), rail.peak_normal_stress.element_id, rail.peak_normal_stress.time, 100.0 * rail.bending_share);
+    fmt::print("\n{}: peak bending moment {:.5g} {} {}\n", rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment),
+               u.label(Quantity::moment), at(rail.peak_bending_moment));
+    fmt::print("{}: peak normal stress {:.5g} {} {}; bending share {:.1f} %\n", rail.spec.name, u.from_si(rail.peak_normal_stress.value, Quantity::stress),
+               u.label(Quantity::stress), at(rail.peak_normal_stress), 100.0 * rail.bending_share);
+  }
+  for (const coupling::NodalHistory& h : r.nodal) {
+    fmt::print("\n{}: peak displacement {:.5g} {} ({} of node {}), t = {:.4g} s\n", h.spec.name, h.peak_displacement.value * lf, u.label(Quantity::length),
+               fem::dof_name(h.peak_displacement.dof), h.peak_displacement.node_id, h.peak_displacement.time);
   }
   fmt::print("\nresults in {}/\n", out_dir);
   return 0;
@@ -64,7 +73,8 @@ int run_frame_response(const FrameResponseOptions& opt) {
 
 void add_frame_response_command(CLI::App& app, std::function<int()>& run) {
   auto opt = std::make_shared<FrameResponseOptions>();
-  CLI::App* cmd = app.add_subcommand("frame-response", "Run a frame transient study (model: frame_transient): load history -> rail stresses");
+  CLI::App* cmd = app.add_subcommand("frame-response",
+                                     "Run a frame transient study (model: frame_transient): load history -> nodal histories, section forces, stresses");
   cmd->add_option("study", opt->study, "Study file (.yaml) with model: frame_transient")->required();
   cmd->add_option("--loads", opt->loads, "Load-history file (overrides frame.loads)");
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");

@@ -17,6 +17,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
@@ -125,22 +126,8 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   rigid["fixed_coordinates"] = study.fixed_coordinates;
   rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
 
-  if (r.calibration && study.calibration) {
-    const rigid::CalibrationResult& c = *r.calibration;
-    nlohmann::ordered_json params = nlohmann::ordered_json::array(), targets = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < c.fitted.size(); ++i) {
-      const Quantity q = coupling::parameter_quantity_3d(study.calibration->parameters[i]);
-      params.push_back({{"name", study.calibration->parameters[i]}, {"unit", u.label(q)}, {"initial", u.from_si(c.initial[i], q)},
-                        {"fitted", u.from_si(c.fitted[i], q)}, {"ratio", c.fitted[i] / c.initial[i]}});
-    }
-    for (std::size_t t = 0; t < study.calibration->targets.size(); ++t) {
-      const rigid::FrequencyTarget& tg = study.calibration->targets[t];
-      targets.push_back({{"frequency_hz", tg.frequency_hz}, {"dominant", tg.dominant}, {"achieved_hz", c.achieved_hz[t]},
-                         {"achieved_dominant", c.achieved_dominant[t]}, {"relative_error", (c.achieved_hz[t] - tg.frequency_hz) / tg.frequency_hz}});
-    }
-    rigid["calibration"] = {{"parameters", params}, {"targets", targets}, {"max_relative_error", c.max_relative_error},
-                            {"labels_match", c.labels_match}, {"iterations", c.iterations}};
-  }
+  if (r.calibration && study.calibration)
+    rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u, coupling::parameter_quantity_3d, folder);
 
   if (study.response) {
     const rigid::Trajectory& tr = r.trajectory;
@@ -214,12 +201,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     fmt::print("\n mode  frequency [Hz]  dominant\n");
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
-  if (r.calibration && study.calibration) {
-    const rigid::CalibrationResult& c = *r.calibration;
-    fmt::print("\ncalibration ({} iterations): largest frequency error {:.3g} %, dominant coordinates {}\n", c.iterations,
-               100 * c.max_relative_error, c.labels_match ? "as targeted" : "NOT all as targeted");
-    for (std::size_t i = 0; i < c.fitted.size(); ++i) fmt::print("  {:32s} x {:.4f}\n", study.calibration->parameters[i], c.fitted[i] / c.initial[i]);
-  }
+  if (r.calibration && study.calibration) print_calibration(*study.calibration, *r.calibration);
   if (frame) {
     const coupling::FrameStudyResults& f = *frame;
     fmt::print("\nframe ({}): {} nodes, {} beam elements, {} elastic modes used, lowest {:.2f} Hz; {} output times in {:.3f} s\n",

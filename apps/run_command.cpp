@@ -11,6 +11,7 @@
 #include "apps/commands.h"
 #include "apps/progress.h"
 #include "apps/response_figures.h"
+#include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
@@ -61,37 +62,9 @@ int run_study(const RunOptions& opt) {
   rigid["fixed_coordinates"] = study.fixed_coordinates;
   rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
 
-  if (r.calibration && study.calibration) {
-    const rigid::CalibrationResult& c = *r.calibration;
-    nlohmann::ordered_json cal;
-    nlohmann::ordered_json params = nlohmann::ordered_json::array();
-    core::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial"});
-    for (std::size_t i = 0; i < c.fitted.size(); ++i) {
-      const Quantity q = coupling::parameter_quantity(study.machine, study.calibration->parameters[i]);
-      params.push_back({{"name", study.calibration->parameters[i]},
-                        {"unit", u.label(q)},
-                        {"initial", u.from_si(c.initial[i], q)},
-                        {"fitted", u.from_si(c.fitted[i], q)},
-                        {"ratio", c.fitted[i] / c.initial[i]}});
-      pcsv.row().add(study.calibration->parameters[i]).add(u.label(q)).add(u.from_si(c.initial[i], q)).add(u.from_si(c.fitted[i], q)).add(c.fitted[i] / c.initial[i]);
-    }
-    nlohmann::ordered_json targets = nlohmann::ordered_json::array();
-    for (std::size_t t = 0; t < study.calibration->targets.size(); ++t) {
-      const rigid::FrequencyTarget& tg = study.calibration->targets[t];
-      targets.push_back({{"frequency_hz", tg.frequency_hz},
-                         {"dominant", tg.dominant},
-                         {"achieved_hz", c.achieved_hz[t]},
-                         {"achieved_dominant", c.achieved_dominant[t]},
-                         {"relative_error", (c.achieved_hz[t] - tg.frequency_hz) / tg.frequency_hz}});
-    }
-    cal["parameters"] = params;
-    cal["targets"] = targets;
-    cal["max_relative_error"] = c.max_relative_error;
-    cal["labels_match"] = c.labels_match;
-    cal["iterations"] = c.iterations;
-    rigid["calibration"] = cal;
-    folder.write_text("calibration.csv", pcsv.str());
-  }
+  if (r.calibration && study.calibration)
+    rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u,
+                                             [&](const std::string& name) { return coupling::parameter_quantity(study.machine, name); }, folder);
 
   if (study.response) {
     const rigid::Trajectory& tr = r.trajectory;
@@ -190,13 +163,7 @@ int run_study(const RunOptions& opt) {
     fmt::print("\n mode  frequency [Hz]  dominant\n");
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
-  if (r.calibration && study.calibration) {
-    const rigid::CalibrationResult& c = *r.calibration;
-    fmt::print("\ncalibration ({} iterations): largest frequency error {:.3g} %, dominant coordinates {}\n", c.iterations,
-               100 * c.max_relative_error, c.labels_match ? "as targeted" : "NOT all as targeted");
-    for (std::size_t i = 0; i < c.fitted.size(); ++i)
-      fmt::print("  {:32s} x {:.4f}\n", study.calibration->parameters[i], c.fitted[i] / c.initial[i]);
-  }
+  if (r.calibration && study.calibration) print_calibration(*study.calibration, *r.calibration);
   if (r.plow_vertical_peak_to_peak) {
     const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
     fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));

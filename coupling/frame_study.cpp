@@ -6,6 +6,7 @@
 #include <chrono>
 #include <exception>
 #include <thread>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -22,8 +23,34 @@ namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// " (its node sets: A, B, C)" for messages about a set the mesh lacks; the first 12.
+std::string set_names(const std::map<std::string, std::vector<int>>& sets, const char* kind) {
+  if (sets.empty()) return fmt::format(" (it has no {} sets)", kind);
+  std::string names;
+  int n = 0;
+  for (const auto& kv : sets) {
+    if (n == 12) {
+      names += fmt::format(", ... ({} in all)", sets.size());
+      break;
+    }
+    names += (n++ ? ", " : "") + kv.first;
+  }
+  return fmt::format(" (its {} sets: {})", kind, names);
+}
+
 const char* supports_name(FrameSupports s) {
-  return s == FrameSupports::fixed_rear_end ? "fixed_rear_end" : "free_free_inertia_relief";
+  switch (s) {
+    case FrameSupports::fixed_rear_end: return "fixed_rear_end";
+    case FrameSupports::clamped: return "clamped";
+    case FrameSupports::mesh_boundary: return "mesh_boundary";
+    case FrameSupports::free_free_inertia_relief: return "free_free_inertia_relief";
+  }
+  return "";
 }
 const char* method_name(FrameMethod m) {
   switch (m) {
@@ -89,9 +116,10 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
   return at != key_locations.end() ? at->second : core::InputLocation{file, 0, "frame." + key};
 }
 
-FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir) {
-  f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "pvd",
+FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir, FrameDefaults defaults) {
+  f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
                 "direct_substeps"});
+  const bool pipeline = defaults == FrameDefaults::pipeline;
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -105,11 +133,55 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     throw f.error("mesh", "an .inp mesh file (a path relative to the study file)",
                   quoted(r.mesh.string()) + (std::filesystem::exists(r.mesh, ec) ? ", not a file" : ", no such file"));
   if (f.has("loads")) r.loads = resolve(f.text("loads"));
-  const std::string supports = f.text_or("supports", "fixed_rear_end");
+  const std::string supports = f.text_or("supports", pipeline ? "fixed_rear_end" : "mesh_boundary");
   if (supports == "fixed_rear_end") r.supports = FrameSupports::fixed_rear_end;
-  else if (supports == "free_free_inertia_relief") r.supports = FrameSupports::free_free_inertia_relief;
-  else throw f.error("supports", "fixed_rear_end or free_free_inertia_relief", quoted(supports));
-  r.support_set = f.text_or("support_set", "REAR_END");
+  else if (supports == "clamped") r.supports = FrameSupports::clamped;
+  else if (supports == "mesh_boundary") r.supports = FrameSupports::mesh_boundary;
+  else if (supports == "free_free_inertia_relief" || supports == "none") r.supports = FrameSupports::free_free_inertia_relief;
+  else throw f.error("supports", "clamped, mesh_boundary, none (free_free_inertia_relief) or fixed_rear_end", quoted(supports));
+  // support_set: a node-set name or a list of them.
+  if (f.has("support_set")) {
+    const YAML::Node n = f.node()["support_set"];
+    r.support_sets = n.IsSequence() ? f.strings("support_set") : std::vector<std::string>{f.text("support_set")};
+    if (r.support_sets.empty()) throw f.error("support_set", "a node-set name or a list of them", "an empty list");
+    if (r.supports == FrameSupports::mesh_boundary || r.supports == FrameSupports::free_free_inertia_relief)
+      throw f.error("support_set", "support_set only with supports: clamped or fixed_rear_end (the node sets they clamp)",
+                    "supports: " + supports);
+  } else if (r.supports == FrameSupports::clamped) {
+    throw f.error("supports", "supports: clamped with support_set naming the node set(s) to clamp", "no support_set");
+  }
+  // Output sets. Without the key: the pipeline's two rails, or none.
+  if (!pipeline) r.rails.clear();
+  if (f.has("outputs")) {
+    r.rails.clear();
+    const YamlMap outputs = f.map("outputs");
+    for (const auto& kv : outputs.node()) {
+      const std::string name = kv.first.Scalar();
+      bool plain = !name.empty();
+      for (char c : name) plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-');
+      if (!plain) throw outputs.error(name, "an output name of letters, digits, '_' and '-' (it names files)", quoted(name));
+      const YamlMap o = outputs.map(name);
+      o.allow_only({"element_set", "node_set", "history"});
+      if (o.has("element_set") == o.has("node_set"))
+        throw outputs.error(name, "exactly one of element_set or node_set", o.has("node_set") ? "both" : "neither");
+      const std::string which = o.has("element_set") ? "element_set" : "node_set";
+      core::InputLocation at = o.location(which);
+      at.key = o.path() + "." + which;
+      r.key_locations["outputs." + name] = at;
+      if (which == "element_set") {
+        r.rails.push_back({name, o.text("element_set"), o.boolean_or("history", true)});
+      } else {
+        if (o.has("history")) throw o.error("history", "no history key for a node set (its history is always written)", "history");
+        r.node_outputs.push_back({name, o.text("node_set")});
+      }
+    }
+  } else {
+    for (const RailSpec& rail : r.rails) {
+      core::InputLocation at = f.location("");
+      at.key = f.path() + ".outputs";
+      r.key_locations["outputs." + rail.name] = at;
+    }
+  }
   for (const char* key : {"supports", "support_set", "modes", "loads"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
@@ -186,7 +258,7 @@ FrameStudyRequest read_frame_study(const std::string& file) {
   YamlMap root(doc, "", file, &u);
   const std::string model = root.text("model");
   if (model != "frame_transient") throw root.error("model", "frame_transient", quoted(model));
-  FrameStudyRequest r = read_frame_block(root.map("frame"), std::filesystem::path(file).parent_path());
+  FrameStudyRequest r = read_frame_block(root.map("frame"), std::filesystem::path(file).parent_path(), FrameDefaults::standalone);
   r.name = root.text_or("name", file);
   r.units = u;
   r.file = file;
@@ -198,15 +270,42 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   FrameStudyResults out;
   out.model = fem::read_inp(q.mesh);
   fem::FrameModel& model = out.model;
-  if (q.supports == FrameSupports::fixed_rear_end) {
-    const auto set = model.node_sets.find(q.support_set);
-    if (set == model.node_sets.end() || set->second.empty())
-      throw core::InputError(q.where("support_set"), "a node set of the mesh " + q.mesh.string(), quoted(q.support_set));
-    for (int node : set->second)
-      for (int d = 0; d < fem::kDofsPerNode; ++d) model.constraints.push_back({node, d, 0.0});
+  const std::string mesh_name = q.mesh.string();
+  if (q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped) {
+    for (const std::string& name : q.support_sets) {
+      const auto set = model.node_sets.find(upper(name));
+      if (set == model.node_sets.end() || set->second.empty())
+        throw core::InputError(q.where("support_set"), "a node set of the mesh " + mesh_name + set_names(model.node_sets, "node"), quoted(name));
+      for (int node : set->second)
+        for (int d = 0; d < fem::kDofsPerNode; ++d) model.constraints.push_back({node, d, 0.0});
+    }
+  } else if (q.supports == FrameSupports::mesh_boundary) {
+    if (model.constraints.empty())
+      throw core::InputError(q.where("supports"),
+                             "supports for the mesh " + mesh_name +
+                                 ": *BOUNDARY in the mesh (supports: mesh_boundary, the default), supports: clamped with support_set, or supports: none "
+                                 "(free-free)",
+                             "no *BOUNDARY in the mesh");
   } else if (!model.constraints.empty()) {
     throw core::InputError(q.where("supports"), "a mesh without *BOUNDARY for free_free_inertia_relief",
-                           fmt::format("{} constrained DOFs in {}", model.constraints.size(), q.mesh.string()));
+                           fmt::format("{} constrained DOFs in {}", model.constraints.size(), mesh_name));
+  }
+  // The output sets, before the solve: a misspelt name costs no run.
+  for (const RailSpec& rail : q.rails) {
+    const auto set = model.element_sets.find(upper(rail.element_set));
+    bool beams = false;
+    if (set != model.element_sets.end())
+      for (int id : set->second) beams = beams || model.beam_index(id) >= 0;
+    if (!beams)
+      throw core::InputError(q.where("outputs." + rail.name), "an element set of the mesh " + mesh_name + " with beam elements" +
+                                                                  set_names(model.element_sets, "element"),
+                             quoted(rail.element_set) + (set == model.element_sets.end() ? "" : ", without beam elements"));
+  }
+  for (const NodeOutputSpec& o : q.node_outputs) {
+    const auto set = model.node_sets.find(upper(o.node_set));
+    if (set == model.node_sets.end() || set->second.empty())
+      throw core::InputError(q.where("outputs." + o.name), "a node set of the mesh " + mesh_name + set_names(model.node_sets, "node"),
+                             quoted(o.node_set) + (set == model.node_sets.end() ? "" : ", an empty set"));
   }
   if (given) out.loads = *given;
   else if (q.loads) out.loads = read_load_history(*q.loads);
@@ -246,6 +345,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     const double dt = (in.times(in.times.size() - 1) - in.times(0)) / static_cast<double>(in.times.size() - 1);
     interval = std::max(1, static_cast<int>(std::lround(*q.output_interval / dt)));
   }
+  std::optional<ModalRates> rates;  // velocities and accelerations (modal methods, node-set outputs)
   if (q.method == FrameMethod::direct) {
     fem::NewmarkOptions no;
     no.rayleigh_alpha = q.damping.alpha;
@@ -264,8 +364,12 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     mo.output_interval = interval;
     out.response = fem::modal_transient(frame, basis, in, mo);
     out.frequencies_hz = out.response.frequencies_hz;
+    if (!q.node_outputs.empty()) rates = modal_rates(frame, basis, in, mo);
   }
   out.rails = recover_rails(model, out.response.times, out.response.displacement, q.rails, q.stations);
+  for (const NodeOutputSpec& o : q.node_outputs) out.nodal.push_back(nodal_history(model, o, out.response, rates ? &*rates : nullptr));
+  for (const RailSpec& rail : q.rails)
+    out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations) : SectionHistory{});
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -284,7 +388,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     }
     folder.write_text("frame_modes.csv", t.str());
   }
-  {
+  if (!r.rails.empty()) {
     core::CsvTable t({"rail", "element", "station", core::column("X", u.label(Quantity::length)), core::column("Y", u.label(Quantity::length)),
                       core::column("Z", u.label(Quantity::length)), core::column("max_bending_moment", u.label(Quantity::moment)),
                       core::column("max_abs_Mz", u.label(Quantity::moment)), core::column("max_abs_My", u.label(Quantity::moment)),
@@ -299,7 +403,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
       }
     folder.write_text("frame_rails_envelope.csv", t.str());
   }
-  {
+  if (!r.rails.empty()) {
     std::vector<std::string> h = {"time [s]"};
     for (const RailRecovery& rail : r.rails) {
       h.push_back(core::column(rail.spec.name + ".max_bending_moment", u.label(Quantity::moment)));
@@ -311,6 +415,49 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
       for (const RailRecovery& rail : r.rails) t.add(rail.series_bending_moment(j) * mf).add(rail.series_normal_stress(j) * sf);
     }
     folder.write_text("frame_rails_series.csv", t.str());
+  }
+  // Section-force histories of the element sets that ask for them, one row per output time and station.
+  const double ff = 1.0 / u.to_si_factor(Quantity::force);
+  for (std::size_t k = 0; k < r.rails.size() && k < r.sections.size(); ++k) {
+    const SectionHistory& h = r.sections[k];
+    if (!q.rails[k].history) continue;
+    const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment);
+    core::CsvTable t({"time [s]", "element", "station", core::column("x", u.label(Quantity::length)), core::column("N", F), core::column("Vy", F),
+                      core::column("Vz", F), core::column("T", M), core::column("My", M), core::column("Mz", M),
+                      core::column("max_abs_normal_stress", u.label(Quantity::stress))});
+    const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
+    for (Eigen::Index j = 0; j < r.response.times.size(); ++j)
+      for (Eigen::Index s = 0; s < ns; ++s) {
+        const auto v = h.values.row(j * ns + s);
+        t.row().add(r.response.times(j)).add(h.element_ids[static_cast<std::size_t>(s)]).add(h.station_index[static_cast<std::size_t>(s)])
+            .add(h.station_x[static_cast<std::size_t>(s)] * lf).add(v(0) * ff).add(v(1) * ff).add(v(2) * ff).add(v(3) * mf).add(v(4) * mf)
+            .add(v(5) * mf).add(v(6) * sf);
+      }
+    folder.write_text("frame_sections_" + q.rails[k].name + ".csv", t.str());
+  }
+  // Nodal histories, one row per output time and node: displacement, velocity, acceleration per DOF.
+  for (const NodalHistory& h : r.nodal) {
+    const std::string L = u.label(Quantity::length);
+    std::vector<std::string> head = {"time [s]", "node"};
+    const char* names[6] = {"X", "Y", "Z", "RX", "RY", "RZ"};
+    const bool rates = h.velocity.size() > 0;
+    for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("U") + names[d], d < 3 ? L : "rad"));
+    if (rates) {
+      for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("V") + names[d], d < 3 ? L + "/s" : "rad/s"));
+      for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("A") + names[d], d < 3 ? L + "/s^2" : "rad/s^2"));
+    }
+    core::CsvTable t(head);
+    for (Eigen::Index j = 0; j < r.response.times.size(); ++j)
+      for (std::size_t n = 0; n < h.nodes.size(); ++n) {
+        t.row().add(r.response.times(j)).add(h.node_ids[n]);
+        const Eigen::Index row = fem::kDofsPerNode * static_cast<Eigen::Index>(n);
+        for (int d = 0; d < 6; ++d) t.add(h.displacement(row + d, j) * (d < 3 ? lf : 1.0));
+        if (rates) {
+          for (int d = 0; d < 6; ++d) t.add(h.velocity(row + d, j) * (d < 3 ? lf : 1.0));
+          for (int d = 0; d < 6; ++d) t.add(h.acceleration(row + d, j) * (d < 3 ? lf : 1.0));
+        }
+      }
+    folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
   }
   if (!q.pvd) return;
   // ParaView time series: one VTU per output time, a PVD collection naming them.
@@ -433,6 +580,45 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
     }
     j += "\n  }";
   }
+  // Every output set by its name: where and when each quantity peaks.
+  const auto peak = [&](const RailPeak& p, Quantity qty) {
+    return fmt::format("{{\"value\": {}, \"unit\": {}, \"element\": {}, \"station\": {}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}",
+                       json_number(u.from_si(p.value, qty)), json_string(u.label(qty)), p.element_id, p.station, json_number(p.time));
+  };
+  const auto nodal_peak = [&](const NodalPeak& p, double factor, const std::string& unit) {
+    return fmt::format("{{\"value\": {}, \"unit\": {}, \"node\": {}, \"dof\": \"{}\", \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}",
+                       json_number(p.value * factor), json_string(unit), p.node_id, fem::dof_name(p.dof), json_number(p.time));
+  };
+  j += ",\n  \"outputs\": {";
+  int count = 0;
+  for (std::size_t k = 0; k < r.rails.size(); ++k) {
+    const RailRecovery& rail = r.rails[k];
+    const int stations = std::max(1, q.stations);
+    j += fmt::format("{}\n    {}: {{\"kind\": \"element_set\", \"set\": {}, \"elements\": {}", count++ ? "," : "", json_string(rail.spec.name),
+                     json_string(rail.spec.element_set), rail.station_element_ids.size() / static_cast<std::size_t>(stations));
+    j += ",\n      \"peak_axial_force\": " + peak(rail.peak_axial_force, Quantity::force);
+    j += ",\n      \"peak_shear_y\": " + peak(rail.peak_shear_y, Quantity::force);
+    j += ",\n      \"peak_shear_z\": " + peak(rail.peak_shear_z, Quantity::force);
+    j += ",\n      \"peak_torque\": " + peak(rail.peak_torque, Quantity::moment);
+    j += ",\n      \"peak_my\": " + peak(rail.peak_my, Quantity::moment);
+    j += ",\n      \"peak_mz\": " + peak(rail.peak_mz, Quantity::moment);
+    j += ",\n      \"peak_bending_moment\": " + peak(rail.peak_bending_moment, Quantity::moment);
+    j += ",\n      \"peak_normal_stress\": " + peak(rail.peak_normal_stress, Quantity::stress) + "}";
+  }
+  const std::string L = u.label(Quantity::length);
+  for (const NodalHistory& h : r.nodal) {
+    std::string ids;
+    for (std::size_t k = 0; k < h.node_ids.size(); ++k) ids += (k ? ", " : "") + std::to_string(h.node_ids[k]);
+    j += fmt::format("{}\n    {}: {{\"kind\": \"node_set\", \"set\": {}, \"nodes\": [{}]", count++ ? "," : "", json_string(h.spec.name),
+                     json_string(h.spec.node_set), ids);
+    j += ",\n      \"peak_displacement\": " + nodal_peak(h.peak_displacement, lf, L);
+    if (h.velocity.size() > 0) {
+      j += ",\n      \"peak_velocity\": " + nodal_peak(h.peak_velocity, lf, L + "/s");
+      j += ",\n      \"peak_acceleration\": " + nodal_peak(h.peak_acceleration, lf, L + "/s^2");
+    }
+    j += "}";
+  }
+  j += "\n  }";
   j += "\n}";
   return j;
 }

@@ -1,19 +1,30 @@
 // The frame side of the pipeline as one study: a load history at named load
-// points drives the beam model of the frame (fem/), whose transient response
-// gives section forces and corner stresses along the rails over time.
+// points drives the beam model of a frame (fem/), whose transient response
+// gives nodal histories at the node sets and section forces and corner
+// stresses along the element sets the study names as outputs.
 //
 // The study's `frame:` block (docs/user-guide.md, "Frame transient studies"):
 //
 //   frame:
 //     mesh: meshes/r100_frame.inp          # path relative to the study file
 //     loads: offset_plowing_loads.csv      # load-history file (coupling/load_history.h)
-//     supports: fixed_rear_end             # or free_free_inertia_relief
+//     supports: clamped                    # clamped | mesh_boundary | none (= free_free_inertia_relief) | fixed_rear_end
+//     support_set: REAR_END                # node set(s) clamped (a name or a list)
 //     modes: 20                            # elastic modes, or "all"
 //     method: mode_acceleration            # mode_displacement | mode_acceleration | direct
 //     damping: {modal_ratio: 0.02}         # or {rayleigh: {alpha: 1/s, beta: s}}
 //     output_interval: 0.002               # s (default: every load-history time)
 //     stations: 5                          # per element, ends included
+//     outputs:                             # output sets by name
+//       left_rail: {element_set: LEFT_RAIL}
+//       tip: {node_set: TIP}
 //     pvd: true                            # ParaView time series
+//
+// Defaults: a `frame-response` study (read_frame_study) is supported by the
+// mesh's own *BOUNDARY and has no output sets unless it names them; the
+// pipeline's `frame_response` block of a 3-D study (FrameDefaults::pipeline)
+// keeps the trencher's: REAR_END clamped, outputs left_rail and right_rail
+// (element sets LEFT_RAIL, RIGHT_RAIL).
 //
 // Reading (read_frame_block / read_frame_study), running (run_frame_study)
 // and writing (write_frame_outputs, frame_summary_json) are separate, so a
@@ -30,6 +41,7 @@
 #include "core/units.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
+#include "coupling/output_sets.h"
 #include "coupling/rail_stress.h"
 #include "coupling/yaml_input.h"
 #include "fem/direct_integration.h"
@@ -39,8 +51,16 @@
 namespace framedyn::coupling {
 
 enum class FrameSupports {
-  fixed_rear_end,            // all six DOFs of the mesh's REAR_END nodes fixed (the thesis's SAPIV model)
-  free_free_inertia_relief,  // no supports; loads relieved by the rigid-body inertia (Eq. T.9)
+  fixed_rear_end,            // all six DOFs of the support sets fixed (REAR_END: the thesis's SAPIV model)
+  clamped,                   // the same on any mesh: all six DOFs of the support sets fixed
+  mesh_boundary,             // the mesh's own *BOUNDARY only
+  free_free_inertia_relief,  // no supports ("none"); loads relieved by the rigid-body inertia (Eq. T.9)
+};
+
+// The defaults of keys a `frame` block leaves out.
+enum class FrameDefaults {
+  standalone,  // framedyn frame-response: supports mesh_boundary, no output sets
+  pipeline,    // a 3-D study's frame_response: fixed_rear_end at REAR_END, outputs left_rail / right_rail
 };
 
 enum class FrameMethod { mode_displacement, mode_acceleration, direct };
@@ -51,8 +71,9 @@ struct FrameStudyRequest {
   core::UnitSystem units = core::UnitSystem::si();  // the study's units (output columns)
   std::filesystem::path mesh;                // resolved against the study file's folder
   std::optional<std::filesystem::path> loads;  // load-history file; empty: the caller supplies the history
+  // The members' defaults are the pipeline's (a request built in code is a trencher frame's).
   FrameSupports supports = FrameSupports::fixed_rear_end;
-  std::string support_set = "REAR_END";
+  std::vector<std::string> support_sets = {"REAR_END"};  // node sets clamped by fixed_rear_end / clamped
   int modes = -1;                            // elastic modes used; -1: all (dense eigensolution)
   FrameMethod method = FrameMethod::mode_acceleration;
   fem::ModalDamping damping = fem::ModalDamping::ratio(0.02);
@@ -60,10 +81,14 @@ struct FrameStudyRequest {
   int stations = 5;
   bool pvd = false;
   int direct_substeps = 4;                   // Newmark steps per load-history interval
+  // Output sets: element sets (section forces and stresses; the rails in the
+  // pipeline) and node sets (nodal histories), in the study's order.
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
+  std::vector<NodeOutputSpec> node_outputs;
   // Where the keys checked only once the mesh and loads are read (supports,
-  // support_set, modes, loads) were given, so those messages name a line:
-  // the key's own line, or the block's when the key was left to its default.
+  // support_set, modes, loads, outputs.NAME) were given, so those messages
+  // name a line: the key's own line, or the block's when the key was left to
+  // its default.
   std::map<std::string, core::InputLocation> key_locations;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
@@ -71,7 +96,8 @@ struct FrameStudyRequest {
 };
 
 // The `frame:` map of a study; throws core::InputError with file, line and key path.
-FrameStudyRequest read_frame_block(const YamlMap& frame, const std::filesystem::path& study_dir);
+FrameStudyRequest read_frame_block(const YamlMap& frame, const std::filesystem::path& study_dir,
+                                   FrameDefaults defaults = FrameDefaults::pipeline);
 // A study file with `framedyn_study: 1`, `units`, `model: frame_transient` and a `frame:` block.
 FrameStudyRequest read_frame_study(const std::string& file);
 
@@ -81,21 +107,28 @@ struct FrameStudyResults {
   LoadMapping mapping;
   Eigen::VectorXd frequencies_hz;            // elastic modes (those used; the lowest 20 for `direct`)
   fem::TransientResult response;
-  std::vector<RailRecovery> rails;
+  std::vector<RailRecovery> rails;           // the element-set outputs, in request.rails' order
+  std::vector<NodalHistory> nodal;           // the node-set outputs, in request.node_outputs' order
+  std::vector<SectionHistory> sections;      // per element-set output with history (empty entries otherwise)
   double wall_seconds = 0.0;
 };
 
 // Runs the study. `loads` replaces the request's load-history file (e.g. the
 // loads the rigid-body run just recovered). Throws core::InputError for a
-// load point the mesh cannot take, core::NumericalError for a failed solve.
+// support or output set the mesh lacks (naming the study's key and the mesh
+// file) or a load point the mesh cannot take, core::NumericalError for a
+// failed solve.
 FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr);
 
-// frame_modes.csv, frame_rails_envelope.csv, frame_rails_series.csv and, with
-// request.pvd, frame_response.pvd + frame_response_NNNNN.vtu, in the study's units.
+// frame_modes.csv; with element-set outputs frame_rails_envelope.csv,
+// frame_rails_series.csv and frame_sections_<name>.csv (history); per
+// node-set output frame_nodes_<name>.csv; with request.pvd,
+// frame_response.pvd + frame_response_NNNNN.vtu; in the study's units.
 void write_frame_outputs(const FrameStudyResults& results, const FrameStudyRequest& request, const core::ResultsFolder& folder);
 // The summary's "frame" object as JSON text: modes[i].frequency_hz,
-// peak_bending_moment.left_rail / .right_rail, peak_normal_stress (value + unit,
-// where and when), bending_share.
+// peak_bending_moment.<element output> (left_rail / right_rail in the
+// pipeline), peak_normal_stress (value + unit, where and when),
+// bending_share, outputs.<name> (every output set's peaks).
 std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);
 
 }  // namespace framedyn::coupling

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,7 +27,9 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
     throw std::invalid_argument("the displacement history does not match the model or the times");
   std::vector<RailRecovery> out;
   for (const RailSpec& spec : rails) {
-    const auto set = model.element_sets.find(spec.element_set);
+    std::string key = spec.element_set;
+    for (char& c : key) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const auto set = model.element_sets.find(key);
     if (set == model.element_sets.end())
       throw core::InputError({"", 0, "rails." + spec.name}, "an element set of the mesh", "'" + spec.element_set + "'");
     std::vector<int> beams;

@@ -16,9 +16,12 @@
 
 namespace framedyn::coupling {
 
+// An element set recovered along its stations: a rail of the trencher
+// frame, or any element set a study names as an output.
 struct RailSpec {
   std::string name;          // for reports, e.g. "left_rail"
-  std::string element_set;   // mesh element set, e.g. "LEFT_RAIL"
+  std::string element_set;   // mesh element set, e.g. "LEFT_RAIL" (case-insensitive)
+  bool history = false;      // also write the section-force history at every station (frame_sections_<name>.csv)
 };
 
 // Where and when a peak occurs. `value` is signed (the value whose magnitude is largest).

@@ -260,7 +260,9 @@ RigidStudy read_rigid_study(const std::string& file) {
     s.frame_output = req;
   }
   if (auto cal = root.optional_map("calibration"))
-    s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter(p, name); }, calibratable_parameters());
+    s.calibration = read_calibration_request(
+        *cal, [&](const std::string& name) { return get_parameter(p, name); },
+        [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters());
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
   check_machine(p, s.fixed_coordinates, root, file);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/units.h"
 #include "coupling/frame_loads_2d.h"
 #include "rigid/calibration.h"
@@ -27,13 +28,19 @@ struct ResponseRequest {
   double relative_tolerance = 1e-8;
 };
 
-// Fit named machine parameters to target frequencies before the analysis.
+// Fit named machine parameters to target frequencies before the analysis,
+// each within bounds (docs/user-guide.md, calibration; docs/theory/rigid.md,
+// section 9).
+struct ParameterBound {
+  double lower = 0.0, upper = 0.0;  // SI
+  std::string basis;                // where the bounds come from (default rule or the study's reason)
+};
 struct CalibrationRequest {
   std::vector<std::string> parameters;            // e.g. "tires.front.normal.stiffness"
   std::vector<rigid::FrequencyTarget> targets;
-  // calibration.fit_labels: make each target's dominant coordinate part of
-  // the fit (rigid::CalibrationOptions::coordinates), not only the pairing.
-  bool fit_labels = false;
+  std::vector<ParameterBound> bounds;             // one per parameter
+  double regularization = 0.0;                    // calibration.regularization.weight (0: none; underdetermined fits refused)
+  core::InputLocation where;                      // the calibration block, for the refusal of an underdetermined fit
 };
 
 // The machine parameters a calibration may adjust, by name (SI values).

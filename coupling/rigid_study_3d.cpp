@@ -77,6 +77,7 @@ double* slot(rigid::Machine3DParameters& p, const std::string& name) {
   if (name == "cab.inertia.yy") return &p.cab.body.inertia(1, 1);
   if (name == "cab.inertia.zz") return &p.cab.body.inertia(2, 2);
   if (name == "front_axle.inertia.xx") return &p.front_axle.axle.inertia(0, 0);
+  if (name == "front_axle.mass") return &p.front_axle.axle.mass;
   if (name == "plow.swing_spring.stiffness") return &p.plow.swing_spring.stiffness;
   if (name == "plow.bounce_tire.stiffness") return &p.plow.bounce_tire.stiffness;
   if (name == "plow.lift_cylinder.stiffness") return &p.plow.lift_cylinder.stiffness;
@@ -109,7 +110,7 @@ std::vector<std::string> calibratable_parameters_3d() {
           "cab.front_mounts.<x|y|z>.stiffness", "cab.rear_mounts.<x|y|z>.stiffness",
           "cab.mass",                       "cab.inertia.xx",                     "cab.inertia.yy",
           "cab.inertia.zz",                 "frame.parts.mass_scale",             "frame.parts.inertia_scale.xx",
-          "frame.parts.inertia_scale.yy",   "frame.parts.inertia_scale.zz",       "front_axle.inertia.xx",
+          "frame.parts.inertia_scale.yy",   "frame.parts.inertia_scale.zz",       "front_axle.inertia.xx", "front_axle.mass",
           "plow.swing_spring.stiffness",    "plow.bounce_tire.stiffness",         "plow.lift_cylinder.stiffness",
           "plow.mass",                      "soil.stiffness",                     "soil.lateral.stiffness"};
 }
@@ -312,7 +313,8 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     if (auto r = analysis->optional_map("response")) s.response = read_response_request(*r);
   }
   if (auto cal = root.optional_map("calibration"))
-    s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, calibratable_parameters_3d());
+    s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
+                                            calibratable_parameters_3d());
   check_machine(p, s.fixed_coordinates, root, file);
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");

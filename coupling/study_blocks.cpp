@@ -224,12 +224,45 @@ ResponseRequest read_response_request(const YamlMap& r) {
   return req;
 }
 
+ParameterBound calibration_default_bounds(double nominal, core::Quantity q, double factor) {
+  if (q == Quantity::rotary_inertia || q == Quantity::dimensionless) {
+    // The radius of gyration within kRadiusFactor of its nominal value.
+    constexpr double kRadiusFactor = 1.5;
+    return {nominal / (kRadiusFactor * kRadiusFactor), nominal * kRadiusFactor * kRadiusFactor,
+            "default: radius of gyration within a factor 1.5 of nominal (no body dimensions declared)"};
+  }
+  return {nominal / factor, nominal * factor, fmt::format("default: within a factor {:g} of nominal", factor)};
+}
+
+namespace {
+
+// Radius-of-gyration limits about one axis of a body in a box with sides a and
+// b across that axis: at most the half-diagonal (all the mass at the corners);
+// a body declared distributed at least the uniform solid's sqrt((a^2+b^2)/12).
+ParameterBound inertia_bounds_from_dimensions(double mass, double a, double b, bool distributed, double nominal_k) {
+  const double k_max = 0.5 * std::hypot(a, b);
+  const double k_min = distributed ? std::hypot(a, b) / std::sqrt(12.0) : std::min(nominal_k / 1.5, k_max);
+  return {mass * k_min * k_min, mass * k_max * k_max,
+          distributed ? "dimensions: between the uniform solid of the declared box and all mass at its corners"
+                      : "dimensions: at most all mass at the declared box's corners; at least 1/1.5 of the nominal radius of gyration"};
+}
+
+}  // namespace
+
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
+                                            const std::function<core::Quantity(const std::string&)>& quantity,
                                             const std::vector<std::string>& known) {
-  cal.allow_only({"parameters", "targets", "fit_labels"});
+  cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization"});
+  if (cal.has("fit_labels"))
+    throw cal.error("fit_labels", "no fit_labels (the dominant coordinates are never fitted: they are checked after the fit, as a prediction)",
+                    "fit_labels");
   CalibrationRequest req;
+  req.where = cal.location("parameters");
   req.parameters = cal.strings("parameters");
   if (req.parameters.empty()) throw cal.error("parameters", "a list of parameter names to fit", "none");
+  const double factor = cal.number_or("stiffness_factor", Quantity::dimensionless, 3.0);
+  if (!(factor > 1.0 && factor <= 100.0)) throw cal.error("stiffness_factor", "a factor above 1 and at most 100", describe(cal.node()["stiffness_factor"]));
+  std::vector<double> nominal;
   for (const std::string& name : req.parameters) {
     double v = 0;
     try {
@@ -240,22 +273,71 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
       throw cal.error("parameters", "one of " + names, "'" + name + "'");
     }
     if (!(v > 0)) throw cal.error("parameters", "parameters with a positive starting value", name + " <= 0");
+    if (std::count(req.parameters.begin(), req.parameters.end(), name) > 1) throw cal.error("parameters", "each parameter once", "'" + name + "' twice");
+    nominal.push_back(v);
+    req.bounds.push_back(calibration_default_bounds(v, quantity(name), factor));
+  }
+  for (const YamlMap& b : cal.list_of_maps("bounds")) {
+    b.allow_only({"parameter", "lower", "upper", "dimensions", "distributed", "reason"});
+    const std::string name = b.text("parameter");
+    const auto it = std::find(req.parameters.begin(), req.parameters.end(), name);
+    if (it == req.parameters.end()) throw b.error("parameter", "one of calibration.parameters", "'" + name + "'");
+    const std::size_t i = static_cast<std::size_t>(it - req.parameters.begin());
+    const core::Quantity q = quantity(name);
+    ParameterBound bound = req.bounds[i];
+    if (b.has("dimensions")) {
+      // [Lx, Ly, Lz] of the body's box; the axis from the parameter's name (2-D: Y).
+      if (q != Quantity::rotary_inertia) throw b.error("dimensions", "dimensions only for a rotary inertia parameter", "'" + name + "'");
+      const std::vector<double> d = b.numbers("dimensions", Quantity::length);
+      if (d.size() != 3 || !(d[0] >= 0 && d[1] >= 0 && d[2] >= 0)) throw b.error("dimensions", "[Lx, Ly, Lz], lengths >= 0", describe(b.node()["dimensions"]));
+      const char axis = name.size() > 3 && name.compare(name.size() - 3, 3, ".xx") == 0   ? 'x'
+                        : name.size() > 3 && name.compare(name.size() - 3, 3, ".zz") == 0 ? 'z'
+                                                                                           : 'y';
+      const std::string mass_name = name.substr(0, name.find(".inertia")) + ".mass";
+      double mass = 0;
+      try {
+        mass = value(mass_name);
+      } catch (const std::invalid_argument&) {
+        throw b.error("dimensions", "an inertia whose body has a mass parameter '" + mass_name + "'", "'" + name + "'");
+      }
+      const double a = axis == 'x' ? d[1] : d[0], c = axis == 'z' ? d[1] : d[2];
+      bound = inertia_bounds_from_dimensions(mass, a, c, b.boolean_or("distributed", false), std::sqrt(nominal[i] / mass));
+    } else if (b.has("distributed")) {
+      throw b.error("distributed", "distributed only with dimensions", "no dimensions");
+    }
+    if (b.has("lower") || b.has("upper")) {
+      if (!b.has("reason")) throw b.error("reason", "a reason for bounds that override the default", "none");
+      bound.lower = b.number_or("lower", q, bound.lower);
+      bound.upper = b.number_or("upper", q, bound.upper);
+    }
+    if (b.has("reason")) bound.basis = b.text("reason");
+    if (!(bound.lower > 0 && bound.lower <= nominal[i] && nominal[i] <= bound.upper))
+      throw b.error("parameter", "bounds 0 < lower <= starting value <= upper",
+                    fmt::format("[{:.6g}, {:.6g}] SI about {:.6g} for '{}'", bound.lower, bound.upper, nominal[i], name));
+    req.bounds[i] = bound;
   }
   for (const YamlMap& t : cal.list_of_maps("targets")) {
     t.allow_only({"frequency_hz", "dominant"});
     req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
   }
   if (req.targets.empty()) throw cal.error("targets", "a list of {frequency_hz, dominant}", "none");
-  req.fit_labels = cal.boolean_or("fit_labels", false);
+  if (auto r = cal.optional_map("regularization")) {
+    r->allow_only({"weight"});
+    req.regularization = r->positive("weight", Quantity::dimensionless);
+  }
   return req;
 }
 
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
-                                         const rigid::ModesOfParameters& modes_of, const std::function<std::vector<std::string>()>& coordinates) {
+                                         const rigid::ModesOfParameters& modes_of) {
   std::vector<double> initial;
   for (const std::string& name : c.parameters) initial.push_back(value(name));
   rigid::CalibrationOptions options;
-  if (c.fit_labels) options.coordinates = coordinates();
+  for (const ParameterBound& b : c.bounds) {
+    options.lower.push_back(b.lower);
+    options.upper.push_back(b.upper);
+  }
+  options.regularization = c.regularization;
   return rigid::calibrate(modes_of, initial, c.targets, options);
 }
 

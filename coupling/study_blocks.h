@@ -82,19 +82,31 @@ void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::s
 ResponseRequest read_response_request(const YamlMap& r);
 
 // The calibration block; `value` gives a parameter's starting value and
-// throws std::invalid_argument for a name not in `known`.
+// throws std::invalid_argument for a name not in `known`; `quantity` its
+// physical quantity (for the units of its bounds). Every parameter gets
+// bounds: the block's `bounds` entry for it (with its reason), else the
+// default rule of calibration_default_bounds.
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
+                                            const std::function<core::Quantity(const std::string&)>& quantity,
                                             const std::vector<std::string>& known);
 
-// Runs the calibration request: `value` and `set` read and write a named
-// parameter of the machine, modes_of gives the modes for a set of values of
-// c.parameters, `coordinates` the machine's coordinate names (asked for with fit_labels only).
+// The default bounds of a parameter with nominal value `nominal` (SI):
+// stiffness, damping, mass, length: [nominal / f, nominal f] with f the
+// block's stiffness_factor (default 3); rotary inertias and inertia scales:
+// the radius of gyration within a factor 1.5 of nominal (inertia within
+// [1/2.25, 2.25] of nominal), or, with declared body dimensions, between the
+// limits those allow (docs/theory/rigid.md, section 9).
+ParameterBound calibration_default_bounds(double nominal, core::Quantity q, double factor);
+
+// Runs the calibration request: `value` reads a named parameter of the
+// machine, modes_of gives the modes for a set of values of c.parameters.
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
-                                         const rigid::ModesOfParameters& modes_of, const std::function<std::vector<std::string>()>& coordinates);
+                                         const rigid::ModesOfParameters& modes_of);
 
 // Calibrates `parameters` in place (run_calibration, then the fitted values
 // set): get(p, name) and set(p, name, value) read and write a named
 // parameter, modes(machine) gives a Machine's modes as the analysis sees them.
+// A fit the targets cannot determine is an InputError at the calibration block.
 template <class Machine, class Parameters, class Get, class Set, class Modes>
 rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const CalibrationRequest& c, Get get, Set set, Modes modes) {
   const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
@@ -102,8 +114,12 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
     for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
     return modes(Machine(p));
   };
-  rigid::CalibrationResult result = run_calibration(
-      c, [&](const std::string& name) { return get(parameters, name); }, modes_of, [&] { return Machine(parameters).model().coordinate_names(); });
+  rigid::CalibrationResult result;
+  try {
+    result = run_calibration(c, [&](const std::string& name) { return get(parameters, name); }, modes_of);
+  } catch (const rigid::UnderdeterminedFit& e) {
+    throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
+  }
   for (std::size_t i = 0; i < c.parameters.size(); ++i) set(parameters, c.parameters[i], result.fitted[i]);
   return result;
 }

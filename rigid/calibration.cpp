@@ -1,6 +1,10 @@
-// Levenberg-Marquardt frequency calibration; see calibration.h.
+// Bounded, identifiability-checked frequency calibration; see calibration.h
+// and docs/theory/rigid.md, section 9.
 #include "rigid/calibration.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -8,71 +12,52 @@
 namespace framedyn::rigid {
 
 std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets) {
-  std::vector<int> match(targets.size(), -1);
-  std::vector<bool> used(modes.size(), false);
-  // First the targets whose label some mode carries, in target order.
-  for (int pass = 0; pass < 2; ++pass)
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      if (match[t] >= 0) continue;
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t m = 0; m < modes.size(); ++m) {
-        if (used[m]) continue;
-        if (pass == 0 && (targets[t].dominant.empty() || modes[m].dominant != targets[t].dominant)) continue;
-        const double d = std::abs(std::log(std::max(modes[m].frequency_hz, 1e-300) / targets[t].frequency_hz));
-        if (d < best) {
-          best = d;
-          match[t] = static_cast<int>(m);
-        }
-      }
-      if (match[t] >= 0) used[static_cast<std::size_t>(match[t])] = true;
+  // Order-preserving: the targets sorted by frequency go to modes in
+  // increasing frequency, choosing which modes by least total log-distance
+  // (dynamic programming), so that no target is sent past another's mode.
+  const std::size_t nt = targets.size(), nm = modes.size();
+  std::vector<int> match(nt, -1);
+  if (nt == 0 || nm < nt) return match;
+  std::vector<std::size_t> order(nt), mode_order(nm);
+  for (std::size_t i = 0; i < nt; ++i) order[i] = i;
+  for (std::size_t i = 0; i < nm; ++i) mode_order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return targets[a].frequency_hz < targets[b].frequency_hz; });
+  std::stable_sort(mode_order.begin(), mode_order.end(), [&](std::size_t a, std::size_t b) { return modes[a].frequency_hz < modes[b].frequency_hz; });
+  auto dist = [&](std::size_t t, std::size_t m) {
+    return std::abs(std::log(std::max(modes[mode_order[m]].frequency_hz, 1e-300) / targets[order[t]].frequency_hz));
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  // cost[t][m]: best total for sorted targets 0..t with target t on sorted mode m.
+  std::vector<std::vector<double>> cost(nt, std::vector<double>(nm, inf));
+  std::vector<std::vector<std::size_t>> from(nt, std::vector<std::size_t>(nm, 0));
+  for (std::size_t m = 0; m < nm; ++m) cost[0][m] = dist(0, m);
+  for (std::size_t t = 1; t < nt; ++t) {
+    double best = inf;
+    std::size_t arg = 0;
+    for (std::size_t m = t; m < nm; ++m) {
+      if (cost[t - 1][m - 1] < best) best = cost[t - 1][m - 1], arg = m - 1;
+      if (best < inf) cost[t][m] = best + dist(t, m), from[t][m] = arg;
     }
+  }
+  std::size_t m = nt - 1;
+  for (std::size_t k = nt - 1; k < nm; ++k)
+    if (cost[nt - 1][k] < cost[nt - 1][m]) m = k;
+  for (std::size_t t = nt; t-- > 0;) {
+    match[order[t]] = static_cast<int>(mode_order[m]);
+    if (t > 0) m = from[t][m];
+  }
   return match;
 }
 
+int independent_count(const Eigen::VectorXd& s) {
+  if (s.size() == 0 || !(s(0) > 0)) return 0;
+  int n = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (s(i) > kIndependentRatio * s(0)) ++n;
+  return n;
+}
+
 namespace {
-
-// Log-frequency errors of the matched modes, then a small pull of every
-// log-parameter towards its start: with more parameters than targets the fit
-// then moves the parameters as little as it can.
-constexpr double kRegularisation = 1e-3;
-// The lead a target's own coordinate must have in its mode's energy, so that
-// the label holds with a margin rather than on a tie.
-constexpr double kLabelMargin = 0.01;
-
-// Index of a target's labelled coordinate in the energy shares, -1 if the
-// label is not enforced (no names given, no label, or an unknown name).
-int label_index(const CalibrationOptions& options, const FrequencyTarget& target) {
-  for (std::size_t j = 0; j < options.coordinates.size(); ++j)
-    if (!target.dominant.empty() && options.coordinates[j] == target.dominant) return static_cast<int>(j);
-  return -1;
-}
-
-// Frequency errors (one per target), label shortfalls (one per target when
-// labels are enforced), then the pull towards the start (one per parameter).
-Eigen::VectorXd residuals(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
-                          const Eigen::VectorXd& x0, const CalibrationOptions& options) {
-  const std::vector<int> match = match_targets(modes, targets);
-  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
-  const Eigen::Index nl = options.coordinates.empty() ? 0 : nt;
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(nt + nl + x.size());
-  r.tail(x.size()) = kRegularisation * (x - x0);
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    if (match[t] < 0) throw std::invalid_argument("more frequency targets than the model has modes");
-    const RigidMode& mode = modes[static_cast<std::size_t>(match[t])];
-    // Logarithmic error: symmetric in over- and under-shoot, ~ relative error.
-    r(static_cast<Eigen::Index>(t)) = std::log(mode.frequency_hz / targets[t].frequency_hz);
-    const int own = label_index(options, targets[t]);
-    if (nl == 0 || own < 0 || mode.energy_share.size() != static_cast<Eigen::Index>(options.coordinates.size())) continue;
-    double other = 0.0;
-    for (Eigen::Index j = 0; j < mode.energy_share.size(); ++j)
-      if (j != own) other = std::max(other, mode.energy_share(j));
-    r(nt + static_cast<Eigen::Index>(t)) = std::max(0.0, other - mode.energy_share(own) + kLabelMargin);
-  }
-  return r;
-}
-
-int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
-              const CalibrationOptions& options);
 
 std::vector<double> from_log(const Eigen::VectorXd& x) {
   std::vector<double> p(static_cast<std::size_t>(x.size()));
@@ -80,71 +65,48 @@ std::vector<double> from_log(const Eigen::VectorXd& x) {
   return p;
 }
 
-}  // namespace
-
-CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector<double>& initial,
-                            const std::vector<FrequencyTarget>& targets, const CalibrationOptions& options) {
-  if (initial.empty()) throw std::invalid_argument("calibration needs at least one parameter");
-  if (targets.empty()) throw std::invalid_argument("calibration needs at least one target frequency");
-  const Eigen::Index np = static_cast<Eigen::Index>(initial.size());
-  Eigen::VectorXd x(np);
-  for (Eigen::Index i = 0; i < np; ++i) {
-    if (!(initial[static_cast<std::size_t>(i)] > 0)) throw std::invalid_argument("calibrated parameters must start positive");
-    x(i) = std::log(initial[static_cast<std::size_t>(i)]);
-  }
-  const Eigen::VectorXd x0 = x;
-  CalibrationResult out;
-  out.initial = initial;
-  // Continuation: move the targets from the model's own frequencies to the
-  // wanted ones in stages, so that each mode is followed as it moves and keeps
-  // its identity (matching by dominant coordinate is discontinuous where two
-  // modes cross).
-  const std::vector<RigidMode> start_modes = modes_of(initial);
-  const std::vector<int> start_match = match_targets(start_modes, targets);
-  constexpr int kStages = 8;
-  for (int stage = 1; stage <= kStages; ++stage) {
-    std::vector<FrequencyTarget> staged = targets;
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      if (start_match[t] < 0) throw std::invalid_argument("more frequency targets than the model has modes");
-      const double f0 = start_modes[static_cast<std::size_t>(start_match[t])].frequency_hz;
-      staged[t].frequency_hz = f0 * std::pow(targets[t].frequency_hz / f0, static_cast<double>(stage) / kStages);
-    }
-    out.iterations += fit_stage(modes_of, staged, x, x0, options);
-  }
-  out.fitted = from_log(x);
-  const std::vector<RigidMode> modes = modes_of(out.fitted);
+// The log-frequency errors (9.1), then w (x - x0) when regularised (9.2).
+Eigen::VectorXd residuals(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
+                          const Eigen::VectorXd& x0, double w) {
+  const std::vector<RigidMode> modes = modes_of(from_log(x));
   const std::vector<int> match = match_targets(modes, targets);
-  out.labels_match = true;
+  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(nt + (w > 0 ? x.size() : 0));
   for (std::size_t t = 0; t < targets.size(); ++t) {
-    const RigidMode& m = modes[static_cast<std::size_t>(match[t])];
-    out.achieved_hz.push_back(m.frequency_hz);
-    out.achieved_dominant.push_back(m.dominant);
-    out.max_relative_error = std::max(out.max_relative_error, std::abs(m.frequency_hz - targets[t].frequency_hz) / targets[t].frequency_hz);
-    if (!targets[t].dominant.empty() && m.dominant != targets[t].dominant) out.labels_match = false;
+    if (match[t] < 0) throw UnderdeterminedFit(fmt::format("{} target frequencies but the model has {} modes", targets.size(), modes.size()));
+    r(static_cast<Eigen::Index>(t)) = std::log(modes[static_cast<std::size_t>(match[t])].frequency_hz / targets[t].frequency_hz);
   }
-  return out;
+  if (w > 0) r.tail(x.size()) = w * (x - x0);
+  return r;
 }
 
-namespace {
+// Central-difference Jacobian of the residuals in ln p. A step that would
+// leave the bounds is taken one-sided.
+Eigen::MatrixXd jacobian(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
+                         const Eigen::VectorXd& x0, double w, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+  const double h = 1e-6;
+  const Eigen::VectorXd r0 = residuals(modes_of, targets, x, x0, w);
+  Eigen::MatrixXd j(r0.size(), x.size());
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(k) = std::min(x(k) + h, hi(k));
+    xm(k) = std::max(x(k) - h, lo(k));
+    if (xp(k) - xm(k) <= 0) xp(k) = x(k) + h, xm(k) = x(k) - h;  // a degenerate interval: the sensitivity is still wanted
+    j.col(k) = (residuals(modes_of, targets, xp, x0, w) - residuals(modes_of, targets, xm, x0, w)) / (xp(k) - xm(k));
+  }
+  return j;
+}
 
 int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
-              const CalibrationOptions& options) {
-  const Eigen::Index np = x.size();
-  Eigen::VectorXd r = residuals(modes_of(from_log(x)), targets, x, x0, options);
-  const Eigen::Index nfit = r.size() - np;  // frequency errors and label shortfalls
+              const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const CalibrationOptions& options) {
+  const double w = options.regularization;
+  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
+  Eigen::VectorXd r = residuals(modes_of, targets, x, x0, w);
   double lambda = 1e-3;
   int iterations = 0;
-  for (int it = 0; it < options.max_iterations && r.head(nfit).norm() > options.tolerance; ++it) {
+  for (int it = 0; it < options.max_iterations && r.head(nt).norm() > options.tolerance; ++it) {
     iterations = it + 1;
-    // Jacobian of the log-frequency errors with respect to the log-parameters.
-    Eigen::MatrixXd j(r.size(), np);
-    const double h = 1e-6;
-    for (Eigen::Index k = 0; k < np; ++k) {
-      Eigen::VectorXd xp = x, xm = x;
-      xp(k) += h;
-      xm(k) -= h;
-      j.col(k) = (residuals(modes_of(from_log(xp)), targets, xp, x0, options) - residuals(modes_of(from_log(xm)), targets, xm, x0, options)) / (2 * h);
-    }
+    const Eigen::MatrixXd j = jacobian(modes_of, targets, x, x0, w, lo, hi);
     bool improved = false;
     for (int attempt = 0; attempt < 20 && !improved; ++attempt) {
       Eigen::MatrixXd a = j.transpose() * j;
@@ -153,15 +115,17 @@ int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarg
       // Keep a single step within a factor of e in every parameter.
       const double largest = step.cwiseAbs().maxCoeff();
       if (largest > 1.0) step /= largest;
-      const Eigen::VectorXd trial = x + step;
+      const Eigen::VectorXd trial = (x + step).cwiseMax(lo).cwiseMin(hi);  // projected onto the bounds
       Eigen::VectorXd r_trial;
       try {
-        r_trial = residuals(modes_of(from_log(trial)), targets, trial, x0, options);
+        r_trial = residuals(modes_of, targets, trial, x0, w);
+      } catch (const UnderdeterminedFit&) {
+        throw;
       } catch (const std::exception&) {
         lambda *= 10;
         continue;
       }
-      if (r_trial.norm() < r.norm()) {
+      if (r_trial.norm() < r.norm() * (1 - 1e-12)) {
         x = trial;
         r = r_trial;
         lambda = std::max(lambda / 10, 1e-12);
@@ -176,5 +140,108 @@ int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarg
 }
 
 }  // namespace
+
+CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector<double>& initial,
+                            const std::vector<FrequencyTarget>& targets, const CalibrationOptions& options) {
+  if (initial.empty()) throw std::invalid_argument("calibration needs at least one parameter");
+  if (targets.empty()) throw std::invalid_argument("calibration needs at least one target frequency");
+  if (!(options.regularization >= 0)) throw std::invalid_argument("the regularisation weight must be >= 0");
+  const Eigen::Index np = static_cast<Eigen::Index>(initial.size());
+  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
+  const double w = options.regularization;
+  Eigen::VectorXd x(np), lo(np), hi(np);
+  CalibrationResult out;
+  out.initial = initial;
+  out.regularization = w;
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    if (!(initial[k] > 0)) throw std::invalid_argument("calibrated parameters must start positive");
+    const double l = options.lower.empty() ? 0.0 : options.lower.at(k);
+    const double u = options.upper.empty() ? std::numeric_limits<double>::infinity() : options.upper.at(k);
+    if (!(l >= 0 && l <= initial[k] && initial[k] <= u))
+      throw std::invalid_argument(fmt::format("parameter {}: bounds [{}, {}] must hold its start {}", i + 1, l, u, initial[k]));
+    x(i) = std::log(initial[k]);
+    lo(i) = l > 0 ? std::log(l) : -std::numeric_limits<double>::infinity();
+    hi(i) = std::log(u);
+    out.lower.push_back(l);
+    out.upper.push_back(u);
+  }
+  const Eigen::VectorXd x0 = x;
+
+  // Refuse what the targets cannot determine, before fitting (9.3).
+  {
+    if (nt < np && w == 0)
+      throw UnderdeterminedFit(fmt::format("{} target frequencies for {} parameters: fewer independent targets than parameters "
+                                           "(fit fewer parameters, or ask for regularization)", nt, np));
+    const Eigen::MatrixXd s0 = jacobian(modes_of, targets, x, x0, 0.0, lo, hi);
+    const int independent = independent_count(Eigen::JacobiSVD<Eigen::MatrixXd>(s0).singularValues());
+    if (independent < np && w == 0)
+      throw UnderdeterminedFit(fmt::format("{} target frequencies but only {} independent (singular values of the sensitivities above "
+                                           "{} of the largest) for {} parameters (fit fewer parameters, or ask for regularization)",
+                                           nt, independent, kIndependentRatio, np));
+  }
+
+  // Continuation: move the targets from the model's own frequencies to the
+  // wanted ones in stages, so that each mode is followed as it moves.
+  const std::vector<RigidMode> start_modes = modes_of(initial);
+  const std::vector<int> start_match = match_targets(start_modes, targets);
+  constexpr int kStages = 8;
+  for (int stage = 1; stage <= kStages; ++stage) {
+    std::vector<FrequencyTarget> staged = targets;
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      if (start_match[t] < 0) throw UnderdeterminedFit("more frequency targets than the model has modes");
+      const double f0 = start_modes[static_cast<std::size_t>(start_match[t])].frequency_hz;
+      staged[t].frequency_hz = f0 * std::pow(targets[t].frequency_hz / f0, static_cast<double>(stage) / kStages);
+    }
+    out.iterations += fit_stage(modes_of, staged, x, x0, lo, hi, options);
+  }
+  out.fitted = from_log(x);
+
+  // The labels, as a prediction.
+  const std::vector<RigidMode> modes = modes_of(out.fitted);
+  const std::vector<int> match = match_targets(modes, targets);
+  out.labels_match = true;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const RigidMode& m = modes[static_cast<std::size_t>(match[t])];
+    out.achieved_hz.push_back(m.frequency_hz);
+    out.achieved_dominant.push_back(m.dominant);
+    out.max_relative_error = std::max(out.max_relative_error, std::abs(m.frequency_hz - targets[t].frequency_hz) / targets[t].frequency_hz);
+    const bool ok = targets[t].dominant.empty() || m.dominant == targets[t].dominant;
+    out.label_matches.push_back(ok);
+    out.labels_match = out.labels_match && ok;
+  }
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const double tol = 1e-6;
+    out.at_bound.push_back((std::isfinite(lo(i)) && x(i) - lo(i) < tol) || (std::isfinite(hi(i)) && hi(i) - x(i) < tol));
+  }
+
+  // Identifiability and uncertainty at the fitted values (9.3, 9.4).
+  const Eigen::MatrixXd s = jacobian(modes_of, targets, x, x0, 0.0, lo, hi);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(s, Eigen::ComputeFullV);
+  out.singular_values = svd.singularValues();
+  out.independent_targets = independent_count(out.singular_values);
+  for (Eigen::Index i = out.independent_targets; i < np; ++i) out.unresolved.push_back(svd.matrixV().col(i));
+  out.underdetermined = out.independent_targets < np;
+  Eigen::VectorXd freq_residual(nt);
+  for (Eigen::Index t = 0; t < nt; ++t) freq_residual(t) = std::log(out.achieved_hz[static_cast<std::size_t>(t)] / targets[static_cast<std::size_t>(t)].frequency_hz);
+  const double dof = static_cast<double>(std::max<Eigen::Index>(nt - np, 0));
+  const double variance = std::max(dof > 0 ? freq_residual.squaredNorm() / dof : 0.0, std::pow(options.target_relative_uncertainty, 2));
+  Eigen::MatrixXd info = s.transpose() * s;
+  info.diagonal().array() += w * w;
+  // Pseudo-inverse: a direction the targets do not see has no finite uncertainty.
+  Eigen::JacobiSVD<Eigen::MatrixXd> isvd(info, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd sv = isvd.singularValues();
+  Eigen::VectorXd inv(sv.size());
+  for (Eigen::Index i = 0; i < sv.size(); ++i) inv(i) = sv(i) > std::pow(kIndependentRatio, 2) * sv(0) ? 1.0 / sv(i) : std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < np; ++i) {
+    double var = 0.0;
+    for (Eigen::Index k = 0; k < sv.size(); ++k) {
+      const double v = isvd.matrixV()(i, k);
+      if (v * v > 1e-20) var += v * v * inv(k);
+    }
+    out.uncertainty.push_back(out.fitted[static_cast<std::size_t>(i)] * std::sqrt(variance * var));
+  }
+  return out;
+}
 
 }  // namespace framedyn::rigid

@@ -1,9 +1,24 @@
 // Calibration: fit chosen model parameters so that the vehicle's natural
 // frequencies match targets (frequencies a user measured on the machine, or
-// the thesis's Tables IV and V), each target tied to the mode with its
-// dominant coordinate. Levenberg-Marquardt on the logarithms of the
-// parameters (which keeps them positive and makes the steps scale-free), with
-// a finite-difference Jacobian. docs/theory/rigid.md, section 9.
+// the thesis's Tables IV and V), within bounds, and report what the targets
+// can and cannot determine. docs/theory/rigid.md, section 9.
+//
+// Levenberg-Marquardt on the logarithms x = ln p of the parameters (which
+// keeps them positive and makes the steps scale-free), each step projected
+// onto the bounds ln lower <= x <= ln upper, with a finite-difference
+// Jacobian. Residual: the log-frequency errors r_t = ln(f_t / target_t) of
+// the targets' modes (9.1), and, only when a regularisation weight w > 0 is
+// asked for, w (x - x0) (Tikhonov towards the nominal values, 9.2).
+// Identifiability: the scaled sensitivity matrix S = d r / d x (targets x
+// parameters, dimensionless) and its singular values s_1 >= ... ; the number
+// of independent targets is the number of s_i > 1e-3 s_1 (9.3); a fit with
+// fewer independent targets than parameters is refused unless w > 0. The
+// linearised uncertainty of ln p_i is sqrt(sigma^2 [(S^T S + w^2 1)^-1]_ii)
+// with sigma^2 the residual's variance per degree of freedom, and never below
+// the stated target uncertainty (9.4).
+// The dominant coordinates of the targets are never fitted: targets are paired
+// with modes by frequency alone and the labels are checked afterwards, as a
+// prediction (labels_match per target).
 #pragma once
 
 #include <Eigen/Dense>
@@ -18,37 +33,64 @@ namespace framedyn::rigid {
 
 struct FrequencyTarget {
   double frequency_hz = 0.0;
-  std::string dominant;  // coordinate name; empty: match by frequency only
+  std::string dominant;  // the coordinate the mode is expected to be led by (checked, never fitted); may be empty
 };
 
 // The modes of the model with parameter values p (positive).
 using ModesOfParameters = std::function<std::vector<RigidMode>(const std::vector<double>& p)>;
 
+// A calibration that the targets cannot determine (fewer independent targets
+// than parameters, or more targets than modes): an input error of the study.
+struct UnderdeterminedFit : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
 struct CalibrationOptions {
   int max_iterations = 100;
   double tolerance = 1e-10;  // on the relative frequency errors' norm
-  // The coordinate names that index RigidMode::energy_share. When given, a
-  // target's dominant coordinate is part of what is fitted, not only used to
-  // pair it with a mode: a target whose mode is led by another coordinate adds
-  // the shortfall of its own coordinate's energy share (plus a 1 % margin) to
-  // the residual, so that among the parameter sets that reach the frequencies
-  // the fit moves to one whose modes carry the target's labels.
-  std::vector<std::string> coordinates;
+  // Bounds per parameter (same units as the parameters; 0 < lower <= initial
+  // <= upper). Empty: no bounds.
+  std::vector<double> lower, upper;
+  // Tikhonov weight w on ln(p / p_initial) (9.2). 0: none, and a fit that the
+  // targets cannot determine is refused.
+  double regularization = 0.0;
+  // The relative uncertainty of each target frequency, the floor of the
+  // residual's standard deviation in the uncertainty of the parameters (9.4).
+  double target_relative_uncertainty = 1e-3;
 };
 
 struct CalibrationResult {
   std::vector<double> initial, fitted;
+  std::vector<double> lower, upper;         // the bounds used
+  std::vector<bool> at_bound;               // fitted within 1e-6 (relative) of a bound
+  std::vector<double> uncertainty;          // linearised standard deviation of each fitted parameter (its units)
   std::vector<double> achieved_hz;          // per target, with the fitted parameters
   std::vector<std::string> achieved_dominant;
+  std::vector<bool> label_matches;          // per target: its mode is led by the target's coordinate (prediction)
   double max_relative_error = 0.0;          // max |f - target| / target
-  bool labels_match = false;                // every target's mode has the target's dominant coordinate
+  bool labels_match = false;                // every labelled target's mode has the target's dominant coordinate
   int iterations = 0;
+  // Identifiability at the fitted values (9.3).
+  Eigen::VectorXd singular_values;          // of S, largest first
+  int independent_targets = 0;              // singular values above 1e-3 of the largest
+  std::vector<Eigen::VectorXd> unresolved;  // right singular vectors (in ln p) of the others and of the missing ones
+  bool underdetermined = false;             // fewer independent targets than parameters (only with regularisation)
+  double regularization = 0.0;              // the weight used
 };
 
-// Pairs each target with a distinct mode: the nearest in frequency among the
-// modes whose dominant coordinate is the target's, else the nearest unused.
+// Pairs each target with a distinct mode preserving frequency order (the
+// k-th lowest target with a lower mode than the (k+1)-th), the modes chosen
+// by least total log-frequency distance; labels play no part. -1 for every
+// target when the model has fewer modes than targets.
 std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets);
 
+// The independent-target count of singular values s (largest first): those
+// above kIndependentRatio times the largest.
+constexpr double kIndependentRatio = 1e-3;
+int independent_count(const Eigen::VectorXd& s);
+
+// Throws UnderdeterminedFit (without a regularisation weight) when the
+// targets cannot determine the parameters at the initial values.
 CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector<double>& initial,
                             const std::vector<FrequencyTarget>& targets, const CalibrationOptions& options = {});
 

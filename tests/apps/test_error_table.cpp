@@ -171,6 +171,9 @@ frame:
   damping: {modal_ratio: 0.02}
   output_interval: 0.001
   stations: 3
+  outputs:
+    left_rail: {element_set: LEFT_RAIL}
+    right_rail: {element_set: RIGHT_RAIL}
 )";
 
 const std::string kLoads = R"(# framedyn load history, version 1
@@ -353,6 +356,25 @@ std::vector<Row> rows() {
       study_row("STUDY-35", "  modes: true\n", "  modes: true\n  modal_soil: wet\n", "modal_soil: wet", "analysis.modal_soil"),
       study_row("STUDY-36", "analysis:\n", "calibration: {parameters: [cab.stiffness], targets: [{frequency_hz: 2}]}\nanalysis:\n", "calibration",
                 "calibration.parameters"),
+      study_row("STUDY-74", "analysis:\n", "calibration: {fit_labels: true, parameters: [cab.inertia], targets: [{frequency_hz: 2}]}\nanalysis:\n",
+                "calibration", "calibration.fit_labels"),
+      study_row("STUDY-75", "analysis:\n",
+                "calibration: {parameters: [cab.front_mount.stiffness, cab.rear_mount.stiffness], targets: [{frequency_hz: 6}]}\nanalysis:\n",
+                "calibration", "calibration.parameters"),
+      study_row("STUDY-76", "analysis:\n",
+                "calibration: {parameters: [cab.inertia], targets: [{frequency_hz: 6}], bounds: [{parameter: cab.inertia, upper: 1e9}]}\nanalysis:\n",
+                "calibration", "calibration.bounds[0].reason"),
+      study_row("STUDY-77", "analysis:\n",
+                "calibration: {parameters: [cab.inertia], targets: [{frequency_hz: 6}], bounds: [{parameter: cab.inertia, upper: 1, reason: r}]}\nanalysis:\n",
+                "calibration", "calibration.bounds[0].parameter"),
+      study_row("STUDY-78", "analysis:\n", "calibration: {parameters: [cab.inertia, cab.inertia], targets: [{frequency_hz: 6}, {frequency_hz: 7}]}\nanalysis:\n",
+                "calibration", "calibration.parameters"),
+      study_row("STUDY-79", "analysis:\n",
+                "calibration: {parameters: [cab.inertia], targets: [{frequency_hz: 6}], bounds: [{parameter: cab.mass, upper: 9, reason: r}]}\nanalysis:\n",
+                "calibration", "calibration.bounds[0].parameter"),
+      study_row("STUDY-80", "analysis:\n",
+                "calibration: {parameters: [cab.mass], targets: [{frequency_hz: 6}], bounds: [{parameter: cab.mass, dimensions: [1, 1, 1]}]}\nanalysis:\n",
+                "calibration", "calibration.bounds[0].dimensions"),
       // ---- 3-D rigid-body studies (coupling/rigid_study_3d.cpp)
       study_row("STUDY-37", "pin: [72, 0, 0]", "pin: [72, 0]", "pin: [72, 0]", "frame.rear_axle.pin", kStudy3D),
       study_row("STUDY-38", "  front:\n    steering_deg: 0", "  front:\n    steering_deg: 95", "steering_deg: 95", "tires.front.steering_deg", kStudy3D),
@@ -369,7 +391,7 @@ std::vector<Row> rows() {
       frame_row("STUDY-44", "  stations: 3\n", "  stations: 3\n  mthod: direct\n", "mthod", "frame.mthod"),
       frame_row("STUDY-45", "  mesh: frame.inp\n", "", "  loads:", "frame.mesh"),
       frame_row("STUDY-46", "mesh: frame.inp", "mesh: frame_v2.inp", "mesh:", "frame.mesh"),
-      frame_row("STUDY-47", "supports: fixed_rear_end", "supports: clamped", "supports:", "frame.supports"),
+      frame_row("STUDY-47", "supports: fixed_rear_end", "supports: pinned", "supports:", "frame.supports"),
       frame_row("STUDY-48", "method: mode_displacement", "method: modal", "method:", "frame.method"),
       frame_row("STUDY-49", "modes: 4", "modes: 0", "modes:", "frame.modes"),
       frame_row("STUDY-50", "modal_ratio: 0.02", "modal_ratio: 1.5", "damping:", "frame.damping.modal_ratio"),
@@ -394,6 +416,15 @@ std::vector<Row> rows() {
       study_row("STUDY-65", "  position: [0, 0, -14]\n  radii_of_gyration: [22, 10, 22]", "  position: [0, 0, 0]\n  radii_of_gyration: [0, 10, 22]",
                 "  weight: 650", "front_axle", kStudy3D),
       frame_row("STUDY-66", "damping: {modal_ratio: 0.02}", "damping: {modal_ratio: 0.02, rayleigh: {alpha: 1, beta: 0}}", "damping:", "frame.damping"),
+      // output sets and supports by set name (issue 13)
+      frame_row("STUDY-67", "{element_set: LEFT_RAIL}", "{element_set: LEFT_RAILS}", "{element_set: LEFT_RAILS}", "frame.outputs.left_rail.element_set"),
+      frame_row("STUDY-68", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n    axle: {node_set: FRONT_AXLE}\n",
+                "{node_set: FRONT_AXLE}", "frame.outputs.axle.node_set"),
+      frame_row("STUDY-69", "{element_set: LEFT_RAIL}", "{element_set: LEFT_RAIL, node_set: LEFT_RAIL_NODES}", "left_rail:", "frame.outputs.left_rail"),
+      frame_row("STUDY-70", "  supports: fixed_rear_end\n", "", "  mesh:", "frame.supports"),
+      frame_row("STUDY-71", "supports: fixed_rear_end", "supports: clamped", "supports:", "frame.supports"),
+      frame_row("STUDY-72", "    left_rail:", "    left rail:", "left rail:", "frame.outputs.left rail"),
+      frame_row("STUDY-73", "supports: fixed_rear_end", "supports: none\n  support_set: REAR_END", "support_set:", "frame.support_set"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

@@ -4,11 +4,14 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/support/temp_dir.h"
 
@@ -41,7 +44,8 @@ TEST(FrameResponseCommand, WritesSummaryWithFrameKeysAndParaViewSeries) {
   framedyn::testing::TempDir dir;
   dir.write("loads.csv", loads());
   const auto study = dir.write("s.yaml", "framedyn_study: 1\nname: cli\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " +
-                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  modes: 10\n  pvd: true\n");
+                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  supports: fixed_rear_end\n  modes: 10\n  pvd: true\n"
+                                             "  outputs:\n    left_rail: {element_set: LEFT_RAIL}\n    right_rail: {element_set: RIGHT_RAIL}\n");
   const std::string cmd = kBinary + " frame-response " + study.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / "log");
   const std::string j = slurp(dir / "out" / "summary.json");
@@ -57,11 +61,65 @@ TEST(FrameResponseCommand, BadLoadFileExitsOneNamingFileAndLine) {
   bad.replace(bad.find("[lbf]"), 5, "[N]");
   dir.write("loads.csv", bad);
   const auto study = dir.write("s.yaml", "framedyn_study: 1\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " +
-                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n");
+                                             std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp\n  loads: loads.csv\n  supports: fixed_rear_end\n");
   const std::string cmd = kBinary + " frame-response " + study.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 1);
   EXPECT_NE(slurp(dir / "log").find("loads.csv:5: column 2"), std::string::npos) << slurp(dir / "log");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+// The shipped general example (a portal frame, not the trencher frame):
+// nodal histories with units per column, section forces at the column bases,
+// and the summary's peak equal to the largest value of the CSV it came from.
+TEST(FrameResponseCommand, PortalFrameExampleWritesNodalAndSectionHistoriesWithUnits) {
+  framedyn::testing::TempDir dir;
+  const std::string cmd = kBinary + " frame-response " + std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway.yaml -o " +
+                          (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / "log");
+  std::istringstream nodes(slurp(dir / "out" / "frame_nodes_corners.csv"));
+  std::string header, line;
+  std::getline(nodes, header);
+  EXPECT_EQ(header, "time [s],node,UX [m],UY [m],UZ [m],URX [rad],URY [rad],URZ [rad],VX [m/s],VY [m/s],VZ [m/s],VRX [rad/s],VRY [rad/s],VRZ [rad/s],"
+                    "AX [m/s^2],AY [m/s^2],AZ [m/s^2],ARX [rad/s^2],ARY [rad/s^2],ARZ [rad/s^2]");
+  double largest = 0.0;
+  int rows = 0;
+  while (std::getline(nodes, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) v.push_back(std::stod(c));
+    ASSERT_EQ(v.size(), 20u) << line;
+    for (int d = 2; d < 5; ++d) largest = std::max(largest, std::abs(v[static_cast<std::size_t>(d)]));
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2 * 501);  // two corner nodes, 1 s every 2 ms
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir / "out" / "summary.json"))["frame"];
+  const nlohmann::json& peak = j["outputs"]["corners"]["peak_displacement"];
+  EXPECT_EQ(peak["unit"], "m");
+  EXPECT_EQ(peak["dof"], "ux");  // the load is along X: the in-plane sway
+  EXPECT_NEAR(std::abs(peak["value"].get<double>()), largest, 1e-9 * largest);
+  EXPECT_EQ(j["supports"], "clamped");
+  EXPECT_EQ(j["outputs"]["column_bases"]["kind"], "element_set");
+  const std::string sections = slurp(dir / "out" / "frame_sections_column_bases.csv");
+  EXPECT_EQ(sections.substr(0, sections.find('\n')),
+            "time [s],element,station,x [m],N [N],Vy [N],Vz [N],T [N*m],My [N*m],Mz [N*m],max_abs_normal_stress [Pa]");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "frame_sections_beam.csv"));  // history: false
+}
+
+TEST(FrameResponseCommand, MissingOutputSetExitsOneNamingStudyLineMeshAndSet) {
+  framedyn::testing::TempDir dir;
+  std::string study = slurp(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway.yaml");
+  study.replace(study.find("{node_set: MIDSPAN}"), 19, "{node_set: MID_SPAN}");
+  study.replace(study.find("../meshes/portal_frame.inp"), 26, std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/portal_frame.inp");
+  study.replace(study.find("portal_frame_sway_loads.csv"), 27, std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway_loads.csv");
+  const auto file = dir.write("s.yaml", study);
+  const std::string cmd = kBinary + " frame-response " + file.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 1);
+  const std::string log = slurp(dir / "log");
+  EXPECT_NE(log.find(file.string() + ":31: frame.outputs.midspan.node_set: expected a node set of the mesh " + std::string(FRAMEDYN_SOURCE_DIR) +
+                     "/meshes/portal_frame.inp (its node sets: ALL_NODES, CORNERS, FEET, MIDSPAN, TOP_LEFT), found 'MID_SPAN'"),
+            std::string::npos)
+      << log;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 

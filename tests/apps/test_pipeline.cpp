@@ -82,7 +82,8 @@ TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) 
                                                    "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string() +
                                                    "\n  loads: out/frame_loads.csv\n  supports: fixed_rear_end\n  modes: all\n"
                                                    "  method: mode_acceleration\n  damping: {modal_ratio: 0.02}\n  output_interval: 0.001\n"
-                                                   "  stations: 5\n");
+                                                   "  stations: 5\n  outputs:\n    left_rail: {element_set: LEFT_RAIL}\n"
+                                                   "    right_rail: {element_set: RIGHT_RAIL}\n");
   ASSERT_EQ(run("frame-response " + study.string() + " -o " + (*dir_ / "again").string(), *dir_ / "again.log"), 0) << slurp(*dir_ / "again.log");
   const nlohmann::json again = nlohmann::json::parse(slurp(*dir_ / "again" / "summary.json"))["frame"];
   const nlohmann::json& frame = summary_["frame"];

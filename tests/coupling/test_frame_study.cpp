@@ -47,7 +47,8 @@ std::string load_file() {
 
 std::string study(const std::string& frame_block) {
   return "framedyn_study: 1\nname: frame test\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " + std::string(FRAMEDYN_SOURCE_DIR) +
-         "/meshes/r100_frame.inp\n  loads: loads.csv\n" + frame_block;
+         "/meshes/r100_frame.inp\n  loads: loads.csv\n" + frame_block +
+         "  outputs:\n    left_rail: {element_set: LEFT_RAIL, history: false}\n    right_rail: {element_set: RIGHT_RAIL, history: false}\n";
 }
 
 TEST(FrameStudy, ModeAccelerationWithAllModesMatchesDirectIntegrationOnR100Frame) {
@@ -110,7 +111,8 @@ TEST(FrameStudyInput, StrictErrorsNameKeyAndLine) {
   };
   EXPECT_NE(error_of("  method: modal\n").find("frame.method"), std::string::npos);
   EXPECT_NE(error_of("  mthod: direct\n").find("mthod"), std::string::npos);
-  EXPECT_NE(error_of("  supports: clamped\n").find("fixed_rear_end or free_free_inertia_relief"), std::string::npos);
+  EXPECT_NE(error_of("  supports: pinned\n").find("clamped, mesh_boundary, none (free_free_inertia_relief) or fixed_rear_end"), std::string::npos);
+  EXPECT_NE(error_of("  supports: clamped\n").find("frame.supports: expected supports: clamped with support_set"), std::string::npos);
   EXPECT_NE(error_of("  method: direct\n  damping: {modal_ratio: 0.02}\n").find("rayleigh"), std::string::npos);
   EXPECT_NE(error_of("  modes: 0\n").find("frame.modes"), std::string::npos);
   EXPECT_NE(error_of("  damping: {modal_ratio: 1.5}\n").find("[0, 1)"), std::string::npos);

@@ -571,6 +571,33 @@ TEST(FrameAndCab, FramePointMovesAsARigidBodyAboutTheReferencePoint) {
   }
 }
 
+// Eq. 2.7 as printed, [x + a theta_y] l + [z + d theta_y] n, has a and d
+// swapped: a point a ahead-of-c.g. in X and d above it in Z moves by
+// (d theta_y, -a theta_y) under a pitch (Eq. A.1, Eq. 2.45;
+// docs/theory/rigid.md, section 2, slips). Derived here from the exact
+// rotation of the point about Y through the reference point (central
+// differences of Rodrigues' rotation), not from the model's Jacobians.
+TEST(FrameAndCab, FramePointPitchMotionIsEqA1NotThePrintedEq27) {
+  const rigid::Machine2DParameters p = tiny_machine();
+  const rigid::Machine2D m(p);
+  const int ity = coordinate(m, "theta_y");
+  const Vector2d ref(640.0 / 650.0, 395.0 / 950.0);
+  for (const Vector2d& r : {p.front_tire.contact, p.rear_tire.contact, Vector2d(1.7, 0.9)}) {
+    const Eigen::Vector3d rel(r.x() - ref.x(), 0.0, r.y() - ref.y());
+    const double h = 1e-6;
+    const Eigen::Vector3d fd =
+        (Eigen::AngleAxisd(h, Eigen::Vector3d::UnitY()) * rel - Eigen::AngleAxisd(-h, Eigen::Vector3d::UnitY()) * rel) / (2 * h);
+    const rigid::Jacobian j = m.frame_point_jacobian(r);
+    const double a = rel.x(), d = rel.z();
+    EXPECT_NEAR(fd.x(), d, 1e-9);
+    EXPECT_NEAR(fd.z(), -a, 1e-9);
+    EXPECT_NEAR(j(0, ity), fd.x(), 1e-9);
+    EXPECT_NEAR(j(2, ity), fd.z(), 1e-9);
+    // The printed reading would move the point by (a, d) theta_y.
+    EXPECT_GT(std::abs(j(0, ity) - a) + std::abs(j(2, ity) - d), 0.1);
+  }
+}
+
 TEST(FrameAndCab, CabXIsTiedToTheFrameAtItsCgAndItsPointsTurnWithThetaV) {
   const rigid::Machine2DParameters p = tiny_machine();
   const rigid::Machine2D m(p);

@@ -547,6 +547,43 @@ double isolated_frequency(const rigid::Machine3D& m, const std::string& keep) {
   return modes.at(0).frequency_hz;
 }
 
+// Eq. E.5, Y term of theta_x: the arm's end (point 21, pin 9) moves across by
+// -(d19 + TA2 cos alpha') theta_x, the sum of E.1's -d19 theta_x and E.4's
+// -TA2 cos alpha' theta_x; the thesis prints -(d19 - TA2 cos alpha')
+// (docs/theory/rigid.md, section 10, slips). Derived here twice without the
+// model's Jacobians: by central differences of the exact nonlinear geometry
+// (ExactGeometry::arm, finite rotations), and from the dimensions with
+// TA2 = l1 sin psi' cos alpha' (Appendix E), l1 sin psi' the arm's rise from
+// pin 6 to pin 9 and d19 the height of pin 6 above the reference point. The
+// boom is swung 25 deg so that the cos alpha' factors matter.
+TEST(AppendixE, ArmEndCrossMotionUnderRollIsMinusD19PlusTA2CosAlpha) {
+  rigid::Machine3DParameters p = offset_plow();
+  const double alpha = 25 * kPi / 180;
+  p.plow.boom_angle = alpha;
+  const rigid::Machine3D m(p);
+  const ExactGeometry exact(p, m);
+  const auto& pp = m.plow_placement();
+  const int itx = coordinate(m, "theta_x");
+  // The model's Jacobian of pin 9 (a point of the shank and of the arm).
+  const rigid::Body& plow = m.model().bodies()[static_cast<std::size_t>(m.plow_body())];
+  const rigid::Jacobian j9 = plow.translation - rigid::skew(pp.pin9 - pp.cg) * plow.rotation;
+  // Central differences of the exact geometry.
+  const double h = 1e-6;
+  VectorXd qp = VectorXd::Zero(m.size()), qm = qp;
+  qp[itx] = h;
+  qm[itx] = -h;
+  const Vector3d fd = (exact.arm(qp).map(pp.pin9) - exact.arm(qm).map(pp.pin9)) / (2 * h);
+  // Appendix E's dimensions.
+  const double d19 = pp.pin6.z() - m.reference().z();
+  const double rise = pp.pin9.z() - pp.pin6.z();                      // l1 sin psi'
+  const double ta2 = rise * std::cos(alpha);                          // TA2 = l1 sin psi' cos alpha'
+  const double corrected = -(d19 + ta2 * std::cos(alpha)), printed = -(d19 - ta2 * std::cos(alpha));
+  ASSERT_GT(std::abs(rise), 0.05);                                    // the two readings differ by 2 TA2 cos alpha'
+  EXPECT_NEAR(fd.y(), corrected, 1e-8);
+  EXPECT_NEAR(j9(1, itx), corrected, 1e-12);
+  EXPECT_GT(std::abs(j9(1, itx) - printed), 0.05);
+}
+
 TEST(AppendixG, FrontAxleRollMatchesAppendixG) {
   // Eq. G.8 with the errata: w^2 = 2 (K2 dp201^2 + K3 bp201^2) / (I4 + M4 dp200^2),
   // K2 lateral and K3 vertical per tire, contacts at +-bp201 and dp201 below the pin,

@@ -1,0 +1,97 @@
+// summary.json's rigid.calibration and calibration.csv; see calibration_output.h.
+#include "apps/calibration_output.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/csv_writer.h"
+
+namespace framedyn::apps {
+
+namespace {
+
+// JSON has no infinity, and the results folder refuses null: an unbounded side
+// is written "none", the uncertainty of a parameter the targets do not
+// determine "undetermined".
+nlohmann::ordered_json finite_or(double v, const char* otherwise) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(otherwise); }
+
+}  // namespace
+
+nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& c,
+                                         const core::UnitSystem& u, const std::function<core::Quantity(const std::string&)>& quantity,
+                                         const core::ResultsFolder& folder) {
+  nlohmann::ordered_json cal;
+  nlohmann::ordered_json params = nlohmann::ordered_json::array();
+  core::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial", "lower", "upper", "at_bound", "uncertainty"});
+  for (std::size_t i = 0; i < c.fitted.size(); ++i) {
+    const std::string& name = request.parameters[i];
+    const core::Quantity q = quantity(name);
+    params.push_back({{"name", name},
+                      {"unit", u.label(q)},
+                      {"initial", u.from_si(c.initial[i], q)},
+                      {"fitted", u.from_si(c.fitted[i], q)},
+                      {"ratio", c.fitted[i] / c.initial[i]},
+                      {"lower", u.from_si(c.lower[i], q)},
+                      {"upper", finite_or(u.from_si(c.upper[i], q), "none")},
+                      {"at_bound", static_cast<bool>(c.at_bound[i])},
+                      {"uncertainty", finite_or(u.from_si(c.uncertainty[i], q), "undetermined")},
+                      {"bounds_basis", request.bounds[i].basis}});
+    pcsv.row()
+        .add(name)
+        .add(u.label(q))
+        .add(u.from_si(c.initial[i], q))
+        .add(u.from_si(c.fitted[i], q))
+        .add(c.fitted[i] / c.initial[i])
+        .add(u.from_si(c.lower[i], q))
+        .add(std::isfinite(c.upper[i]) ? fmt::format("{:.6g}", u.from_si(c.upper[i], q)) : std::string("none"))
+        .add(c.at_bound[i] ? "yes" : "no")
+        .add(std::isfinite(c.uncertainty[i]) ? fmt::format("{:.6g}", u.from_si(c.uncertainty[i], q)) : std::string("undetermined"));
+  }
+  nlohmann::ordered_json targets = nlohmann::ordered_json::array(), labels = nlohmann::ordered_json::array();
+  for (std::size_t t = 0; t < request.targets.size(); ++t) {
+    const rigid::FrequencyTarget& tg = request.targets[t];
+    targets.push_back({{"frequency_hz", tg.frequency_hz},
+                       {"dominant", tg.dominant},
+                       {"achieved_hz", c.achieved_hz[t]},
+                       {"achieved_dominant", c.achieved_dominant[t]},
+                       {"relative_error", (c.achieved_hz[t] - tg.frequency_hz) / tg.frequency_hz},
+                       {"label_matches", static_cast<bool>(c.label_matches[t])}});
+    labels.push_back(static_cast<bool>(c.label_matches[t]));
+  }
+  nlohmann::ordered_json unresolved = nlohmann::ordered_json::array();
+  for (const Eigen::VectorXd& v : c.unresolved) {
+    nlohmann::ordered_json combo;
+    for (std::size_t i = 0; i < request.parameters.size(); ++i)
+      if (std::abs(v(static_cast<Eigen::Index>(i))) > 1e-3) combo[request.parameters[i]] = v(static_cast<Eigen::Index>(i));
+    unresolved.push_back(combo);
+  }
+  std::vector<double> sv(c.singular_values.data(), c.singular_values.data() + c.singular_values.size());
+  cal["parameters"] = params;
+  cal["targets"] = targets;
+  cal["target_count"] = request.targets.size();
+  cal["independent_targets"] = c.independent_targets;
+  cal["singular_values"] = sv;
+  cal["unresolved"] = unresolved;  // ln-parameter combinations the targets cannot tell apart
+  cal["underdetermined"] = c.underdetermined;
+  cal["regularization_weight"] = c.regularization;
+  cal["residual_max"] = c.max_relative_error;
+  cal["labels_match"] = labels;
+  cal["labels_all_match"] = c.labels_match;
+  cal["iterations"] = c.iterations;
+  folder.write_text("calibration.csv", pcsv.str());
+  return cal;
+}
+
+void print_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& c) {
+  fmt::print("\ncalibration ({} iterations): {} targets, {} independent, {} parameters{}; largest frequency error {:.3g} %; "
+             "dominant coordinates (predicted) {}\n",
+             c.iterations, request.targets.size(), c.independent_targets, c.fitted.size(),
+             c.underdetermined ? fmt::format(", UNDERDETERMINED (regularization weight {:g})", c.regularization) : "", 100 * c.max_relative_error,
+             c.labels_match ? "as the targets say" : "NOT all as the targets say");
+  for (std::size_t i = 0; i < c.fitted.size(); ++i)
+    fmt::print("  {:32s} x {:.4f}  (bounds x {:.4g} .. x {:.4g}){}\n", request.parameters[i], c.fitted[i] / c.initial[i], c.lower[i] / c.initial[i],
+               c.upper[i] / c.initial[i], c.at_bound[i] ? "  AT BOUND" : "");
+}
+
+}  // namespace framedyn::apps
