@@ -47,7 +47,7 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
   if (kind == "RequiredError") {
     // An unknown command is not an extra argument to CLI11 but a missing command.
     if (text == "A subcommand is required")
-      return located("", "a command: modes, static, run, frame-response or sweep (framedyn --help)",
+      return located("", "a command: modes, static, harmonic, random, run, frame-response or sweep (framedyn --help)",
                      first_argument.empty() || first_argument[0] == '-' ? std::string("none") : "'" + first_argument + "'");
     const std::size_t at = text.rfind(" is required");
     if (at != std::string::npos) {
@@ -58,7 +58,7 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
   // CLI11 names an extras error after the subcommand, not "ExtrasError": match the text.
   if (after(text, "The following argument was not expected: ", rest) || after(text, "The following arguments were not expected: ", rest))
     return located("", command ? fmt::format("the options of framedyn {} ({})", command->get_name(), help_of(command))
-                               : std::string("a command: modes, static, run, frame-response or sweep (framedyn --help)"),
+                               : std::string("a command: modes, static, harmonic, random, run, frame-response or sweep (framedyn --help)"),
                    "'" + rest + "'");
   if (kind == "ConversionError" && after(text, "Could not convert: ", rest)) {
     const std::size_t eq = rest.find(" = ");

@@ -127,6 +127,9 @@ void check_plot(const LinePlot& plot) {
     for (std::size_t i = 0; i < s.x.size(); ++i)
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
         throw InputError(where, "finite values in " + which, fmt::format("({}, {}) at point {}", s.x[i], s.y[i], i + 1));
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if ((plot.log_x && !(s.x[i] > 0.0)) || (plot.log_y && !(s.y[i] > 0.0)))
+        throw InputError(where, "positive values on a logarithmic axis in " + which, fmt::format("({}, {}) at point {}", s.x[i], s.y[i], i + 1));
   }
 }
 
@@ -151,6 +154,8 @@ std::string gnuplot_script(const LinePlot& plot, const fs::path& data_file, cons
   s += "set datafile separator ','\n";
   s += "set format y '%.6g'\n";
   s += "set format x '%.6g'\n";
+  if (plot.log_x) s += "set logscale x\nset mxtics 10\n";
+  if (plot.log_y) s += "set logscale y\nset format y '%.3g'\n";
   if (plot.mark_points) {
     // A little room so that the first and last markers are not cut by the border.
     s += "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";

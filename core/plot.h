@@ -25,6 +25,7 @@ struct LinePlot {
   std::string y_label, y_unit;
   std::vector<PlotSeries> series;
   bool mark_points = false;     // a marker at every value (sweeps with a few values)
+  bool log_x = false, log_y = false;  // logarithmic axes (spectra); their values must be positive
   int width = 1000, height = 620;  // pixels
 };
 
@@ -35,8 +36,8 @@ class PlotError : public std::runtime_error {
 };
 
 // Throws InputError (key: the plot's title) for a plot with no series, an
-// empty series, x and y of different lengths, a non-finite value, or a
-// size outside 100..10000 pixels.
+// empty series, x and y of different lengths, a non-finite value, a value
+// that is not positive on a logarithmic axis, or a size outside 100..10000 pixels.
 void check_plot(const LinePlot& plot);
 
 // The gnuplot script that draws `plot` from `data_file` (one block per

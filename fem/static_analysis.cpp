@@ -53,11 +53,13 @@ std::string describe_mechanism(const FrameModel& model, const DofMap& dofs, cons
 
 }  // namespace
 
+Eigen::VectorXd applied_loads(const FrameModel& model) { return applied_load_vector(model); }
+
 StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress) {
   const DofMap dofs = make_dof_map(model);
   const int ndof = model.dof_count();
   StaticResult r;
-  r.applied = applied_load_vector(model);  // nodal loads and the consistent loads of *DLOAD
+  r.applied = applied_loads(model);  // nodal loads and the consistent loads of *DLOAD
   Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
   for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
   fill_slave_dofs(dofs.links, prescribed);  // slaves of a supported reference node move with it

@@ -23,6 +23,13 @@ struct StaticResult {
   double relative_residual = 0.0;  // ||K_ff u_f - f_f|| / ||f_f||
 };
 
+// The applied load vector on all DOFs (N, N m): the model's nodal loads
+// (*CLOAD, GRAV on point masses) and the consistent nodal loads of the beams'
+// line loads (*DLOAD, fem/distributed_loads.h). The static solve and the frequency-domain analyses
+// (harmonic_response, random_response) take their loads from here, so a load
+// type added to the model reaches all of them.
+Eigen::VectorXd applied_loads(const FrameModel& model);
+
 StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace framedyn::fem

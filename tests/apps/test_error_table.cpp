@@ -523,6 +523,24 @@ std::vector<Row> rows() {
       {"CLI-19", {{"study.yaml", kStudy3D}}, sweep + "-p soil.damping --values 100", "", true},
       {"CLI-20", {{"study.yaml", edit(kStudy2D, "  response: {duration: 0.12, output_interval: 0.001, method: rk4, rk4_step: 0.0005}\n", "")}},
        sweep + "-p soil.damping --values 100", "study.yaml: analysis.response", true},
+      // ---- framedyn harmonic and framedyn random (apps/harmonic_command.cpp, apps/frequency_domain_input.cpp, fem/load_psd.cpp)
+      cli_row("CLI-21", "harmonic frame.inp -f 200:5:100 -z 0.02 --no-figures --out results", "command line: --frequencies"),
+      cli_row("CLI-22", "harmonic frame.inp -f 5-200 -z 0.02 --no-figures --out results", "command line: --frequencies"),
+      cli_row("CLI-23", "harmonic frame.inp -f 5:200:1 -z 0.02 --no-figures --out results", "command line: --frequencies"),
+      cli_row("CLI-24", "harmonic frame.inp -f 5:200:100 -z 1.5 --no-figures --out results", "command line: --damping-ratio"),
+      cli_row("CLI-25", "harmonic frame.inp -f 5:200:100 -z 0.02 --modes 12 --no-figures --out results", "command line: --modes"),
+      cli_row("CLI-26", "harmonic frame.inp -f 5:200:100 -z 0.02 --output-set TIP --no-figures --out results", "frame.inp: --output-set"),
+      {"CLI-27", {{"frame.inp", edit(kMesh, "*CLOAD\n3, 3, 1000.\n", "")}}, "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results",
+       "frame.inp: *CLOAD", true},
+      cli_row("CLI-28", "random frame.inp --psd nothere.csv -z 0.02 --no-figures --out results", "nothere.csv", false),
+      {"CLI-29", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n50;0.02\n500,0.01\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3", true},
+      {"CLI-30", {{"frame.inp", kMesh}, {"psd.csv", "frequency,psd\n5,0.01\n500,0.01\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:1: header", true},
+      {"CLI-31", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0.01\n50,0.02\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:4: frequency [Hz]", true},
+      {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

@@ -125,6 +125,19 @@ TEST(LinePlot, BadPlotsAreInputErrorsBeforeGnuplotRuns) {
   core::LinePlot tiny = sine_plot();
   tiny.width = 10;
   expect_error(tiny, "100 to 10000 pixels");
+  core::LinePlot log = sine_plot();  // a sine crosses zero: no logarithmic y axis for it
+  log.log_y = true;
+  expect_error(log, "positive values on a logarithmic axis in series 'horizontal_force'");
+}
+
+TEST(LinePlot, LogarithmicAxesForSpectra) {
+  core::LinePlot p = sine_plot();
+  EXPECT_EQ(core::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png").find("logscale"), std::string::npos);
+  p.log_x = true;
+  p.log_y = true;
+  const std::string s = core::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png");
+  EXPECT_NE(s.find("set logscale x"), std::string::npos) << s;
+  EXPECT_NE(s.find("set logscale y"), std::string::npos) << s;
 }
 
 TEST(LinePlot, MissingGnuplotIsAClearError) {

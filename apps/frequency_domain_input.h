@@ -1,0 +1,55 @@
+// What `framedyn harmonic` and `framedyn random` share: the mesh, its loads
+// as the load pattern, the modes, the damping ratio, the output set, and the
+// options that choose them. Thin: it reads, checks and calls fem/.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/mesh_input.h"
+#include "apps/progress.h"
+#include "fem/modal_analysis.h"
+#include "fem/modal_frequency_response.h"
+
+namespace framedyn::apps {
+
+struct FrequencyDomainOptions {
+  MeshInput mesh;
+  double damping_ratio = 0.0;
+  int modes = 0;               // 0: the mesh's *FREQUENCY count, else 20
+  std::string output_set;      // node set for the tables; empty: all nodes
+  bool static_correction = true;
+  bool figures = true;
+  std::string out;
+  ProgressFlags progress;
+  // Registers mesh, --damping-ratio, --modes, --output-set, --no-static-correction, --no-figures, --out, -v, -q.
+  void add_to(CLI::App& cmd, const std::string& default_out_suffix);
+  std::string out_dir() const;
+
+ private:
+  std::string suffix_;
+};
+
+// The frame, ready for a frequency-domain analysis.
+struct FrequencyDomainFrame {
+  std::unique_ptr<fem::FrameModel> model;       // owned here: frame keeps a reference to it
+  std::unique_ptr<fem::FrameDynamics> frame;
+  fem::ModalResult modes;
+  fem::ModalBasis basis;
+  Eigen::VectorXd load;                          // the load pattern on all DOFs (fem::applied_loads), SI
+  std::vector<int> output_nodes;                 // node indices of --output-set, or all nodes
+  fem::FrequencyResponseOptions response;
+};
+
+// Reads the mesh and solves for the modes. Throws InputError for a mesh
+// without loads (`analysis` names the command), an unknown --output-set or
+// more --modes than the frame has free DOFs.
+FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& options, const std::string& analysis, Progress& progress);
+
+// "node 12" style labels: the mesh's node number of a global DOF and its direction name.
+int node_id_of_dof(const fem::FrameModel& model, int global_dof);
+
+}  // namespace framedyn::apps
