@@ -26,11 +26,17 @@ struct FrameResponseOptions {
 };
 
 int run_frame_response(const FrameResponseOptions& opt) {
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
+  std::vector<std::filesystem::path> inputs = {opt.study};
+  if (!opt.loads.empty()) inputs.emplace_back(opt.loads);
+  core::check_results_target(out_dir, inputs);  // before the run: a refusal costs no time
   coupling::FrameStudyRequest q = coupling::read_frame_study(opt.study);
   if (!opt.loads.empty()) q.loads = std::filesystem::path(opt.loads);
+  inputs.push_back(q.mesh);
+  if (q.loads) inputs.push_back(*q.loads);
+  core::check_results_target(out_dir, inputs);
   const coupling::FrameStudyResults r = coupling::run_frame_study(q);
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, inputs);
   coupling::write_frame_outputs(r, q, folder);
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};

@@ -107,11 +107,12 @@ bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || n
 
 int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
   if (figures) require_gnuplot();
+  const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
+  core::check_results_target(out_dir, {study_file});  // before the run: a refusal costs no time
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(study_file);
   const core::UnitSystem& u = study.units;
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
-  const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {study_file});
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
 
   std::vector<std::string> figure_files;

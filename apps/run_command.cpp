@@ -42,14 +42,15 @@ int run_study(const RunOptions& opt) {
   if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
   Progress progress(opt.progress);
   if (opt.figures) require_gnuplot();
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
+  core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
   progress.stage(study.response ? "modes and forced response" : "modes");
   const coupling::RigidResults r = coupling::run_rigid_study(study);
 
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {opt.study});
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
