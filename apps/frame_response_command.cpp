@@ -42,7 +42,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
-  j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(r, q));
+  j["frame"] = coupling::frame_summary(r, q);
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
 

@@ -19,6 +19,7 @@
 
 #include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
+#include "apps/event_log.h"
 #include "core/results_folder.h"
 #include "apps/response_figures.h"
 #include "core/plot.h"
@@ -170,7 +171,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     }
     folder.write_text("response.csv", csv.str());
     core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(e.what);
+    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.frame_loads) {
@@ -201,7 +202,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   if (study.frame_response) {
     frame = coupling::run_frame_study(*study.frame_response, &r.frame_loads->points);
     coupling::write_frame_outputs(*frame, *study.frame_response, folder);
-    j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(*frame, *study.frame_response));
+    j["frame"] = coupling::frame_summary(*frame, *study.frame_response);
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");

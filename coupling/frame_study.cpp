@@ -39,14 +39,6 @@ std::string json_number(double v) {
   return v == 0.0 ? "0" : fmt::format("{:.10g}", v);
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // A load point must lie on the frame: inside the mesh's extent, widened on
 // every side by half its largest dimension (loads at the tire contacts, well
@@ -91,7 +83,7 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir) {
   f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "pvd",
-                "direct_substeps"});
+                "direct_substeps", "convert_units"});
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -110,7 +102,8 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   else if (supports == "free_free_inertia_relief") r.supports = FrameSupports::free_free_inertia_relief;
   else throw f.error("supports", "fixed_rear_end or free_free_inertia_relief", quoted(supports));
   r.support_set = f.text_or("support_set", "REAR_END");
-  for (const char* key : {"supports", "support_set", "modes", "loads"}) {
+  r.convert_units = f.boolean_or("convert_units", false);
+  for (const char* key : {"supports", "support_set", "modes", "loads", "mesh"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
     at.key = f.path() + "." + key;
@@ -198,6 +191,12 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   FrameStudyResults out;
   out.model = fem::read_inp(q.mesh);
   fem::FrameModel& model = out.model;
+  // A mesh in other units than the study is most often the wrong file (a
+  // metric copy of an inch frame): converted only when the study says so.
+  if (!q.convert_units && model.units.name() != q.units.name())
+    throw core::InputError(q.where("mesh"),
+                           fmt::format("a mesh in the study's units, {} (or frame.convert_units: true to convert it)", q.units.name()),
+                           fmt::format("{} in {} (its '** units:' line)", q.mesh.string(), model.units.name()));
   if (q.supports == FrameSupports::fixed_rear_end) {
     const auto set = model.node_sets.find(q.support_set);
     if (set == model.node_sets.end() || set->second.empty())
@@ -209,7 +208,13 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
                            fmt::format("{} constrained DOFs in {}", model.constraints.size(), q.mesh.string()));
   }
   if (given) out.loads = *given;
-  else if (q.loads) out.loads = read_load_history(*q.loads);
+  else if (q.loads) {
+    out.loads = read_load_history(*q.loads);
+    if (!q.convert_units && out.loads.units.name() != q.units.name())
+      throw core::InputError(q.where("loads"),
+                             fmt::format("a load history in the study's units, {} (or frame.convert_units: true to convert it)", q.units.name()),
+                             fmt::format("{} in {} (its '# units:' line)", q.loads->string(), out.loads.units.name()));
+  }
   else throw core::InputError(q.where("loads"), "a load-history file", "no 'loads' key and no loads from a rigid-body run");
   // Where the loads came from, for messages: the load-history file, or this study's own run.
   const std::string loads_file = !given && q.loads ? q.loads->string() : q.file;
@@ -371,70 +376,73 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   folder.write_text("frame_response.pvd", pvd);
 }
 
-std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) {
+nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStudyRequest& q) {
+  using nlohmann::ordered_json;
   const core::UnitSystem& u = q.units;
   using core::Quantity;
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
-  auto where = [&](const RailPeak& p, const std::string& rail) {
-    return fmt::format("\"rail\": {}, \"element\": {}, \"station\": {}, \"x\": {{\"value\": {}, \"unit\": {}}}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}",
-                       json_string(rail), p.element_id, p.station, json_number(p.point.x() * lf), json_string(u.label(Quantity::length)),
-                       json_number(p.time));
+  // Every number as {value, unit}; strings (paths, names) escaped by nlohmann.
+  auto quantity = [](double value, const std::string& unit) { return ordered_json{{"value", value}, {"unit", unit}}; };
+  auto peak = [&](const RailPeak& p, double value, Quantity q_value, const std::string& rail) {
+    ordered_json j = quantity(u.from_si(value, q_value), u.label(q_value));
+    j["rail"] = rail;
+    j["element"] = p.element_id;
+    j["station"] = p.station;
+    j["x"] = quantity(p.point.x() * lf, u.label(Quantity::length));
+    j["time"] = quantity(p.time, "s");
+    return j;
   };
-  std::string j = "{\n";
-  j += fmt::format("  \"model\": \"frame_transient\",\n  \"mesh\": {},\n  \"supports\": \"{}\",\n  \"method\": \"{}\",\n", json_string(q.mesh.string()),
-                   supports_name(q.supports), method_name(q.method));
+  ordered_json j;
+  j["model"] = "frame_transient";
+  j["mesh"] = q.mesh.string();
+  j["supports"] = supports_name(q.supports);
+  j["method"] = method_name(q.method);
   // No wall time here: the same study must give byte-identical files (the console prints it).
-  j += fmt::format("  \"nodes\": {},\n  \"elements\": {},\n  \"output_times\": {},\n", r.model.nodes.size(), r.model.beams.size(),
-                   r.response.times.size());
-  j += "  \"modes\": [";
+  j["nodes"] = r.model.nodes.size();
+  j["elements"] = r.model.beams.size();
+  j["output_times"] = r.response.times.size();
+  ordered_json modes = ordered_json::array();
   for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
     const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)
                                                              : q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i));
-    j += fmt::format("{}\n    {{\"mode\": {}, \"frequency_hz\": {}, \"damping_ratio\": {}}}", i ? "," : "", i + 1, json_number(r.frequencies_hz(i)),
-                     json_number(zeta));
+    modes.push_back({{"mode", i + 1}, {"frequency_hz", r.frequencies_hz(i)}, {"damping_ratio", zeta}});
   }
-  j += "\n  ],\n  \"load_points\": [";
-  for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
-    const MappedLoadPoint& mp = r.mapping.points[p];
-    std::string ids;
-    for (std::size_t k = 0; k < mp.nodes.size(); ++k) ids += (k ? ", " : "") + std::to_string(r.model.nodes[static_cast<std::size_t>(mp.nodes[k])].id);
-    j += fmt::format("{}\n    {{\"name\": {}, \"at_node\": {}, \"node_set\": {}, \"nodes\": [{}], \"spider_length\": {{\"value\": {}, \"unit\": {}}}}}", p ? "," : "",
-                     json_string(mp.name), mp.at_node ? "true" : "false", mp.from_node_set ? "true" : "false", ids, json_number(mp.spider_length * lf),
-                     json_string(u.label(Quantity::length)));
+  j["modes"] = modes;
+  ordered_json points = ordered_json::array();
+  for (const MappedLoadPoint& mp : r.mapping.points) {
+    std::vector<int> ids;
+    for (int n : mp.nodes) ids.push_back(r.model.nodes[static_cast<std::size_t>(n)].id);
+    points.push_back({{"name", mp.name},
+                      {"at_node", mp.at_node},
+                      {"node_set", mp.from_node_set},
+                      {"nodes", ids},
+                      {"spider_length", quantity(mp.spider_length * lf, u.label(Quantity::length))}});
   }
-  j += "\n  ],\n  \"peak_bending_moment\": {";
+  j["load_points"] = points;
+  ordered_json moments = ordered_json::object(), components = ordered_json::object();
   const RailRecovery* worst = nullptr;
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
-    const RailRecovery& rail = r.rails[k];
-    j += fmt::format("{}\n    {}: {{\"value\": {}, \"unit\": {}, {}}}", k ? "," : "", json_string(rail.spec.name),
-                     json_number(u.from_si(rail.peak_bending_moment.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
-                     where(rail.peak_bending_moment, rail.spec.name));
+  for (const RailRecovery& rail : r.rails) {
+    moments[rail.spec.name] = peak(rail.peak_bending_moment, rail.peak_bending_moment.value, Quantity::moment, rail.spec.name);
+    components[rail.spec.name] = {{"mz", peak(rail.peak_mz, rail.peak_mz.value, Quantity::moment, rail.spec.name)},
+                                  {"my", peak(rail.peak_my, rail.peak_my.value, Quantity::moment, rail.spec.name)}};
     if (!worst || std::abs(rail.peak_normal_stress.value) > std::abs(worst->peak_normal_stress.value)) worst = &rail;
   }
-  j += "\n  },\n  \"peak_bending_moment_components\": {";
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
-    const RailRecovery& rail = r.rails[k];
-    j += fmt::format("{}\n    {}: {{\"mz\": {{\"value\": {}, \"unit\": {}, {}}}, \"my\": {{\"value\": {}, \"unit\": {}, {}}}}}", k ? "," : "",
-                     json_string(rail.spec.name), json_number(u.from_si(rail.peak_mz.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
-                     where(rail.peak_mz, rail.spec.name), json_number(u.from_si(rail.peak_my.value, Quantity::moment)),
-                     json_string(u.label(Quantity::moment)), where(rail.peak_my, rail.spec.name));
-  }
-  j += "\n  }";
+  j["peak_bending_moment"] = moments;
+  j["peak_bending_moment_components"] = components;
   if (worst) {
-    j += fmt::format(",\n  \"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}, \"fiber\": {}, \"bending_share\": {}}}",
-                     json_number(u.from_si(worst->peak_normal_stress.value, Quantity::stress)), json_string(u.label(Quantity::stress)),
-                     where(worst->peak_normal_stress, worst->spec.name), worst->peak_normal_stress.fiber, json_number(worst->bending_share));
-    j += ",\n  \"rails\": {";
-    for (std::size_t k = 0; k < r.rails.size(); ++k) {
-      const RailRecovery& rail = r.rails[k];
-      j += fmt::format("{}\n    {}: {{\"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}}}, \"bending_share\": {}}}", k ? "," : "",
-                       json_string(rail.spec.name), json_number(u.from_si(rail.peak_normal_stress.value, Quantity::stress)),
-                       json_string(u.label(Quantity::stress)), where(rail.peak_normal_stress, rail.spec.name), json_number(rail.bending_share));
-    }
-    j += "\n  }";
+    ordered_json stress = peak(worst->peak_normal_stress, worst->peak_normal_stress.value, Quantity::stress, worst->spec.name);
+    stress["fiber"] = worst->peak_normal_stress.fiber;
+    stress["bending_share"] = worst->bending_share;
+    j["peak_normal_stress"] = stress;
+    ordered_json rails = ordered_json::object();
+    for (const RailRecovery& rail : r.rails)
+      rails[rail.spec.name] = {{"peak_normal_stress", peak(rail.peak_normal_stress, rail.peak_normal_stress.value, Quantity::stress, rail.spec.name)},
+                               {"bending_share", rail.bending_share}};
+    j["rails"] = rails;
   }
-  j += "\n}";
   return j;
 }
+
+std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) { return frame_summary(r, q).dump(2); }
 
 }  // namespace framedyn::coupling

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/results_folder.h"
+#include <nlohmann/json.hpp>
 #include "core/units.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
@@ -60,6 +61,7 @@ struct FrameStudyRequest {
   int stations = 5;
   bool pvd = false;
   int direct_substeps = 4;                   // Newmark steps per load-history interval
+  bool convert_units = false;                // mesh or load history in other units than the study: convert (else refuse)
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
   // Where the keys checked only once the mesh and loads are read (supports,
   // support_set, modes, loads) were given, so those messages name a line:
@@ -96,6 +98,7 @@ void write_frame_outputs(const FrameStudyResults& results, const FrameStudyReque
 // The summary's "frame" object as JSON text: modes[i].frequency_hz,
 // peak_bending_moment.left_rail / .right_rail, peak_normal_stress (value + unit,
 // where and when), bending_share.
-std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);
+nlohmann::ordered_json frame_summary(const FrameStudyResults& results, const FrameStudyRequest& request);
+std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);  // frame_summary(...).dump(2)
 
 }  // namespace framedyn::coupling
