@@ -394,9 +394,9 @@ std::vector<Row> rows() {
       study_row("STUDY-65", "  position: [0, 0, -14]\n  radii_of_gyration: [22, 10, 22]", "  position: [0, 0, 0]\n  radii_of_gyration: [0, 10, 22]",
                 "  weight: 650", "front_axle", kStudy3D),
       frame_row("STUDY-66", "damping: {modal_ratio: 0.02}", "damping: {modal_ratio: 0.02, rayleigh: {alpha: 1, beta: 0}}", "damping:", "frame.damping"),
-      study_row("STUDY-67", "  radius_of_gyration: 16\n  position: [36, 32]", "  radius_of_gyration: 16\n  position: [36, 32]\n  radius_of_gyration: 18",
+      study_row("STUDY-81", "  radius_of_gyration: 16\n  position: [36, 32]", "  radius_of_gyration: 16\n  position: [36, 32]\n  radius_of_gyration: 18",
                 "radius_of_gyration: 18", "cab.radius_of_gyration"),
-      frame_row("STUDY-68", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
+      frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

@@ -222,7 +222,7 @@ TEST_F(InterruptCampaign, ThirtyTwoInterruptsLeaveEarlierResultsOrCompleteNewOne
         while ((status = poll_exit(pid)) == -1000) std::this_thread::sleep_for(1ms);
         break;
       }
-      if (trigger.kind != Trigger::figure) std::this_thread::sleep_for(1ms);
+      std::this_thread::sleep_for(trigger.kind == Trigger::figure ? 200us : 1ms);
     }
     const std::string err = read_text(dir_ / "stderr.txt");
     if (status == 0) {
