@@ -29,17 +29,23 @@ struct FrameResponseOptions {
 };
 
 int run_frame_response(const FrameResponseOptions& opt) {
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
+  std::vector<std::filesystem::path> inputs = {opt.study};
+  if (!opt.loads.empty()) inputs.emplace_back(opt.loads);
+  core::check_results_target(out_dir, inputs);  // before the run: a refusal costs no time
   coupling::FrameStudyRequest q = coupling::read_frame_study(opt.study);
   if (!opt.loads.empty()) q.loads = std::filesystem::path(opt.loads);
+  inputs.push_back(q.mesh);
+  if (q.loads) inputs.push_back(*q.loads);
+  core::check_results_target(out_dir, inputs);
   const coupling::FrameStudyResults r = coupling::run_frame_study(q);
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, inputs);
   coupling::write_frame_outputs(r, q, folder);
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
-  j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(r, q));
+  j["frame"] = coupling::frame_summary(r, q);
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
 

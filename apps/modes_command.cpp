@@ -34,6 +34,8 @@ struct ModesOptions {
 
 int run_modes(const ModesOptions& opt) {
   Progress progress(opt.progress);
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_modes" : opt.out;
+  core::check_results_target(out_dir, {opt.mesh.path});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
@@ -46,8 +48,7 @@ int run_modes(const ModesOptions& opt) {
   const fem::ModalResult r = fem::compute_modes(model, mo);
 
   progress.stage("writing results");
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_modes" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
   const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
   const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);

@@ -20,6 +20,7 @@
 #include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
+#include "apps/event_log.h"
 #include "core/results_folder.h"
 #include "apps/response_figures.h"
 #include "core/plot.h"
@@ -108,11 +109,12 @@ bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || n
 
 int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
   if (figures) require_gnuplot();
+  const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
+  core::check_results_target(out_dir, {study_file});  // before the run: a refusal costs no time
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(study_file);
   const core::UnitSystem& u = study.units;
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
-  const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {study_file});
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
 
   std::vector<std::string> figure_files;
@@ -156,7 +158,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     }
     folder.write_text("response.csv", csv.str());
     core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(e.what);
+    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.frame_loads) {
@@ -187,7 +189,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   if (study.frame_response) {
     frame = coupling::run_frame_study(*study.frame_response, &r.frame_loads->points);
     coupling::write_frame_outputs(*frame, *study.frame_response, folder);
-    j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(*frame, *study.frame_response));
+    j["frame"] = coupling::frame_summary(*frame, *study.frame_response);
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");

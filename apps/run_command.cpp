@@ -14,6 +14,7 @@
 #include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
 #include "core/csv_writer.h"
+#include "apps/event_log.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -43,14 +44,15 @@ int run_study(const RunOptions& opt) {
   if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
   Progress progress(opt.progress);
   if (opt.figures) require_gnuplot();
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
+  core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
   progress.stage(study.response ? "modes and forced response" : "modes");
   const coupling::RigidResults r = coupling::run_rigid_study(study);
 
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {opt.study});
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
@@ -96,7 +98,7 @@ int run_study(const RunOptions& opt) {
     }
     folder.write_text("response.csv", csv.str());
     core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(e.what);
+    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.resultants) {
@@ -129,8 +131,13 @@ int run_study(const RunOptions& opt) {
             ps_time = tr.time[i];
           }
         }
-        nlohmann::ordered_json jp = {{"x", sr.output_x[k] * lf}, {"peak_srx", px * ff}, {"peak_srz", pz * ff}, {"peak_srmy", pm * mf}};
-        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"time_s", ps_time}};
+        // Each number with its unit ({value, unit}), as in the rest of the summary.
+        const std::string S = u.label(Quantity::stress);
+        nlohmann::ordered_json jp = {{"x", {{"value", sr.output_x[k] * lf}, {"unit", L}}},
+                                     {"peak_srx", {{"value", px * ff}, {"unit", F}}},
+                                     {"peak_srz", {{"value", pz * ff}, {"unit", F}}},
+                                     {"peak_srmy", {{"value", pm * mf}, {"unit", M}}}};
+        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"unit", S}, {"time_s", ps_time}};
         points.push_back(jp);
       }
       for (std::size_t i = 0; i < tr.time.size(); ++i)

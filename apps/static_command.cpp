@@ -33,6 +33,8 @@ struct StaticOptions {
 
 int run_static(const StaticOptions& opt) {
   Progress progress(opt.progress);
+  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_static" : opt.out;
+  core::check_results_target(out_dir, {opt.mesh.path});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
@@ -46,8 +48,7 @@ int run_static(const StaticOptions& opt) {
   const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
   const std::string L = u.label(Quantity::length), F = u.label(Quantity::force), M = u.label(Quantity::moment), S = u.label(Quantity::stress);
 
-  const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_static" : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
   core::CsvTable disp({"node", core::column("ux", L), core::column("uy", L), core::column("uz", L), "rx [rad]", "ry [rad]", "rz [rad]"});
   double max_disp = 0.0;

@@ -141,6 +141,9 @@ int run_sweep(const SweepOptions& opt) {
     throw core::PlotError("framedyn sweep draws figures with gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run; "
                           "install it or give --no-figures");
   if (opt.jobs < 1) throw core::InputError(command_line("--jobs"), "at least 1 run at a time", fmt::format("{}", opt.jobs));
+  const std::string out_dir =
+      opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_sweep_" + opt.parameter : opt.out;
+  core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.study);
   const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
   const core::UnitSystem& u = study.units;
@@ -156,9 +159,7 @@ int run_sweep(const SweepOptions& opt) {
   for (double v : opt.values) values_si.push_back(u.to_si(v, q));
   const coupling::SweepResult s = coupling::run_parameter_sweep(study, opt.parameter, values_si, opt.jobs, progress.callback());
 
-  const std::string out_dir =
-      opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_sweep_" + opt.parameter : opt.out;
-  core::ResultsFolder folder(out_dir);
+  core::ResultsFolder folder(out_dir, {opt.study});
   const std::string unit = u.label(q);
   // The values as given on the command line (the study's units), for the CSV, JSON and figures.
   const std::vector<double>& x = opt.values;

@@ -19,6 +19,7 @@
 
 #include "core/csv_writer.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 
 extern char** environ;
 
@@ -45,22 +46,29 @@ std::string quoted(const std::string& s) {
 
 std::string axis_title(const std::string& label, const std::string& unit) { return column(label, unit); }
 
-// A private temporary folder, removed with the object.
+// A private temporary folder, removed with the object, or by the interrupt
+// clean-up (core/interrupt.h) if a signal comes first.
 class ScratchDir {
  public:
   ScratchDir() {
     static std::atomic<unsigned> counter{0};
     const fs::path base = fs::temp_directory_path();
+    auto gate = hold_output_gate();
     for (int attempt = 0; attempt < 1000; ++attempt) {
       path_ = base / fmt::format("framedyn_plot_{}_{}", ::getpid(), counter++);
       std::error_code ec;
-      if (fs::create_directory(path_, ec)) return;
+      if (fs::create_directory(path_, ec)) {
+        register_temporary(path_);
+        return;
+      }
     }
     throw PlotError("cannot create a temporary folder for the plot in " + base.string());
   }
   ~ScratchDir() {
+    auto gate = hold_output_gate();
     std::error_code ec;
     fs::remove_all(path_, ec);
+    unregister_temporary(path_);
   }
   ScratchDir(const ScratchDir&) = delete;
   ScratchDir& operator=(const ScratchDir&) = delete;
@@ -93,15 +101,31 @@ int run_program(const std::string& program, const std::vector<std::string>& args
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
+  int rc = 0;
+  {
+    // Started and registered in one hold of the gate: an interrupt either
+    // comes before (no child) or finds the child registered and kills it.
+    auto gate = hold_output_gate();
+    rc = posix_spawnp(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
+    if (rc == 0) register_child(pid);
+  }
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   if (rc != 0)
     throw PlotError(fmt::format("cannot run '{}' to draw figures: {} (install gnuplot, Debian package gnuplot-nox: ./install-deps.sh)", program,
                                 std::strerror(rc)));
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
+  // Wait for the end without reaping (WNOWAIT), then reap and unregister in
+  // one hold of the gate, so that the clean-up never signals a reaped pid.
+  siginfo_t info{};
+  while (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) < 0)
     if (errno != EINTR) throw PlotError(fmt::format("waiting for '{}': {}", program, std::strerror(errno)));
+  int status = 0;
+  {
+    auto gate = hold_output_gate();
+    while (::waitpid(pid, &status, 0) < 0)
+      if (errno != EINTR) throw PlotError(fmt::format("waiting for '{}': {}", program, std::strerror(errno)));
+    unregister_child(pid);
+  }
   if (!WIFEXITED(status)) throw PlotError(fmt::format("'{}' was stopped by signal {}", program, WIFSIGNALED(status) ? WTERMSIG(status) : 0));
   return WEXITSTATUS(status);
 }
@@ -182,6 +206,7 @@ void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnu
   check_plot(plot);
   ScratchDir scratch;
   const fs::path data = scratch.path() / "plot.csv", script = scratch.path() / "plot.gp", log = scratch.path() / "gnuplot.log";
+  auto gate = hold_output_gate();  // for the files below; released before gnuplot runs
   {
     // One block per series (gnuplot's "index"), blocks apart by two blank lines.
     std::ofstream out(data, std::ios::binary);
@@ -201,6 +226,7 @@ void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnu
   }
   std::error_code ec;
   fs::remove(png, ec);
+  gate.unlock();
   const int status = run_program(gnuplot, {script.string()}, log);
   std::string message = read_text(log);
   while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();

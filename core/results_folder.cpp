@@ -1,19 +1,20 @@
-// Whole-or-absent results folders: write beside the target, rename into place.
+// Whole-or-absent results folders that replace only what framedyn wrote:
+// write beside the target, list the files in a manifest, rename into place,
+// then delete the old folder's listed files (and the folder once empty).
 #include "core/results_folder.h"
 
-#include <pthread.h>
-#include <signal.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <system_error>
-#include <thread>
 
+#include "core/error.h"
 #include "core/finite_output.h"
 
 namespace framedyn::core {
@@ -22,74 +23,142 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The partial folders of this process, for the interrupt clean-up.
-std::mutex& registry_mutex() {
-  static std::mutex m;
-  return m;
-}
-std::set<fs::path>& partial_folders() {
-  static std::set<fs::path> folders;
-  return folders;
+constexpr const char* kManifestHeader = "# framedyn results manifest 1: the files framedyn wrote here; it replaces this folder only while it holds nothing else";
+
+const InputLocation kOut{"command line", 0, "--out"};
+
+std::string display(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// The files a manifest lists (relative paths), or false if `folder` has none
+// (no file, or not a framedyn manifest).
+bool read_manifest(const fs::path& folder, std::set<std::string>& files) {
+  std::ifstream in(folder / kManifestName, std::ios::binary);
+  if (!in) return false;
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("# framedyn results manifest", 0) != 0) return false;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') files.insert(line);
+  return true;
 }
 
-const char* signal_name(int signal_number) {
-  switch (signal_number) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    case SIGHUP: return "SIGHUP";
-    default: return "a signal";
+// Every entry under `folder` that is not a listed file or a folder on the way
+// to one, as relative paths (at most `limit`).
+std::vector<std::string> unlisted_entries(const fs::path& folder, const std::set<std::string>& listed, std::size_t limit) {
+  std::set<std::string> listed_dirs;
+  for (const std::string& f : listed)
+    for (fs::path d = fs::path(f).parent_path(); !d.empty(); d = d.parent_path()) listed_dirs.insert(d.generic_string());
+  std::vector<std::string> extra;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string rel = fs::relative(it->path(), folder, ec).generic_string();
+    if (rel == kManifestName) continue;
+    const bool is_dir = it->is_directory(ec) && !it->is_symlink(ec);
+    if (is_dir ? listed_dirs.count(rel) != 0 : listed.count(rel) != 0) continue;
+    extra.push_back(rel + (is_dir ? "/" : ""));
+    if (is_dir) it.disable_recursion_pending();
+    if (extra.size() >= limit) break;
   }
+  if (ec) extra.push_back("(cannot list the folder: " + ec.message() + ")");
+  return extra;
+}
+
+// True if `inner` is `outer` or lies inside it (both made absolute, with
+// symbolic links and "..", resolved as far as they exist).
+bool is_within(const fs::path& inner, const fs::path& outer) {
+  std::error_code ec;
+  const fs::path a = fs::weakly_canonical(fs::absolute(inner), ec), b = fs::weakly_canonical(fs::absolute(outer), ec);
+  auto ia = a.begin(), ib = b.begin();
+  for (; ib != b.end(); ++ia, ++ib) {
+    if (ib->empty() && std::next(ib) == b.end()) return true;  // trailing "/"
+    if (ia == a.end() || *ia != *ib) return false;
+  }
+  return true;
+}
+
+fs::path normalised(fs::path target) {
+  if (target.filename().empty() && target.has_parent_path() && target != target.root_path()) target = target.parent_path();  // "out/" -> "out"
+  return target;
+}
+
+// Deletes the files a manifest listed, the manifest, then each folder once
+// empty (deepest first). Returns false if anything is left.
+bool remove_listed(const fs::path& folder, const std::set<std::string>& listed) {
+  std::error_code ec;
+  std::set<fs::path> dirs;
+  for (const std::string& f : listed) {
+    fs::remove(folder / f, ec);
+    for (fs::path d = fs::path(f).parent_path(); !d.empty(); d = d.parent_path()) dirs.insert(d);
+  }
+  fs::remove(folder / kManifestName, ec);
+  std::vector<fs::path> ordered(dirs.begin(), dirs.end());
+  std::sort(ordered.begin(), ordered.end(), [](const fs::path& a, const fs::path& b) { return a.string().size() > b.string().size(); });
+  for (const fs::path& d : ordered) fs::remove(folder / d, ec);  // removes only an empty folder
+  return fs::remove(folder, ec);
 }
 
 }  // namespace
 
-void install_interrupt_cleanup() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    sigset_t signals;
-    sigemptyset(&signals);
-    sigaddset(&signals, SIGINT);
-    sigaddset(&signals, SIGTERM);
-    sigaddset(&signals, SIGHUP);
-    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-    std::thread([signals] {
-      int signal_number = 0;
-      if (sigwait(&signals, &signal_number) != 0) return;
-      std::lock_guard<std::mutex> lock(registry_mutex());  // lets a commit in progress finish
-      for (const fs::path& folder : partial_folders()) {
-        std::error_code ec;
-        fs::remove_all(folder, ec);
-      }
-      std::fprintf(stderr, "framedyn: interrupted by %s; no results written (earlier results left as they were)\n",
-                   signal_name(signal_number));
-      std::fflush(stderr);
-      std::_Exit(128 + signal_number);
-    }).detach();
-  });
+void check_results_target(const fs::path& raw_target, const std::vector<fs::path>& inputs) {
+  const fs::path target = normalised(raw_target);
+  const std::string how = "; choose a new --out (a folder that does not exist yet)";
+  if (target.empty()) throw InputError(kOut, "a folder for the results", "an empty path");
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  if (!ec && is_within(cwd, target))
+    throw InputError(kOut, "a results folder framedyn may replace",
+                     display(raw_target) + ", the working directory" + (fs::equivalent(cwd, target, ec) ? "" : std::string(" or a folder above it")) +
+                         " (framedyn never replaces it)" + how);
+  for (const fs::path& input : inputs)
+    if (!input.empty() && is_within(input, target))
+      throw InputError(kOut, "a results folder framedyn may replace",
+                       display(raw_target) + ", the folder holding the input file " + display(input) + " (framedyn never replaces it)" + how);
+  const fs::file_status status = fs::symlink_status(target, ec);
+  if (!fs::exists(status)) return;  // a new folder
+  if (fs::is_symlink(status))
+    throw InputError(kOut, "a results folder framedyn may replace", display(raw_target) + ", a symbolic link (framedyn replaces only a folder it wrote)" + how);
+  if (!fs::is_directory(status))
+    throw InputError(kOut, "a results folder framedyn may replace",
+                     display(raw_target) + ", a file that is not a folder (framedyn replaces only a folder it wrote)" + how);
+  std::set<std::string> listed;
+  if (!read_manifest(target, listed)) {
+    if (fs::is_empty(target, ec) && !ec) return;  // an empty folder: replacing it loses nothing
+    throw InputError(kOut, "a results folder framedyn may replace",
+                     display(raw_target) + fmt::format(", a folder framedyn did not write (it has no {} listing framedyn's files)", kManifestName) + how +
+                         ", or move that folder away");
+  }
+  const std::vector<std::string> extra = unlisted_entries(target, listed, 6);
+  if (!extra.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < extra.size() && i < 5; ++i) names += (i ? ", " : "") + extra[i];
+    if (extra.size() > 5) names += ", ...";
+    throw InputError(kOut, "a results folder framedyn may replace",
+                     display(raw_target) + ", earlier framedyn results with files framedyn did not write (" + names + ")" + how +
+                         ", or move those files out");
+  }
 }
 
-ResultsFolder::ResultsFolder(fs::path target) : target_(std::move(target)) {
-  if (target_.empty()) throw std::runtime_error("results folder: empty path");
-  if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" -> "out"
-  partial_ = target_;
-  partial_ += ".partial-" + std::to_string(::getpid());
+ResultsFolder::ResultsFolder(fs::path target, std::vector<fs::path> inputs) : target_(normalised(std::move(target))), inputs_(std::move(inputs)) {
+  check_results_target(target_, inputs_);
   std::error_code ec;
-  fs::remove_all(partial_, ec);
-  {
-    std::lock_guard<std::mutex> lock(registry_mutex());
-    partial_folders().insert(partial_);
+  if (target_.has_parent_path()) fs::create_directories(target_.parent_path(), ec);
+  auto gate = hold_output_gate();
+  // A fresh name: never reuse (or delete) a folder that is already there.
+  for (int attempt = 0;; ++attempt) {
+    partial_ = target_;
+    partial_ += ".partial-" + std::to_string(::getpid()) + (attempt ? "-" + std::to_string(attempt) : std::string());
+    if (fs::create_directory(partial_, ec)) break;
+    if (ec || attempt >= 1000) throw std::runtime_error("cannot create results folder " + partial_.string() + ": " + (ec ? ec.message() : "name taken"));
   }
-  fs::create_directories(partial_, ec);
-  if (ec) throw std::runtime_error("cannot create results folder " + partial_.string() + ": " + ec.message());
+  register_temporary(partial_);
 }
 
 ResultsFolder::~ResultsFolder() {
-  std::lock_guard<std::mutex> lock(registry_mutex());
+  auto gate = hold_output_gate();
   if (!committed_) {
     std::error_code ec;
     fs::remove_all(partial_, ec);
   }
-  partial_folders().erase(partial_);
+  unregister_temporary(partial_);
 }
 
 fs::path ResultsFolder::path_of(const std::string& file_name) const { return partial_ / file_name; }
@@ -97,6 +166,7 @@ fs::path ResultsFolder::path_of(const std::string& file_name) const { return par
 void ResultsFolder::write_text(const std::string& file_name, const std::string& content) const {
   check_finite_output((target_ / file_name).string(), content);  // no NaN or Inf in any results file
   const fs::path p = path_of(file_name);
+  auto gate = hold_output_gate();
   std::ofstream out(p, std::ios::binary);
   out << content;
   out.close();
@@ -104,24 +174,45 @@ void ResultsFolder::write_text(const std::string& file_name, const std::string& 
 }
 
 void ResultsFolder::commit() {
-  std::lock_guard<std::mutex> lock(registry_mutex());
+  auto gate = hold_output_gate();  // an interrupt waits until the results are in place and the old ones gone
+  check_results_target(target_, inputs_);
   std::error_code ec;
+  {
+    std::vector<std::string> files;
+    for (auto it = fs::recursive_directory_iterator(partial_, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+      if (!it->is_directory()) files.push_back(fs::relative(it->path(), partial_).generic_string());
+    if (ec) throw std::runtime_error("cannot list results folder " + partial_.string() + ": " + ec.message());
+    std::sort(files.begin(), files.end());
+    std::ofstream out(partial_ / kManifestName, std::ios::binary);
+    out << kManifestHeader << "\n";
+    for (const std::string& f : files) out << f << "\n";
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + (partial_ / kManifestName).string());
+  }
+  std::set<std::string> old_files;
   fs::path old;
-  if (fs::exists(target_, ec)) {
-    old = target_;
-    old += ".old-" + std::to_string(::getpid());
-    fs::remove_all(old, ec);
+  if (fs::exists(fs::symlink_status(target_, ec))) {
+    read_manifest(target_, old_files);  // none: an empty folder (check_results_target)
+    for (int attempt = 0;; ++attempt) {
+      old = target_;
+      old += ".old-" + std::to_string(::getpid()) + (attempt ? "-" + std::to_string(attempt) : std::string());
+      if (!fs::exists(fs::symlink_status(old, ec))) break;
+      if (attempt >= 1000) throw std::runtime_error("cannot find a free name to move old results " + target_.string() + " aside");
+    }
     fs::rename(target_, old, ec);
     if (ec) throw std::runtime_error("cannot move old results " + target_.string() + " aside: " + ec.message());
   }
   fs::rename(partial_, target_, ec);
   if (ec) {
+    const std::string why = ec.message();
     if (!old.empty()) fs::rename(old, target_, ec);
-    throw std::runtime_error("cannot move results into " + target_.string() + ": " + ec.message());
+    throw std::runtime_error("cannot move results into " + target_.string() + ": " + why);
   }
   committed_ = true;
-  partial_folders().erase(partial_);
-  if (!old.empty()) fs::remove_all(old, ec);
+  unregister_temporary(partial_);
+  note_results_written(target_);
+  if (!old.empty() && !remove_listed(old, old_files))
+    std::fprintf(stderr, "framedyn: warning: the earlier results were moved to %s and not all of it could be deleted\n", old.string().c_str());
 }
 
 }  // namespace framedyn::core

@@ -1,40 +1,57 @@
-// A results folder that is whole or absent. Files are written into a sibling
-// folder "<target>.partial-<pid>"; commit() moves it into place in one rename,
-// so a run that stops half-way (an error, an exception, Ctrl-C or SIGTERM)
+// A results folder that is whole or absent, and that never costs the user a
+// file. Files are written into a sibling folder "<target>.partial-<pid>";
+// commit() writes the manifest (kManifestName: the list of the files of the
+// run) and moves the folder into place in one rename, so a run that stops
+// half-way (an error, an exception, Ctrl-C or SIGTERM: core/interrupt.h)
 // leaves any previous results untouched and no partial folder behind.
+//
+// framedyn replaces only what it made: a target that does not exist, an empty
+// folder, or a folder whose manifest lists every file in it. Anything else at
+// the path (a file, a folder of the user's, a results folder the user added
+// files to, the working directory or a folder above it, a folder holding an
+// input of the run) is refused with an InputError on the key --out. The old
+// results go only after the new ones are in place, file by listed file.
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "core/interrupt.h"
 
 namespace framedyn::core {
 
-// Makes SIGINT, SIGTERM and SIGHUP remove every results folder still being
-// written, print one line, and exit with status 128 + signal. Call it first in
-// main, before any thread starts: it blocks those signals in the calling
-// thread (threads started later inherit that) and waits for them in a thread
-// of its own, so the clean-up runs as ordinary code, not in a signal handler,
-// and never races a commit (both hold one lock).
-void install_interrupt_cleanup();
+// The manifest framedyn writes into every results folder.
+inline constexpr const char* kManifestName = ".framedyn-manifest";
+
+// Throws InputError (command line: --out: ...) if framedyn may not replace
+// `target`; `inputs` are the files the run reads. Commands call it before
+// computing, so that a refusal costs no run time; ResultsFolder calls it again.
+void check_results_target(const std::filesystem::path& target, const std::vector<std::filesystem::path>& inputs = {});
 
 class ResultsFolder {
  public:
-  explicit ResultsFolder(std::filesystem::path target);
+  explicit ResultsFolder(std::filesystem::path target, std::vector<std::filesystem::path> inputs = {});
   ~ResultsFolder();  // removes the partial folder unless committed
   ResultsFolder(const ResultsFolder&) = delete;
   ResultsFolder& operator=(const ResultsFolder&) = delete;
 
-  // Path of a file inside the (still partial) folder, for writers that open files themselves.
+  // Path of a file inside the (still partial) folder, for writers that open
+  // files themselves: they must hold the output gate while they create it
+  // (core::write_png does; its gnuplot child is registered for the clean-up).
   std::filesystem::path path_of(const std::string& file_name) const;
   // Throws NumericalError, writing nothing, if the content holds a NaN or an
   // infinity (check_finite_output, core/finite_output.h).
   void write_text(const std::string& file_name, const std::string& content) const;
-  // Replace the target by the partial folder. Throws std::runtime_error on failure.
+  // Replace the target by the partial folder. Throws InputError if the target
+  // changed into something framedyn may not replace since the run began,
+  // std::runtime_error on a failed rename (the old results then stay).
   void commit();
   const std::filesystem::path& target() const { return target_; }
 
  private:
   std::filesystem::path target_;
+  std::vector<std::filesystem::path> inputs_;
   std::filesystem::path partial_;
   bool committed_ = false;
 };

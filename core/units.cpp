@@ -1,6 +1,8 @@
 // Conversion factors between the supported unit systems and SI.
 #include "core/units.h"
 
+#include <cctype>
+
 #include <stdexcept>
 
 namespace framedyn::core {
@@ -12,7 +14,11 @@ constexpr double kPoundForce = 4.4482216152605;  // N, exact by definition of lb
 
 std::vector<std::string> UnitSystem::known_names() { return {"in-lbf-s", "m-N-s", "SI", "mm-N-s"}; }
 
-UnitSystem UnitSystem::from_name(const std::string& name) {
+UnitSystem UnitSystem::from_name(const std::string& given) {
+  // Any letter case ("IN-LBF-S", "si"): the three names differ in more than
+  // case, so no name can be taken for another.
+  std::string name = given;
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   UnitSystem u;
   if (name == "in-lbf-s") {
     u.name_ = name;
@@ -22,21 +28,21 @@ UnitSystem UnitSystem::from_name(const std::string& name) {
     u.force_label_ = "lbf";
     u.mass_label_ = "lbf*s^2/in";
     u.stress_label_ = "psi";
-  } else if (name == "m-N-s" || name == "SI") {
+  } else if (name == "m-n-s" || name == "si") {
     u.name_ = "m-N-s";
     u.length_label_ = "m";
     u.force_label_ = "N";
     u.mass_label_ = "kg";
     u.stress_label_ = "Pa";
-  } else if (name == "mm-N-s") {
-    u.name_ = name;
+  } else if (name == "mm-n-s") {
+    u.name_ = "mm-N-s";
     u.length_ = 1e-3;
     u.length_label_ = "mm";
     u.force_label_ = "N";
     u.mass_label_ = "t";
     u.stress_label_ = "MPa";
   } else {
-    throw std::invalid_argument("unknown unit system '" + name + "' (known: in-lbf-s, m-N-s or SI, mm-N-s)");
+    throw std::invalid_argument("unknown unit system '" + given + "' (known: in-lbf-s, m-N-s or SI, mm-N-s)");
   }
   return u;
 }

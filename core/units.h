@@ -34,7 +34,7 @@ enum class Quantity {
 
 class UnitSystem {
  public:
-  // Known names: "in-lbf-s", "m-N-s" (alias "SI"), "mm-N-s" (mass in tonne).
+  // Known names: "in-lbf-s", "m-N-s" (alias "SI"), "mm-N-s" (mass in tonne), in any letter case.
   static UnitSystem from_name(const std::string& name);  // throws std::invalid_argument
   static std::vector<std::string> known_names();
   static UnitSystem si() { return from_name("m-N-s"); }

@@ -67,14 +67,6 @@ std::string json_number(double v) {
   return v == 0.0 ? "0" : fmt::format("{:.10g}", v);
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // A load point must lie on the frame: inside the mesh's extent, widened on
 // every side by half its largest dimension (loads at the tire contacts, well
@@ -119,7 +111,7 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir, FrameDefaults defaults) {
   f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                "direct_substeps"});
+                "direct_substeps", "convert_units"});
   const bool pipeline = defaults == FrameDefaults::pipeline;
   FrameStudyRequest r;
   r.file = f.file();
@@ -183,7 +175,8 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
       r.key_locations["outputs." + rail.name] = at;
     }
   }
-  for (const char* key : {"supports", "support_set", "modes", "loads"}) {
+  r.convert_units = f.boolean_or("convert_units", false);
+  for (const char* key : {"supports", "support_set", "modes", "loads", "mesh"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
     at.key = f.path() + "." + key;
@@ -271,6 +264,12 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   FrameStudyResults out;
   out.model = fem::read_inp(q.mesh);
   fem::FrameModel& model = out.model;
+  // A mesh in other units than the study is most often the wrong file (a
+  // metric copy of an inch frame): converted only when the study says so.
+  if (!q.convert_units && model.units.name() != q.units.name())
+    throw core::InputError(q.where("mesh"),
+                           fmt::format("a mesh in the study's units, {} (or frame.convert_units: true to convert it)", q.units.name()),
+                           fmt::format("{} in {} (its '** units:' line)", q.mesh.string(), model.units.name()));
   const std::string mesh_name = q.mesh.string();
   if (q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped) {
     for (const std::string& name : q.support_sets) {
@@ -309,7 +308,13 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
                              quoted(o.node_set) + (set == model.node_sets.end() ? "" : ", an empty set"));
   }
   if (given) out.loads = *given;
-  else if (q.loads) out.loads = read_load_history(*q.loads);
+  else if (q.loads) {
+    out.loads = read_load_history(*q.loads);
+    if (!q.convert_units && out.loads.units.name() != q.units.name())
+      throw core::InputError(q.where("loads"),
+                             fmt::format("a load history in the study's units, {} (or frame.convert_units: true to convert it)", q.units.name()),
+                             fmt::format("{} in {} (its '# units:' line)", q.loads->string(), out.loads.units.name()));
+  }
   else throw core::InputError(q.where("loads"), "a load-history file", "no 'loads' key and no loads from a rigid-body run");
   // Where the loads came from, for messages: the load-history file, or this study's own run.
   const std::string loads_file = !given && q.loads ? q.loads->string() : q.file;
@@ -530,109 +535,107 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   folder.write_text("frame_response.pvd", pvd);
 }
 
-std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) {
+nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStudyRequest& q) {
+  using nlohmann::ordered_json;
   const core::UnitSystem& u = q.units;
   using core::Quantity;
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
-  auto where = [&](const RailPeak& p, const std::string& rail) {
-    return fmt::format("\"rail\": {}, \"element\": {}, \"station\": {}, \"x\": {{\"value\": {}, \"unit\": {}}}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}",
-                       json_string(rail), p.element_id, p.station, json_number(p.point.x() * lf), json_string(u.label(Quantity::length)),
-                       json_number(p.time));
+  // Every number as {value, unit}; strings (paths, names) escaped by nlohmann.
+  auto quantity = [](double value, const std::string& unit) { return ordered_json{{"value", value}, {"unit", unit}}; };
+  auto peak = [&](const RailPeak& p, double value, Quantity q_value, const std::string& rail) {
+    ordered_json j = quantity(u.from_si(value, q_value), u.label(q_value));
+    j["rail"] = rail;
+    j["element"] = p.element_id;
+    j["station"] = p.station;
+    j["x"] = quantity(p.point.x() * lf, u.label(Quantity::length));
+    j["time"] = quantity(p.time, "s");
+    return j;
   };
-  std::string j = "{\n";
-  j += fmt::format("  \"model\": \"frame_transient\",\n  \"mesh\": {},\n  \"supports\": \"{}\",\n  \"method\": \"{}\",\n", json_string(q.mesh.string()),
-                   supports_name(q.supports), method_name(q.method));
+  ordered_json j;
+  j["model"] = "frame_transient";
+  j["mesh"] = q.mesh.string();
+  j["supports"] = supports_name(q.supports);
+  j["method"] = method_name(q.method);
   // No wall time here: the same study must give byte-identical files (the console prints it).
-  j += fmt::format("  \"nodes\": {},\n  \"elements\": {},\n  \"output_times\": {},\n", r.model.nodes.size(), r.model.beams.size(),
-                   r.response.times.size());
-  j += "  \"modes\": [";
+  j["nodes"] = r.model.nodes.size();
+  j["elements"] = r.model.beams.size();
+  j["output_times"] = r.response.times.size();
+  ordered_json modes = ordered_json::array();
   for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
     const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)
                                                              : q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i));
-    j += fmt::format("{}\n    {{\"mode\": {}, \"frequency_hz\": {}, \"damping_ratio\": {}}}", i ? "," : "", i + 1, json_number(r.frequencies_hz(i)),
-                     json_number(zeta));
+    modes.push_back({{"mode", i + 1}, {"frequency_hz", r.frequencies_hz(i)}, {"damping_ratio", zeta}});
   }
-  j += "\n  ],\n  \"load_points\": [";
-  for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
-    const MappedLoadPoint& mp = r.mapping.points[p];
-    std::string ids;
-    for (std::size_t k = 0; k < mp.nodes.size(); ++k) ids += (k ? ", " : "") + std::to_string(r.model.nodes[static_cast<std::size_t>(mp.nodes[k])].id);
-    j += fmt::format("{}\n    {{\"name\": {}, \"at_node\": {}, \"node_set\": {}, \"nodes\": [{}], \"spider_length\": {{\"value\": {}, \"unit\": {}}}}}", p ? "," : "",
-                     json_string(mp.name), mp.at_node ? "true" : "false", mp.from_node_set ? "true" : "false", ids, json_number(mp.spider_length * lf),
-                     json_string(u.label(Quantity::length)));
+  j["modes"] = modes;
+  ordered_json points = ordered_json::array();
+  for (const MappedLoadPoint& mp : r.mapping.points) {
+    std::vector<int> ids;
+    for (int n : mp.nodes) ids.push_back(r.model.nodes[static_cast<std::size_t>(n)].id);
+    points.push_back({{"name", mp.name},
+                      {"at_node", mp.at_node},
+                      {"node_set", mp.from_node_set},
+                      {"nodes", ids},
+                      {"spider_length", quantity(mp.spider_length * lf, u.label(Quantity::length))}});
   }
-  j += "\n  ],\n  \"peak_bending_moment\": {";
+  j["load_points"] = points;
+  ordered_json moments = ordered_json::object(), components = ordered_json::object();
   const RailRecovery* worst = nullptr;
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
-    const RailRecovery& rail = r.rails[k];
-    j += fmt::format("{}\n    {}: {{\"value\": {}, \"unit\": {}, {}}}", k ? "," : "", json_string(rail.spec.name),
-                     json_number(u.from_si(rail.peak_bending_moment.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
-                     where(rail.peak_bending_moment, rail.spec.name));
+  for (const RailRecovery& rail : r.rails) {
+    moments[rail.spec.name] = peak(rail.peak_bending_moment, rail.peak_bending_moment.value, Quantity::moment, rail.spec.name);
+    components[rail.spec.name] = {{"mz", peak(rail.peak_mz, rail.peak_mz.value, Quantity::moment, rail.spec.name)},
+                                  {"my", peak(rail.peak_my, rail.peak_my.value, Quantity::moment, rail.spec.name)}};
     if (!worst || std::abs(rail.peak_normal_stress.value) > std::abs(worst->peak_normal_stress.value)) worst = &rail;
   }
-  j += "\n  },\n  \"peak_bending_moment_components\": {";
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
-    const RailRecovery& rail = r.rails[k];
-    j += fmt::format("{}\n    {}: {{\"mz\": {{\"value\": {}, \"unit\": {}, {}}}, \"my\": {{\"value\": {}, \"unit\": {}, {}}}}}", k ? "," : "",
-                     json_string(rail.spec.name), json_number(u.from_si(rail.peak_mz.value, Quantity::moment)), json_string(u.label(Quantity::moment)),
-                     where(rail.peak_mz, rail.spec.name), json_number(u.from_si(rail.peak_my.value, Quantity::moment)),
-                     json_string(u.label(Quantity::moment)), where(rail.peak_my, rail.spec.name));
-  }
-  j += "\n  }";
+  j["peak_bending_moment"] = moments;
+  j["peak_bending_moment_components"] = components;
   if (worst) {
-    j += fmt::format(",\n  \"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}, \"fiber\": {}, \"bending_share\": {}}}",
-                     json_number(u.from_si(worst->peak_normal_stress.value, Quantity::stress)), json_string(u.label(Quantity::stress)),
-                     where(worst->peak_normal_stress, worst->spec.name), worst->peak_normal_stress.fiber, json_number(worst->bending_share));
-    j += ",\n  \"rails\": {";
-    for (std::size_t k = 0; k < r.rails.size(); ++k) {
-      const RailRecovery& rail = r.rails[k];
-      j += fmt::format("{}\n    {}: {{\"peak_normal_stress\": {{\"value\": {}, \"unit\": {}, {}}}, \"bending_share\": {}}}", k ? "," : "",
-                       json_string(rail.spec.name), json_number(u.from_si(rail.peak_normal_stress.value, Quantity::stress)),
-                       json_string(u.label(Quantity::stress)), where(rail.peak_normal_stress, rail.spec.name), json_number(rail.bending_share));
-    }
-    j += "\n  }";
+    ordered_json stress = peak(worst->peak_normal_stress, worst->peak_normal_stress.value, Quantity::stress, worst->spec.name);
+    stress["fiber"] = worst->peak_normal_stress.fiber;
+    stress["bending_share"] = worst->bending_share;
+    j["peak_normal_stress"] = stress;
+    ordered_json rails = ordered_json::object();
+    for (const RailRecovery& rail : r.rails)
+      rails[rail.spec.name] = {{"peak_normal_stress", peak(rail.peak_normal_stress, rail.peak_normal_stress.value, Quantity::stress, rail.spec.name)},
+                               {"bending_share", rail.bending_share}};
+    j["rails"] = rails;
   }
   // Every output set by its name: where and when each quantity peaks.
-  const auto peak = [&](const RailPeak& p, Quantity qty) {
-    return fmt::format("{{\"value\": {}, \"unit\": {}, \"element\": {}, \"station\": {}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}",
-                       json_number(u.from_si(p.value, qty)), json_string(u.label(qty)), p.element_id, p.station, json_number(p.time));
+  auto set_peak = [&](const RailPeak& p, Quantity qty) {
+    return ordered_json{{"value", u.from_si(p.value, qty)}, {"unit", u.label(qty)}, {"element", p.element_id}, {"station", p.station},
+                        {"time", quantity(p.time, "s")}};
   };
-  const auto nodal_peak = [&](const NodalPeak& p, double factor, const std::string& unit) {
-    return fmt::format("{{\"value\": {}, \"unit\": {}, \"node\": {}, \"dof\": \"{}\", \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}",
-                       json_number(p.value * factor), json_string(unit), p.node_id, fem::dof_name(p.dof), json_number(p.time));
+  auto nodal_peak = [&](const NodalPeak& p, double factor, const std::string& unit) {
+    return ordered_json{{"value", p.value * factor}, {"unit", unit}, {"node", p.node_id}, {"dof", fem::dof_name(p.dof)}, {"time", quantity(p.time, "s")}};
   };
-  j += ",\n  \"outputs\": {";
-  int count = 0;
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
-    const RailRecovery& rail = r.rails[k];
+  ordered_json outputs = ordered_json::object();
+  for (const RailRecovery& rail : r.rails) {
     const int stations = std::max(1, q.stations);
-    j += fmt::format("{}\n    {}: {{\"kind\": \"element_set\", \"set\": {}, \"elements\": {}", count++ ? "," : "", json_string(rail.spec.name),
-                     json_string(rail.spec.element_set), rail.station_element_ids.size() / static_cast<std::size_t>(stations));
-    j += ",\n      \"peak_axial_force\": " + peak(rail.peak_axial_force, Quantity::force);
-    j += ",\n      \"peak_shear_y\": " + peak(rail.peak_shear_y, Quantity::force);
-    j += ",\n      \"peak_shear_z\": " + peak(rail.peak_shear_z, Quantity::force);
-    j += ",\n      \"peak_torque\": " + peak(rail.peak_torque, Quantity::moment);
-    j += ",\n      \"peak_my\": " + peak(rail.peak_my, Quantity::moment);
-    j += ",\n      \"peak_mz\": " + peak(rail.peak_mz, Quantity::moment);
-    j += ",\n      \"peak_bending_moment\": " + peak(rail.peak_bending_moment, Quantity::moment);
-    j += ",\n      \"peak_normal_stress\": " + peak(rail.peak_normal_stress, Quantity::stress) + "}";
+    outputs[rail.spec.name] = {{"kind", "element_set"},
+                               {"set", rail.spec.element_set},
+                               {"elements", rail.station_element_ids.size() / static_cast<std::size_t>(stations)},
+                               {"peak_axial_force", set_peak(rail.peak_axial_force, Quantity::force)},
+                               {"peak_shear_y", set_peak(rail.peak_shear_y, Quantity::force)},
+                               {"peak_shear_z", set_peak(rail.peak_shear_z, Quantity::force)},
+                               {"peak_torque", set_peak(rail.peak_torque, Quantity::moment)},
+                               {"peak_my", set_peak(rail.peak_my, Quantity::moment)},
+                               {"peak_mz", set_peak(rail.peak_mz, Quantity::moment)},
+                               {"peak_bending_moment", set_peak(rail.peak_bending_moment, Quantity::moment)},
+                               {"peak_normal_stress", set_peak(rail.peak_normal_stress, Quantity::stress)}};
   }
   const std::string L = u.label(Quantity::length);
   for (const NodalHistory& h : r.nodal) {
-    std::string ids;
-    for (std::size_t k = 0; k < h.node_ids.size(); ++k) ids += (k ? ", " : "") + std::to_string(h.node_ids[k]);
-    j += fmt::format("{}\n    {}: {{\"kind\": \"node_set\", \"set\": {}, \"nodes\": [{}]", count++ ? "," : "", json_string(h.spec.name),
-                     json_string(h.spec.node_set), ids);
-    j += ",\n      \"peak_displacement\": " + nodal_peak(h.peak_displacement, lf, L);
+    ordered_json o = {{"kind", "node_set"}, {"set", h.spec.node_set}, {"nodes", h.node_ids}};
+    o["peak_displacement"] = nodal_peak(h.peak_displacement, lf, L);
     if (h.velocity.size() > 0) {
-      j += ",\n      \"peak_velocity\": " + nodal_peak(h.peak_velocity, lf, L + "/s");
-      j += ",\n      \"peak_acceleration\": " + nodal_peak(h.peak_acceleration, lf, L + "/s^2");
+      o["peak_velocity"] = nodal_peak(h.peak_velocity, lf, L + "/s");
+      o["peak_acceleration"] = nodal_peak(h.peak_acceleration, lf, L + "/s^2");
     }
-    j += "}";
+    outputs[h.spec.name] = o;
   }
-  j += "\n  }";
-  j += "\n}";
+  j["outputs"] = outputs;
   return j;
 }
+
+std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) { return frame_summary(r, q).dump(2); }
 
 }  // namespace framedyn::coupling

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "core/results_folder.h"
+#include <nlohmann/json.hpp>
 #include "core/units.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
@@ -81,6 +82,7 @@ struct FrameStudyRequest {
   int stations = 5;
   bool pvd = false;
   int direct_substeps = 4;                   // Newmark steps per load-history interval
+  bool convert_units = false;                // mesh or load history in other units than the study: convert (else refuse)
   // Output sets: element sets (section forces and stresses; the rails in the
   // pipeline) and node sets (nodal histories), in the study's order.
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
@@ -129,6 +131,7 @@ void write_frame_outputs(const FrameStudyResults& results, const FrameStudyReque
 // peak_bending_moment.<element output> (left_rail / right_rail in the
 // pipeline), peak_normal_stress (value + unit, where and when),
 // bending_share, outputs.<name> (every output set's peaks).
-std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);
+nlohmann::ordered_json frame_summary(const FrameStudyResults& results, const FrameStudyRequest& request);
+std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);  // frame_summary(...).dump(2)
 
 }  // namespace framedyn::coupling

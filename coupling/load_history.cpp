@@ -220,6 +220,7 @@ class Reader {
     if (rows.empty()) fail(static_cast<int>(lines.size() + 1), "", "at least one row of values", "the end of the file");
 
     const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
+    h.units = units;
     h.times = Eigen::Map<const Eigen::VectorXd>(times.data(), n);
     for (std::size_t p = 0; p < h.points.size(); ++p) {
       Eigen::MatrixXd& v = h.points[p].values;

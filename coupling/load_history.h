@@ -46,6 +46,7 @@ struct LoadPointHistory {
 struct LoadHistory {
   Eigen::VectorXd times;          // s, strictly increasing
   std::vector<LoadPointHistory> points;
+  core::UnitSystem units = core::UnitSystem::si();  // the system the file was written in (values are SI)
 
   int time_count() const { return static_cast<int>(times.size()); }
   // The component values of all points at time index k, as one vector of 6 * points (SI).

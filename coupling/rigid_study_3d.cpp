@@ -118,7 +118,8 @@ std::vector<std::string> calibratable_parameters_3d() {
 core::Quantity parameter_quantity_3d(const std::string& name) {
   if (name == "tires.contact_depth") return Quantity::length;
   if (name.find("stiffness") != std::string::npos) return name == "plow.swing_spring.stiffness" ? Quantity::rotational_stiffness : Quantity::translational_stiffness;
-  if (name.find("scale") != std::string::npos) return Quantity::dimensionless;
+  // frame.parts.mass_scale / inertia_scale.<xx|yy|zz> hold the parts' total
+  // mass / inertia (get_parameter_3d): a mass and a rotary inertia, not ratios.
   if (name.find("inertia") != std::string::npos) return Quantity::rotary_inertia;
   if (name.find("mass") != std::string::npos) return Quantity::mass;
   throw std::invalid_argument("unknown parameter '" + name + "'");

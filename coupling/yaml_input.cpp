@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace framedyn::coupling {
 
@@ -20,15 +21,45 @@ std::string describe(const YAML::Node& node) {
   return "'" + node.Scalar() + "'";
 }
 
+namespace {
+// yaml-cpp keeps both entries of a key given twice in one map, and lookups
+// find the first: the second value would be silently ignored. Walks every
+// map of the document and refuses a key given twice, naming both lines.
+void require_unique_keys(const YAML::Node& node, const std::string& path, const std::string& file) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) require_unique_keys(node[i], fmt::format("{}[{}]", path, i), file);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, YAML::Mark> first;
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) continue;  // YamlMap::allow_only names it
+    const std::string key = kv.first.Scalar();
+    const std::string key_path = path.empty() ? key : path + "." + key;
+    const YAML::Mark mark = kv.first.Mark();
+    const auto [at, fresh] = first.emplace(key, mark);
+    if (!fresh) {
+      const YAML::Mark was = at->second;
+      const std::string where = was.line == mark.line ? fmt::format("line {}, column {}", was.line + 1, was.column + 1) : fmt::format("line {}", was.line + 1);
+      throw InputError({file, mark.line + 1, key_path}, "each key once in a map", fmt::format("'{}' a second time (first on {})", key, where));
+    }
+    require_unique_keys(kv.second, key_path, file);
+  }
+}
+}  // namespace
+
 YAML::Node load_yaml_file(const std::string& file) {
   if (std::filesystem::is_directory(file)) throw InputError({file, 0, ""}, "cannot read " + file + " (a directory)");
   std::ifstream in(file);
   if (!in) throw InputError({file, 0, ""}, "cannot open " + file + (std::filesystem::exists(file) ? "" : " (no such file)"));
+  YAML::Node doc;
   try {
-    return YAML::LoadFile(file);
+    doc = YAML::LoadFile(file);
   } catch (const YAML::Exception& e) {
     throw InputError({file, e.mark.line + 1, ""}, "valid YAML", e.msg);
   }
+  require_unique_keys(doc, "", file);
+  return doc;
 }
 
 YamlMap::YamlMap(YAML::Node node, std::string path, std::string file, const core::UnitSystem* units)

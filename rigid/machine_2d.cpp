@@ -347,12 +347,13 @@ void Machine2D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd
 std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                                 const std::vector<int>& directions) {
   (void)v;
+  last_event_length_ = {};
   if (fired.empty() || fired[0] != 0) return {};
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const double x5 = j.row(X).dot(q);
   switch (soil_.on_event(t, directions[0], x5, {x5, j.row(Z).dot(q)})) {
-    case SoilContact<Eigen::Vector2d>::Switch::backs_off: return fmt::format("blade backs off at x5 = {:.6g} m", x5);
-    case SoilContact<Eigen::Vector2d>::Switch::cuts_again: return fmt::format("blade cuts again at x5 = {:.6g} m", x5);
+    case SoilContact<Eigen::Vector2d>::Switch::backs_off: last_event_length_ = {"x5", x5}; return "blade backs off";
+    case SoilContact<Eigen::Vector2d>::Switch::cuts_again: last_event_length_ = {"x5", x5}; return "blade cuts again";
     case SoilContact<Eigen::Vector2d>::Switch::none: break;
   }
   return {};

@@ -156,6 +156,7 @@ class Machine2D : public SwitchedSystem {
   void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
   std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                        const std::vector<int>& directions) override;
+  EventLength last_event_length() const override { return last_event_length_; }
   double next_scheduled_change(double t) const override;
   std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
 
@@ -194,6 +195,7 @@ class Machine2D : public SwitchedSystem {
   const std::vector<int>& soil_elements() const { return soil_elements_; }
 
  private:
+  EventLength last_event_length_;  // of the last on_event
   Machine2DParameters p_;
   FrameMassProperties frame_;
   Multibody model_;

@@ -358,12 +358,13 @@ void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd
 
 std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd&, const std::vector<int>& fired,
                                 const std::vector<int>& directions) {
+  last_event_length_ = {};
   if (fired.empty() || fired[0] != 0) return {};
   const Eigen::Vector3d d = model_.points()[static_cast<std::size_t>(blade_point_)].displacement * q;
   const double s5 = cut_direction_.dot(d);
   switch (soil_.on_event(t, directions[0], s5, d)) {
-    case SoilContact<Eigen::Vector3d>::Switch::backs_off: return fmt::format("blade backs off at s5 = {:.6g} m", s5);
-    case SoilContact<Eigen::Vector3d>::Switch::cuts_again: return fmt::format("blade cuts again at s5 = {:.6g} m", s5);
+    case SoilContact<Eigen::Vector3d>::Switch::backs_off: last_event_length_ = {"s5", s5}; return "blade backs off";
+    case SoilContact<Eigen::Vector3d>::Switch::cuts_again: last_event_length_ = {"s5", s5}; return "blade cuts again";
     case SoilContact<Eigen::Vector3d>::Switch::none: break;
   }
   return {};

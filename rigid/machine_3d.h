@@ -178,6 +178,7 @@ class Machine3D : public SwitchedSystem {
   void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
   std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                        const std::vector<int>& directions) override;
+  EventLength last_event_length() const override { return last_event_length_; }
   double next_scheduled_change(double t) const override;
   std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
   void reset(double t, const Eigen::VectorXd& q);
@@ -224,6 +225,7 @@ class Machine3D : public SwitchedSystem {
   int plow_body() const { return plow_body_; }
 
  private:
+  EventLength last_event_length_;  // of the last on_event
   Machine3DParameters p_;
   Eigen::Vector3d reference_{0, 0, 0};
   Multibody model_;

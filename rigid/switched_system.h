@@ -34,6 +34,14 @@ class SwitchedSystem {
                                const std::vector<int>& /*fired*/, const std::vector<int>& /*directions*/) {
     return {};
   }
+  // A length that goes with the last on_event's description (the blade's
+  // position where it backs off), in m, kept apart from the text so that
+  // writers give it in the study's units; an empty name: none.
+  struct EventLength {
+    std::string name;
+    double metres = std::numeric_limits<double>::quiet_NaN();
+  };
+  virtual EventLength last_event_length() const { return {}; }
 
   // The next time after t at which the discrete state changes on a schedule
   // (a chain tooth entering the ground, the end of a start-up ramp), or +inf.

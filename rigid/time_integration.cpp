@@ -446,12 +446,13 @@ Trajectory integrate_event_located(SwitchedSystem& system, const Eigen::VectorXd
           directions.push_back(roots_found[static_cast<std::size_t>(i)] > 0 ? 1 : -1);
         }
       std::string what = system.on_event(t, q, v, fired, directions);
-      out.events.push_back({t, event_description(std::move(what), fired, directions)});
+      const SwitchedSystem::EventLength at = system.last_event_length();
+      out.events.push_back({t, event_description(std::move(what), fired, directions), at.name, at.metres});
       restart = true;
     }
     if (t == stop && scheduled <= t_end) {
       std::string what = system.on_scheduled_change(t, q, v);
-      out.events.push_back({t, what.empty() ? std::string("scheduled change") : std::move(what)});
+      out.events.push_back({t, what.empty() ? std::string("scheduled change") : std::move(what), "", std::numeric_limits<double>::quiet_NaN()});
       restart = true;
     }
     // Samples exactly at t report the state after any change made there.
@@ -551,7 +552,8 @@ Trajectory integrate_rk4(SwitchedSystem& system, const Eigen::VectorXd& q0, cons
       }
       if (!fired.empty()) {
         std::string what = system.on_event(tb, q, v, fired, directions);
-        out.events.push_back({tb, event_description(std::move(what), fired, directions)});
+        const SwitchedSystem::EventLength at = system.last_event_length();
+        out.events.push_back({tb, event_description(std::move(what), fired, directions), at.name, at.metres});
         system.events(tb, q, v, g_after.data());  // the event functions may depend on the discrete state
       }
       g_before = g_after;
@@ -560,7 +562,7 @@ Trajectory integrate_rk4(SwitchedSystem& system, const Eigen::VectorXd& q0, cons
     bool changed = false;
     while (scheduled <= tb + 1e-9 * step) {
       std::string what = system.on_scheduled_change(tb, q, v);
-      out.events.push_back({tb, what.empty() ? std::string("scheduled change") : std::move(what)});
+      out.events.push_back({tb, what.empty() ? std::string("scheduled change") : std::move(what), "", std::numeric_limits<double>::quiet_NaN()});
       scheduled = next_change_after(system, scheduled);
       changed = true;
     }

@@ -79,6 +79,8 @@ struct Trajectory {
   struct Event {
     double time;                         // s
     std::string what;                    // on_event / on_scheduled_change's description
+    std::string length_name;             // a length that goes with it (SwitchedSystem::last_event_length), or empty
+    double length = std::numeric_limits<double>::quiet_NaN();  // m
   };
   std::vector<Event> events;             // located switches and scheduled changes, in order
   long steps = 0;                        // internal steps taken (summed over restarts)

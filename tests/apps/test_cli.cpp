@@ -96,8 +96,9 @@ std::string cantilever_deck(const std::string& type = "B31", double pz = kPz) {
   return d.str();
 }
 
-const std::vector<std::string> kStaticFiles = {"displacements.csv", "reactions.csv", "section_forces.csv", "static.vtu", "summary.json"};
-const std::vector<std::string> kModesFiles = {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu"};
+// With framedyn's manifest of them (core/results_folder.h).
+const std::vector<std::string> kStaticFiles = {"displacements.csv", "reactions.csv", "section_forces.csv", "static.vtu", "summary.json", ".framedyn-manifest"};
+const std::vector<std::string> kModesFiles = {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu", ".framedyn-manifest"};
 
 // ------------------------------------------------------------------ modes
 
@@ -316,7 +317,6 @@ TEST(Cli, FailingRunLeavesTheOldResultsUntouched) {
   TempDir dir;
   dir.write("good.inp", cantilever_deck());
   ASSERT_EQ(framedyn(dir, "static good.inp --out results -q").status, 0);
-  dir.write("results/my_notes.txt", "kept only if the folder is not replaced\n");
   const auto before = folder_contents(dir / "results");
 
   // Bad input: exit 1.
@@ -343,11 +343,18 @@ TEST(Cli, FailingRunLeavesTheOldResultsUntouched) {
   dir.write("other.inp", cantilever_deck("B31", 2000.0));
   ASSERT_EQ(framedyn(dir, "static other.inp --out results -q").status, 0);
   const auto after = folder_contents(dir / "results");
-  EXPECT_EQ(after.count("my_notes.txt"), 0u);
   EXPECT_EQ(after.size(), kStaticFiles.size());
   EXPECT_NE(after.at("displacements.csv"), before.at("displacements.csv"));
   EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
   EXPECT_TRUE(entries_containing(dir.path(), ".old-").empty());
+
+  // A file of the user's in the folder: the run is refused, the folder kept whole.
+  dir.write("results/my_notes.txt", "never deleted by framedyn\n");
+  const auto with_notes = folder_contents(dir / "results");
+  const RunResult refused = framedyn(dir, "static good.inp --out results -q");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("my_notes.txt"), std::string::npos) << refused.err;
+  EXPECT_TRUE(folder_contents(dir / "results") == with_notes);
 }
 
 }  // namespace

@@ -461,6 +461,9 @@ std::vector<Row> rows() {
       frame_row("STUDY-71", "supports: fixed_rear_end", "supports: clamped", "supports:", "frame.supports"),
       frame_row("STUDY-72", "    left_rail:", "    left rail:", "left rail:", "frame.outputs.left rail"),
       frame_row("STUDY-73", "supports: fixed_rear_end", "supports: none\n  support_set: REAR_END", "support_set:", "frame.support_set"),
+      study_row("STUDY-81", "  radius_of_gyration: 16\n  position: [36, 32]", "  radius_of_gyration: 16\n  position: [36, 32]\n  radius_of_gyration: 18",
+                "radius_of_gyration: 18", "cab.radius_of_gyration"),
+      frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
@@ -549,6 +552,20 @@ std::vector<Row> rows() {
     if (row.id == "CLI-19") row.where = at("study.yaml", kStudy3D, "model:", "model");
     r.push_back(row);
   }
+
+  // ---- the results folder (core/results_folder.cpp): framedyn replaces only a folder it wrote
+  const std::string manifest = "# framedyn results manifest 1\nsummary.json\n";
+  const std::vector<Row> out = {
+      {"OUT-01", {{"study.yaml", kStudy2D}, {"precious.txt", "the user's notes\n"}}, "run study.yaml --out precious.txt -q", "command line: --out"},
+      {"OUT-02", {{"study.yaml", kStudy2D}, {"results/notes.txt", "the user's notes\n"}}, "run study.yaml --out results -q", "command line: --out"},
+      {"OUT-03",
+       {{"study.yaml", kStudy2D}, {"results/.framedyn-manifest", manifest}, {"results/summary.json", "{}\n"}, {"results/notes.txt", "the user's notes\n"}},
+       "run study.yaml --out results -q",
+       "command line: --out"},
+      {"OUT-04", {{"study.yaml", kStudy2D}}, "run study.yaml --out . -q", "command line: --out"},
+      {"OUT-05", {{"inputs/study.yaml", kStudy2D}}, "run inputs/study.yaml --out inputs -q", "command line: --out"},
+  };
+  r.insert(r.end(), out.begin(), out.end());
   return r;
 }
 

@@ -37,7 +37,7 @@ const fs::path kFrame = fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "r100_frame.i
 
 std::map<std::string, std::string> folder_contents(const fs::path& folder) {
   std::map<std::string, std::string> files;
-  for (const auto& entry : fs::directory_iterator(folder)) {
+  for (const auto& entry : fs::directory_iterator(folder)) {  // the manifest included
     std::ifstream in(entry.path(), std::ios::binary);
     std::stringstream ss;
     ss << in.rdbuf();
@@ -120,6 +120,8 @@ class InterruptedRun : public ::testing::Test {
   void prepare(const framedyn::testing::TempDir& dir) {
     dir.write("big.inp", *mesh_text_);
     dir.write("results/earlier_run.txt", "results of an earlier run\n");
+    // framedyn's manifest, so that the run may replace the folder (core/results_folder.h)
+    dir.write("results/.framedyn-manifest", "# framedyn results manifest 1\nearlier_run.txt\n");
     before_ = folder_contents(dir / "results");
   }
   void expect_nothing_changed(const framedyn::testing::TempDir& dir) {

@@ -94,6 +94,7 @@ TEST(QuasiStaticCut, BeamFrameUnderSlowlyAppliedPlowLoadsReproducesTheStaticCutO
   c::FrameStudyRequest q;
   q.file = "test";
   q.mesh = src + "/meshes/r100_frame.inp";
+  q.units = framedyn::core::UnitSystem::from_name("in-lbf-s");  // the mesh's (a study in other units must ask to convert)
   q.supports = c::FrameSupports::fixed_rear_end;
   q.modes = -1;
   q.method = c::FrameMethod::mode_displacement;  // all modes, no static correction: the dynamics decide
