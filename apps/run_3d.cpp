@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/rigid_modes_output.h"
+#include "apps/run_outputs.h"
 #include "core/csv_writer.h"
 #include "core/results_folder.h"
 #include "apps/response_figures.h"
@@ -157,6 +158,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (r.average_peak_backing_force)
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
+    rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (const std::string& c : r.coordinates) h.push_back(core::column(c, is_angle(c) ? std::string("rad") : u.label(Quantity::length)));
@@ -194,6 +196,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     }
   }
   j["rigid"] = rigid;
+  add_warnings(j, r.warnings);
 
   // The pipeline: this run's frame loads into the beam model of the frame.
   std::optional<coupling::FrameStudyResults> frame;
