@@ -6,6 +6,7 @@
 // Appendix B; bounce tire; rotating shaker force, Eq. 2.28) or the digging
 // chain (boom rigid on the frame, chain force and moment, Eq. 2.33, tooth
 // force of Appendix D), with the soil law of Eq. 2.36 at the blade or boom.
+// Tires and the bounce tire push only unless contacts is linear (rigid/unilateral_contact.h).
 //
 // Coordinates (fixed axes X rearward, Z up, rotations about +Y):
 //   plow:  q = (x, z, theta_y, psi, w, theta_v)

@@ -9,7 +9,8 @@
 // boom plane, blade plane turned by beta; Appendix E, Table II; rotational
 // spring K30, lift cylinder, bounce tire; shaker at point 22, Eq. 3.12) or
 // the digging chain (boom rigid on the frame, parallel to X-Z and offset in
-// Y; RCH and RMCH at point 19, Appendix D). The soil law is the 2-D one
+// Y; RCH and RMCH at point 19, Appendix D). Tires and the bounce tire push
+// only unless contacts is linear (rigid/unilateral_contact.h). The soil law is the 2-D one
 // (Eq. 2.36) along the direction of travel. docs/theory/rigid.md, section 10.
 //
 // Coordinates (fixed axes X rearward, Y right, Z up; rotations right-handed
