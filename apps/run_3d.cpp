@@ -19,6 +19,7 @@
 
 #include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
+#include "apps/run_outputs.h"
 #include "core/csv_writer.h"
 #include "apps/event_log.h"
 #include "core/results_folder.h"
@@ -146,6 +147,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (r.average_peak_backing_force)
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
+    rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (const std::string& c : r.coordinates) h.push_back(core::column(c, is_angle(c) ? std::string("rad") : u.label(Quantity::length)));
@@ -183,6 +185,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     }
   }
   j["rigid"] = rigid;
+  add_warnings(j, r.warnings);
 
   // The pipeline: this run's frame loads into the beam model of the frame.
   std::optional<coupling::FrameStudyResults> frame;

@@ -13,6 +13,7 @@
 #include "apps/response_figures.h"
 #include "apps/calibration_output.h"
 #include "apps/rigid_modes_output.h"
+#include "apps/run_outputs.h"
 #include "core/csv_writer.h"
 #include "apps/event_log.h"
 #include "core/results_folder.h"
@@ -84,6 +85,7 @@ int run_study(const RunOptions& opt) {
     if (r.average_peak_backing_force)
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
+    rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (const std::string& c : r.coordinates) h.push_back(core::column(c, coordinate_unit(c, u)));
@@ -156,6 +158,7 @@ int run_study(const RunOptions& opt) {
     }
   }
   j["rigid"] = rigid;
+  add_warnings(j, r.warnings);
   std::vector<std::string> figures;
   if (opt.figures) {
     progress.stage("figures");

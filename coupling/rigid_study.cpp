@@ -140,7 +140,7 @@ RigidStudy read_rigid_study(const std::string& file) {
     if (model == "rigid_3d") throw top.error("model", "rigid_2d (framedyn sweep varies the 2-D machine)", "'rigid_3d'");
   }
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires",
-                                                          "plow", "chain", "soil", "analysis", "calibration", "frame_output"});
+                                                          "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_output"});
   RigidStudy s;
   s.file = file;
   s.name = header.name;
@@ -151,6 +151,7 @@ RigidStudy read_rigid_study(const std::string& file) {
 
   rigid::Machine2DParameters& p = s.machine;
   p.attachment = read_attachment(root);
+  p.contacts = read_contact_law(root);
 
   if (auto g = root.optional_map("ground")) {
     g->allow_only({"slope_deg", "forward_speed"});
@@ -285,6 +286,8 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   r.trajectory = response_from_rest(machine, req);
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
+  r.contacts = summarize_contacts(machine, tr);
+  r.warnings = contact_warnings(r.contacts, study.units);
 
   // Element forces: spring + damper + static (Eq. 2.42), compression positive.
   const rigid::Multibody& mb = machine.model();
@@ -292,13 +295,10 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   for (std::size_t e = 0; e < mb.elements().size(); ++e) {
     const rigid::SpringDamper& el = mb.elements()[e];
     if (el.name.rfind("soil", 0) == 0) continue;  // the soil's force is the plow/boom force below
-    const Eigen::RowVectorXd g = mb.elongation_map(static_cast<int>(e));
     Series s{el.name + "_force", Quantity::force, {}};
-    const rigid::GroundInput* in = machine.ground_input_of(static_cast<int>(e));
     for (std::size_t i = 0; i < ns; ++i) {
-      // Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF, compression positive.
-      const double xr = in ? in->displacement(tr.time[i]) : 0.0, vr = in ? in->velocity(tr.time[i]) : 0.0;
-      s.values.push_back(-(el.stiffness * (g.dot(tr.q[i]) - xr) + el.damping * (g.dot(tr.v[i]) - vr)) + statics[e]);
+      // Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF, compression positive; zero for a contact lost (Eq. 4a.4).
+      s.values.push_back(statics[e] - machine.element_tension(static_cast<int>(e), tr.time[i], tr.q[i], tr.v[i]));
     }
     r.series.push_back(std::move(s));
   }

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/units.h"
+#include "coupling/contact_report.h"
 #include "coupling/frame_loads_2d.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
@@ -104,6 +105,8 @@ struct RigidResults {
   std::vector<FrameLoad2D> frame_loads;
   std::optional<StressResultants> resultants;
   std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
+  std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
+  std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);

@@ -197,7 +197,7 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
 RigidStudy3D read_rigid_study_3d(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
-                                                          "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "frame_response"});
+                                                          "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"});
   RigidStudy3D s;
   s.file = file;
   s.name = header.name;
@@ -207,6 +207,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   if (model != "rigid_3d") throw root.error("model", "rigid_3d", "'" + model + "'");
   rigid::Machine3DParameters& p = s.machine;
   p.attachment = read_attachment(root);
+  p.contacts = read_contact_law(root);
 
   const YamlMap tires = root.map("tires");
   tires.allow_only({"front", "rear"});
@@ -346,6 +347,8 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   r.trajectory = response_from_rest(machine, req);
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
+  r.contacts = summarize_contacts(machine, tr);
+  r.warnings = contact_warnings(r.contacts, study.units);
   if (machine.blade_point() >= 0) {
     const rigid::Jacobian& j = machine.model().points()[static_cast<std::size_t>(machine.blade_point())].displacement;
     Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/units.h"
+#include "coupling/contact_report.h"
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
@@ -67,6 +68,8 @@ struct RigidResults3D {
   std::optional<double> average_peak_cutting_force;  // N: each shaker cycle's largest, averaged (as RigidResults)
   std::optional<double> average_peak_backing_force;  // N
   std::optional<FrameLoads3D> frame_loads;           // with a response
+  std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
+  std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
 };
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);

@@ -129,6 +129,13 @@ rigid::Attachment read_attachment(const YamlMap& root) {
   throw root.error("attachment", "plow, chain or none", "'" + attachment + "'");
 }
 
+rigid::ContactLaw read_contact_law(const YamlMap& root) {
+  const std::string law = root.text_or("contacts", "unilateral");
+  if (law == "unilateral") return rigid::ContactLaw::unilateral;
+  if (law == "linear") return rigid::ContactLaw::linear;
+  throw root.error("contacts", "unilateral (tires and bounce tire push only) or linear (the thesis's bilateral springs)", "'" + law + "'");
+}
+
 rigid::SpringDamperValues read_spring_damper(const YamlMap& m) {
   m.allow_only({"stiffness", "damping"});
   return {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)};

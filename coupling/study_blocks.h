@@ -40,6 +40,10 @@ StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, st
 // `attachment: plow | chain | none`.
 rigid::Attachment read_attachment(const YamlMap& root);
 
+// `contacts: unilateral | linear` (default unilateral: tires and bounce tire
+// push only; linear: the thesis's bilateral springs, for parity with its tables).
+rigid::ContactLaw read_contact_law(const YamlMap& root);
+
 // The block `key` of an attachment (soil, plow, chain): required if `wanted`,
 // else refused with expected `refusal` ("no chain data unless attachment is
 // chain") and found `found` ("a chain map"); empty if neither.

@@ -179,6 +179,18 @@ Machine2D::Machine2D(const Machine2DParameters& p)
   c_back_ = c_full_ - (1.0 - p.soil.damping_reduction) * c_soil;
   k_no_soil_ = k_full_ - k_soil;
   m_solver_.compute(m_);
+
+  // One-sided contacts: each tire's normal element with its tractive one, and the bounce tire.
+  std::vector<ContactDefinition> contacts = {
+      {"front_tire", model_.element_index("front_tire_normal"), {model_.element_index("front_tire_tractive")}},
+      {"rear_tire", model_.element_index("rear_tire_normal"), {model_.element_index("rear_tire_tractive")}}};
+  if (p.attachment == Attachment::plow) contacts.push_back({"bounce_tire", model_.element_index("bounce_tire"), {}});
+  std::vector<GroundInput> inputs;
+  for (std::size_t e = 0; e < model_.elements().size(); ++e) {
+    const GroundInput* in = ground_input_of(static_cast<int>(e));
+    inputs.push_back(in ? *in : GroundInput{});
+  }
+  contacts_.configure(model_, contacts, static_element_forces(), inputs, p.contacts);
 }
 
 Eigen::MatrixXd Machine2D::stiffness_matrix(ModalSoil soil) const {
@@ -217,6 +229,7 @@ void Machine2D::reset(double t, const Eigen::VectorXd& q) {
     soil_.reset(t, 0.0, Eigen::Vector2d::Zero());
   }
   teeth_.reset(t);
+  contacts_.reset(t, q, Eigen::VectorXd::Zero(size()));
 }
 
 Eigen::Vector2d Machine2D::anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const {
@@ -241,6 +254,7 @@ Jacobian Machine2D::frame_point_jacobian(const Eigen::Vector2d& point) const {
 }
 
 double Machine2D::element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  if (contacts_.contact_of(element) >= 0) return contacts_.static_force(element) - contacts_.transmitted_force(element, t, q, v);
   const SpringDamper& el = model_.elements().at(static_cast<std::size_t>(element));
   const Eigen::RowVectorXd g = model_.elongation_map(element);
   double k = el.stiffness, c = el.damping, xr = 0.0, vr = 0.0;
@@ -320,6 +334,7 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
     const Eigen::Vector3d v_soil(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope));
     f += model_.points()[static_cast<std::size_t>(blade_point_)].displacement.transpose() * (scale * p_.soil.damping * v_soil);
   }
+  contacts_.add_lost_contacts(t, q, v, f);  // Eq. 4a.4
   a = m_solver_.solve(f);
 }
 
@@ -336,9 +351,10 @@ Eigen::Vector2d Machine2D::plow_force(double t, const Eigen::VectorXd& q, const 
           (d(Z) - anchor.y()) * rk + (vel(Z) + p_.forward_speed * std::sin(p_.ground_slope)) * rc};
 }
 
-int Machine2D::event_count() const { return blade_point_ >= 0 ? 1 : 0; }
+int Machine2D::event_count() const { return soil_event_count() + contacts_.event_count(); }
 
 void Machine2D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
+  contacts_.events(t, q, v, g + soil_event_count());  // Eq. 4a.3
   if (blade_point_ < 0) return;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   g[0] = soil_.event_value(t, j.row(X).dot(q), j.row(X).dot(v));  // Eq. 2.36 along X
@@ -348,10 +364,27 @@ std::string Machine2D::on_event(double t, const Eigen::VectorXd& q, const Eigen:
                                 const std::vector<int>& directions) {
   (void)v;
   last_event_length_ = {};
-  if (fired.empty() || fired[0] != 0) return {};
+  std::string what;
+  bool soil_fired = false;
+  for (std::size_t k = 0; k < fired.size(); ++k) {
+    const int contact = fired[k] - soil_event_count();
+    if (contact < 0) {
+      soil_fired = true;
+      continue;
+    }
+    const std::string s = contacts_.on_event(t, contact, directions[k]);
+    if (!s.empty()) what += (what.empty() ? "" : "; ") + s;
+  }
+  if (!soil_fired) return what;
+  const std::string soil = soil_switch(t, q, directions[0]);
+  // The soil's switch last: the event log appends the blade's position to it.
+  return soil.empty() ? what : (what.empty() ? soil : what + "; " + soil);
+}
+
+std::string Machine2D::soil_switch(double t, const Eigen::VectorXd& q, int direction) {
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   const double x5 = j.row(X).dot(q);
-  switch (soil_.on_event(t, directions[0], x5, {x5, j.row(Z).dot(q)})) {
+  switch (soil_.on_event(t, direction, x5, {x5, j.row(Z).dot(q)})) {
     case SoilContact<Eigen::Vector2d>::Switch::backs_off: last_event_length_ = {"x5", x5}; return "blade backs off";
     case SoilContact<Eigen::Vector2d>::Switch::cuts_again: last_event_length_ = {"x5", x5}; return "blade cuts again";
     case SoilContact<Eigen::Vector2d>::Switch::none: break;

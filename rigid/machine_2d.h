@@ -6,6 +6,7 @@
 // Appendix B; bounce tire; rotating shaker force, Eq. 2.28) or the digging
 // chain (boom rigid on the frame, chain force and moment, Eq. 2.33, tooth
 // force of Appendix D), with the soil law of Eq. 2.36 at the blade or boom.
+// Tires and the bounce tire push only unless contacts is linear (rigid/unilateral_contact.h).
 //
 // Coordinates (fixed axes X rearward, Z up, rotations about +Y):
 //   plow:  q = (x, z, theta_y, psi, w, theta_v)
@@ -27,6 +28,7 @@
 #include "rigid/plow_linkage.h"
 #include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
+#include "rigid/unilateral_contact.h"
 
 namespace framedyn::rigid {
 
@@ -109,6 +111,9 @@ struct Machine2DParameters {
   Plow2D plow;
   Chain2D chain;
   SoilLaw soil;
+  // Tires and the bounce tire push only (unilateral, rigid/unilateral_contact.h),
+  // or act as the thesis's bilateral springs (linear).
+  ContactLaw contacts = ContactLaw::unilateral;
 };
 
 // The frame's mass, c.g. and pitch inertia about its c.g. (Appendix C,
@@ -182,13 +187,19 @@ class Machine2D : public SwitchedSystem {
   // Displacement Jacobian of a point fixed to the frame at (X, Z).
   Jacobian frame_point_jacobian(const Eigen::Vector2d& point) const;
   // Tension in an element (N, positive when stretched): k (G q - xr) + c (G v - vr),
-  // with the soil law in force at t for the soil elements.
+  // with the soil law in force at t for the soil elements. For an element of a
+  // contact lost at t (unilateral contacts) it is the static force SF_e, so
+  // that the total force SF_e - tension is zero.
   double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   // The shaker's force vector at t (X, Z), N; zero without a plow.
   Eigen::Vector2d shaker_force(double t) const;
 
   // The reference ground input of a grounded element (tires, bounce tire), or nullptr.
   const GroundInput* ground_input_of(int element) const;
+
+  // The tires' and bounce tire's contacts (names front_tire, rear_tire,
+  // bounce_tire) and their state: rigid/unilateral_contact.h.
+  const UnilateralContacts& contacts() const { return contacts_; }
 
   // Element and point indices.
   int blade_point() const { return blade_point_; }
@@ -207,6 +218,9 @@ class Machine2D : public SwitchedSystem {
   // while backing) and the chain's tooth count (XNN).
   SoilContact<Eigen::Vector2d> soil_;
   ToothCount teeth_;
+  UnilateralContacts contacts_;  // one-sided tires (events after the soil's)
+  int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
+  std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
   // The anchor at t: fixed in the machine, or carried rearward with the soil.
   Eigen::Vector2d anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const;
 

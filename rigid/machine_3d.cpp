@@ -251,6 +251,28 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
     c_back_ -= (1.0 - p.soil.damping_reduction) * el.damping * gmap.transpose() * gmap;
   }
   m_solver_.compute(m_);
+
+  // One-sided contacts: each tire's vertical element with its longitudinal and lateral ones, and the bounce tire.
+  std::vector<ContactDefinition> contacts;
+  for (const char* tire : {"front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire"}) {
+    const std::string n(tire);
+    contacts.push_back({n, model_.element_index(n + "_vertical"), {model_.element_index(n + "_longitudinal"), model_.element_index(n + "_lateral")}});
+  }
+  if (p.attachment == Attachment::plow) contacts.push_back({"bounce_tire", model_.element_index("bounce_tire"), {}});
+  std::vector<GroundInput> inputs;
+  for (std::size_t e = 0; e < model_.elements().size(); ++e) {
+    const GroundInput* in = ground_input_of(static_cast<int>(e));
+    inputs.push_back(in ? *in : GroundInput{});
+  }
+  contacts_.configure(model_, contacts, static_element_forces(), inputs, p.contacts);
+}
+
+std::vector<double> Machine3D::static_element_forces() const {
+  const Eigen::VectorXd qs = static_deflection();
+  std::vector<double> f;
+  for (std::size_t e = 0; e < model_.elements().size(); ++e)
+    f.push_back(-model_.elements()[e].stiffness * model_.elongation_map(static_cast<int>(e)).dot(qs));
+  return f;
 }
 
 int Machine3D::coordinate(const std::string& name) const { return index_of(model_.coordinate_names(), name); }
@@ -283,6 +305,7 @@ const GroundInput* Machine3D::ground_input_of(int element) const {
 }
 
 double Machine3D::element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  if (contacts_.contact_of(element) >= 0) return contacts_.static_force(element) - contacts_.transmitted_force(element, t, q, v);
   const SpringDamper& el = model_.elements().at(static_cast<std::size_t>(element));
   const Eigen::RowVectorXd gmap = model_.elongation_map(element);
   double k = el.stiffness, c = el.damping, xr = 0.0, vr = 0.0;
@@ -348,9 +371,11 @@ void Machine3D::reset(double t, const Eigen::VectorXd& q) {
     soil_.reset(t, 0.0, Eigen::Vector3d::Zero());
   }
   teeth_.reset(t);
+  contacts_.reset(t, q, Eigen::VectorXd::Zero(size()));
 }
 
 void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
+  contacts_.events(t, q, v, g + soil_event_count());  // Eq. 4a.3
   if (blade_point_ < 0) return;
   const Jacobian& j = model_.points()[static_cast<std::size_t>(blade_point_)].displacement;
   g[0] = soil_.event_value(t, cut_direction_.dot(j * q), cut_direction_.dot(j * v));
@@ -359,10 +384,27 @@ void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd
 std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd&, const std::vector<int>& fired,
                                 const std::vector<int>& directions) {
   last_event_length_ = {};
-  if (fired.empty() || fired[0] != 0) return {};
+  std::string what;
+  bool soil_fired = false;
+  for (std::size_t k = 0; k < fired.size(); ++k) {
+    const int contact = fired[k] - soil_event_count();
+    if (contact < 0) {
+      soil_fired = true;
+      continue;
+    }
+    const std::string s = contacts_.on_event(t, contact, directions[k]);
+    if (!s.empty()) what += (what.empty() ? "" : "; ") + s;
+  }
+  if (!soil_fired) return what;
+  const std::string soil = soil_switch(t, q, directions[0]);
+  // The soil's switch last: the event log appends the blade's position to it.
+  return soil.empty() ? what : (what.empty() ? soil : what + "; " + soil);
+}
+
+std::string Machine3D::soil_switch(double t, const Eigen::VectorXd& q, int direction) {
   const Eigen::Vector3d d = model_.points()[static_cast<std::size_t>(blade_point_)].displacement * q;
   const double s5 = cut_direction_.dot(d);
-  switch (soil_.on_event(t, directions[0], s5, d)) {
+  switch (soil_.on_event(t, direction, s5, d)) {
     case SoilContact<Eigen::Vector3d>::Switch::backs_off: last_event_length_ = {"s5", s5}; return "blade backs off";
     case SoilContact<Eigen::Vector3d>::Switch::cuts_again: last_event_length_ = {"s5", s5}; return "blade cuts again";
     case SoilContact<Eigen::Vector3d>::Switch::none: break;
@@ -400,6 +442,7 @@ void Machine3D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
     // Soil springs unstretched at the anchor; the soil streams past at VS (Eq. 2.23).
     f += model_.elongation_map(e).transpose() * (ks * el.direction.dot(soil_.anchor()) + cs * el.direction.dot(soil_flow_));
   }
+  contacts_.add_lost_contacts(t, q, v, f);  // Eq. 4a.4
   a = m_solver_.solve(f);
 }
 

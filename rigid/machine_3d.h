@@ -9,7 +9,8 @@
 // boom plane, blade plane turned by beta; Appendix E, Table II; rotational
 // spring K30, lift cylinder, bounce tire; shaker at point 22, Eq. 3.12) or
 // the digging chain (boom rigid on the frame, parallel to X-Z and offset in
-// Y; RCH and RMCH at point 19, Appendix D). The soil law is the 2-D one
+// Y; RCH and RMCH at point 19, Appendix D). Tires and the bounce tire push
+// only unless contacts is linear (rigid/unilateral_contact.h). The soil law is the 2-D one
 // (Eq. 2.36) along the direction of travel. docs/theory/rigid.md, section 10.
 //
 // Coordinates (fixed axes X rearward, Y right, Z up; rotations right-handed
@@ -37,6 +38,7 @@
 #include "rigid/plow_linkage.h"
 #include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
+#include "rigid/unilateral_contact.h"
 
 namespace framedyn::rigid {
 
@@ -154,6 +156,9 @@ struct Machine3DParameters {
   Chain3D chain;
   SoilLaw soil;                         // K5, C5 along and normal to the travel; REK, REC
   SpringDamperValues soil_lateral;      // K15, C15: across the travel, at the blade / boom point
+  // Tires and the bounce tire push only (unilateral, rigid/unilateral_contact.h),
+  // or act as the thesis's bilateral springs (linear).
+  ContactLaw contacts = ContactLaw::unilateral;
 };
 
 class Machine3D : public SwitchedSystem {
@@ -170,11 +175,16 @@ class Machine3D : public SwitchedSystem {
   Eigen::MatrixXd damping_matrix() const { return c_full_; }
 
   Eigen::VectorXd static_deflection() const;
+  // The static force SF_e = -k_e G_e q_s in every element (compression positive).
+  std::vector<double> static_element_forces() const;
+  // The tires' and bounce tire's contacts (front_left_tire, ..., bounce_tire)
+  // and their state: rigid/unilateral_contact.h.
+  const UnilateralContacts& contacts() const { return contacts_; }
 
   // SwitchedSystem
   int size() const override { return model_.size(); }
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
-  int event_count() const override { return blade_point_ >= 0 ? 1 : 0; }
+  int event_count() const override { return soil_event_count() + contacts_.event_count(); }
   void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
   std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                        const std::vector<int>& directions) override;
@@ -194,6 +204,8 @@ class Machine3D : public SwitchedSystem {
 
   // Recovery.
   Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const;
+  // Tension k (G q - xr) + c (G v - vr), N; for an element of a contact lost
+  // at t, the static force SF_e (the total force SF_e - tension is zero).
   double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   Eigen::Vector3d shaker_force(double t) const;      // N, fixed axes
   Eigen::Vector3d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;  // soil on the blade/boom reversed: Eq. 2.37 in 3-D
@@ -242,6 +254,9 @@ class Machine3D : public SwitchedSystem {
   // VS cos theta_g while backing) and the chain's tooth count (XNN), both logged.
   SoilContact<Eigen::Vector3d> soil_;
   ToothCount teeth_;
+  UnilateralContacts contacts_;         // one-sided tires (events after the soil's)
+  int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
+  std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
   Eigen::VectorXd forcing(double t) const;
 };
 

@@ -376,6 +376,7 @@ std::vector<Row> rows() {
       study_row("STUDY-22", "framedyn_study: 1", "framedyn_study: 2", "framedyn_study: 2", "framedyn_study"),
       study_row("STUDY-23", "model: rigid_2d", "model: rigid_4d", "model: rigid_4d", "model"),
       study_row("STUDY-24", "attachment: plow", "attachment: harrow", "attachment: harrow", "attachment"),
+      study_row("STUDY-83", "attachment: plow", "attachment: plow\ncontacts: rigid", "contacts: rigid", "contacts"),
       study_row("STUDY-25", "attachment: plow", "attachment: chain", "  weight: 2800", "plow"),
       study_row("STUDY-26", "upper_joint: [112, 4]", "upper_joint: [130, -13]", "    upper_pivot", "plow.linkage"),
       study_row("STUDY-27", "arm_point: [96, 5]", "arm_point: [66, 24]", "arm_point: [66, 24]", "plow.lift_cylinder.arm_point"),

@@ -966,6 +966,7 @@ struct BladePath {
 TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSoilLine) {
   rigid::Machine2DParameters p = shipped_machine();
   p.ground_slope = 0.05;  // so that cos and sin both enter
+  p.contacts = rigid::ContactLaw::linear;  // the soil's event alone (the contacts' come after it: ContactEvents tests)
   rigid::Machine2D m(p);
   const ExactGeometry g(p, m);
   const double vs = p.forward_speed * std::cos(p.ground_slope);
@@ -1261,6 +1262,7 @@ rigid::Machine2DParameters linear_machine(double beta) {
                                        &p.cab.front.vertical, &p.cab.rear.vertical, &p.plow.bounce_tire, &p.plow.lift_cylinder})
     e->damping = beta * e->stiffness;
   p.soil.damping = beta * p.soil.stiffness;
+  p.contacts = rigid::ContactLaw::linear;  // the bilateral springs: a linear system
   return p;
 }
 

@@ -121,6 +121,7 @@ rigid::Machine3DParameters from_2d(const rigid::Machine2DParameters& p, double c
   q.rear_tires = axle(p.rear_tire);
   q.attachment = p.attachment;
   q.soil = p.soil;
+  q.contacts = p.contacts;
   q.soil_lateral = {p.soil.stiffness, p.soil.damping};
   if (p.attachment == rigid::Attachment::plow) {
     const rigid::Plow2D& pl = p.plow;
@@ -665,10 +666,13 @@ TEST(PlanarAgreement, SymmetricModelWithStiffCabXGivesThe2DFrequencies) {
 struct PlanarRun {
   double difference = 0.0, amplitude = 0.0;
   std::size_t events_2d = 0, events_3d = 0;
+  std::vector<rigid::Trajectory::Event> events_2d_log, events_3d_log;
 };
-PlanarRun planar_run(bool law_active, double duration, double forward_speed) {
+PlanarRun planar_run(bool law_active, double duration, double forward_speed,
+                     rigid::ContactLaw contacts = rigid::ContactLaw::linear) {
   rigid::Machine2DParameters p2 = shipped_2d();
   p2.forward_speed = forward_speed;
+  p2.contacts = contacts;
   if (!law_active) {
     // The printed reading with REK = REC = 1: the switches change nothing. (The shipped
     // cut-face reading drops the springs while cutting whatever REK is.)
@@ -693,6 +697,8 @@ PlanarRun planar_run(bool law_active, double duration, double forward_speed) {
   PlanarRun r;
   r.events_2d = t2.events.size();
   r.events_3d = t3.events.size();
+  for (const auto& e : t2.events) r.events_2d_log.push_back(e);
+  for (const auto& e : t3.events) r.events_3d_log.push_back(e);
   if (t2.time.size() != t3.time.size()) throw std::logic_error("different sample counts");
   for (const std::string name : {"x", "z", "theta_y", "psi", "w", "theta_v"}) {
     const int i2 = m2.coordinate(name), i3 = m3.coordinate(name);
@@ -719,6 +725,29 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithSoilSwitchingAgrees) {
   EXPECT_GE(r.events_2d, 4u);  // two back-offs, two re-cuts
   EXPECT_EQ(r.events_2d, r.events_3d);
   // As above; each located switch restarts both runs at times that differ by the event tolerance.
+  EXPECT_LT(r.difference, 2e-6 * r.amplitude);
+}
+
+TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
+  // One-sided contacts (Eq. 4a.3): the shipped plow's bounce tire lifts off
+  // under the shaker; in 3-D it is the same element, and the 2-D axle's two
+  // tires are the 3-D axle's left and right tires, which lift off together
+  // or not at all in the symmetric model.
+  const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::unilateral);
+  auto contact_events = [](const std::vector<rigid::Trajectory::Event>& log) {
+    std::vector<double> t;
+    for (const auto& e : log)
+      if (e.what.find("contact") != std::string::npos || e.what.find("touches") != std::string::npos) t.push_back(e.time);
+    return t;
+  };
+  const std::vector<double> c2 = contact_events(r.events_2d_log), c3 = contact_events(r.events_3d_log);
+  ASSERT_GE(c2.size(), 1u);  // the bounce tire lifts off
+  ASSERT_EQ(c2.size(), c3.size());
+  for (std::size_t i = 0; i < c2.size(); ++i) {
+    std::printf("contact event %zu: 2-D %.9f s (%s), 3-D %.9f s\n", i, c2[i], r.events_2d_log[i].what.c_str(), c3[i]);
+    EXPECT_NEAR(c2[i], c3[i], 1e-6);
+  }
+  EXPECT_EQ(r.events_2d, r.events_3d);
   EXPECT_LT(r.difference, 2e-6 * r.amplitude);
 }
 

@@ -1,0 +1,26 @@
+// Outputs every rigid-body run writes the same way in 2-D and 3-D:
+// summary.json's rigid.contacts.<name> {min_force, max_force (compression
+// positive) {value, unit}, tension_fraction, lift_off_fraction} and the
+// top-level `warnings` list of {code, message}, also printed on stderr.
+// docs/user-guide.md, "summary.json" and "Warnings".
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+#include "core/units.h"
+#include "core/warnings.h"
+#include "coupling/contact_report.h"
+
+namespace framedyn::apps {
+
+// rigid.contacts: one entry per contact, forces in the study's units.
+nlohmann::ordered_json contacts_json(const std::vector<coupling::ContactSummary>& contacts, const core::UnitSystem& units);
+
+// Appends the warnings to summary["warnings"] (created if absent, so that any
+// stage of a run may add its own) and prints each on stderr as
+// "framedyn: warning [code]: message".
+void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings);
+
+}  // namespace framedyn::apps
