@@ -40,8 +40,12 @@ int run_frame_response(const FrameResponseOptions& opt) {
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
   j["frame"] = nlohmann::ordered_json::parse(coupling::frame_summary_json(r, q));
+  const std::vector<coupling::StudyWarning> warnings = coupling::frame_warnings(r, q);
+  j["warnings"] = nlohmann::ordered_json::array();
+  for (const coupling::StudyWarning& w : warnings) j["warnings"].push_back({{"code", w.code}, {"message", w.message}});
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
+  for (const coupling::StudyWarning& w : warnings) fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
 
   using core::Quantity;
   const core::UnitSystem& u = q.units;

@@ -9,6 +9,8 @@
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <algorithm>
 
 #include "core/csv_writer.h"
 #include "core/error.h"
@@ -540,14 +542,52 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
     j += fmt::format("{}\n    {{\"mode\": {}, \"frequency_hz\": {}, \"damping_ratio\": {}}}", i ? "," : "", i + 1, json_number(r.frequencies_hz(i)),
                      json_number(zeta));
   }
-  j += "\n  ],\n  \"load_points\": [";
+  // The support used, and whether the real machine has it (see frame_warnings).
+  {
+    std::string sets, ids;
+    const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
+    if (clamp)
+      for (std::size_t k = 0; k < q.support_sets.size(); ++k) sets += (k ? ", " : "") + json_string(q.support_sets[k]);
+    std::vector<int> supported;
+    for (const fem::Constraint& c : r.model.constraints) supported.push_back(r.model.nodes[static_cast<std::size_t>(c.node)].id);
+    std::sort(supported.begin(), supported.end());
+    supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
+    for (std::size_t k = 0; k < supported.size(); ++k) ids += (k ? ", " : "") + std::to_string(supported[k]);
+    const char* meaning = q.supports == FrameSupports::free_free_inertia_relief
+                              ? "no supports: the loads are balanced by the frame model's rigid-body inertia (inertia relief)"
+                          : clamp ? "all six DOFs of the support nodes fixed: a support the moving machine does not have (thesis parity)"
+                                  : "the mesh's own *BOUNDARY";
+    j += fmt::format("\n  ],\n  \"support\": {{\"kind\": \"{}\", \"node_sets\": [{}], \"nodes\": [{}], \"artificial\": {}, \"meaning\": {}}}",
+                     supports_name(q.supports), sets, ids, q.supports == FrameSupports::free_free_inertia_relief ? "false" : "true", json_string(meaning));
+  }
+  // Every load applied to the frame model: where it is, how it reaches the mesh, its largest force and moment.
+  j += ",\n  \"load_points\": [";
+  const std::string L = u.label(Quantity::length);
   for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
     const MappedLoadPoint& mp = r.mapping.points[p];
     std::string ids;
     for (std::size_t k = 0; k < mp.nodes.size(); ++k) ids += (k ? ", " : "") + std::to_string(r.model.nodes[static_cast<std::size_t>(mp.nodes[k])].id);
-    j += fmt::format("{}\n    {{\"name\": {}, \"at_node\": {}, \"node_set\": {}, \"nodes\": [{}], \"spider_length\": {{\"value\": {}, \"unit\": {}}}}}", p ? "," : "",
-                     json_string(mp.name), mp.at_node ? "true" : "false", mp.from_node_set ? "true" : "false", ids, json_number(mp.spider_length * lf),
-                     json_string(u.label(Quantity::length)));
+    j += fmt::format("{}\n    {{\"name\": {}, \"position\": {{\"value\": [{}, {}, {}], \"unit\": {}}}, \"at_node\": {}, \"node_set\": {}, \"nodes\": [{}], "
+                     "\"spider_length\": {{\"value\": {}, \"unit\": {}}}",
+                     p ? "," : "", json_string(mp.name), json_number(mp.location.x() * lf), json_number(mp.location.y() * lf),
+                     json_number(mp.location.z() * lf), json_string(L), mp.at_node ? "true" : "false", mp.from_node_set ? "true" : "false", ids,
+                     json_number(mp.spider_length * lf), json_string(L));
+    if (p < r.loads.points.size()) {
+      // Largest resultant |F| and |M| over the history, with when.
+      const Eigen::MatrixXd& v = r.loads.points[p].values;
+      Eigen::Index kf = 0, km = 0;
+      for (Eigen::Index k = 1; k < v.rows(); ++k) {
+        if (v.row(k).head<3>().norm() > v.row(kf).head<3>().norm()) kf = k;
+        if (v.row(k).tail<3>().norm() > v.row(km).tail<3>().norm()) km = k;
+      }
+      if (v.rows() > 0)
+        j += fmt::format(", \"peak_force\": {{\"value\": {}, \"unit\": {}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}, "
+                         "\"peak_moment\": {{\"value\": {}, \"unit\": {}, \"time\": {{\"value\": {}, \"unit\": \"s\"}}}}",
+                         json_number(u.from_si(v.row(kf).head<3>().norm(), Quantity::force)), json_string(u.label(Quantity::force)),
+                         json_number(r.loads.times(kf)), json_number(u.from_si(v.row(km).tail<3>().norm(), Quantity::moment)),
+                         json_string(u.label(Quantity::moment)), json_number(r.loads.times(km)));
+    }
+    j += "}";
   }
   j += "\n  ],\n  \"peak_bending_moment\": {";
   const RailRecovery* worst = nullptr;
@@ -605,7 +645,6 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
     j += ",\n      \"peak_bending_moment\": " + peak(rail.peak_bending_moment, Quantity::moment);
     j += ",\n      \"peak_normal_stress\": " + peak(rail.peak_normal_stress, Quantity::stress) + "}";
   }
-  const std::string L = u.label(Quantity::length);
   for (const NodalHistory& h : r.nodal) {
     std::string ids;
     for (std::size_t k = 0; k < h.node_ids.size(); ++k) ids += (k ? ", " : "") + std::to_string(h.node_ids[k]);
@@ -621,6 +660,43 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
   j += "\n  }";
   j += "\n}";
   return j;
+}
+
+std::vector<StudyWarning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
+  std::vector<StudyWarning> out;
+  if (r.model.constraints.empty()) return out;  // free-free: no support to distort the stresses
+  std::vector<bool> supported(r.model.nodes.size(), false);
+  for (const fem::Constraint& c : r.model.constraints) supported[static_cast<std::size_t>(c.node)] = true;
+  const core::UnitSystem& u = q.units;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
+  std::string held;
+  if (clamp)
+    for (std::size_t k = 0; k < q.support_sets.size(); ++k) held += (k ? ", " : "") + q.support_sets[k];
+  const std::string support = clamp ? fmt::format("the clamp of {} ({})", held, supports_name(q.supports)) : "the mesh's *BOUNDARY";
+  for (const RailRecovery& rail : r.rails)
+    for (const auto& [what, peak, qty] : {std::tuple<const char*, const RailPeak*, Quantity>{"normal stress", &rail.peak_normal_stress, Quantity::stress},
+                                          {"bending moment", &rail.peak_bending_moment, Quantity::moment}}) {
+      const int e = r.model.beam_index(peak->element_id);
+      if (e < 0) continue;
+      // One warning per rail and element: the moment's peak where the stress's is says nothing new.
+      if (peak == &rail.peak_bending_moment && rail.peak_bending_moment.element_id == rail.peak_normal_stress.element_id && !out.empty() &&
+          out.back().message.rfind(rail.spec.name + ":", 0) == 0)
+        continue;
+      const fem::BeamElement& b = r.model.beams[static_cast<std::size_t>(e)];
+      int at = -1;
+      if (supported[static_cast<std::size_t>(b.node_a)]) at = b.node_a;
+      else if (supported[static_cast<std::size_t>(b.node_b)]) at = b.node_b;
+      if (at < 0) continue;
+      out.push_back({"peak_at_artificial_support",
+                     fmt::format("{}: the peak {} {:.5g} {} at X = {:.4g} {} (element {}, t = {:.4g} s) lies at or next to {}, node {}: a support the "
+                                 "moving machine does not have, whose reaction sets this stress; compare with supports: none "
+                                 "(free_free_inertia_relief) before using it (docs/user-guide.md, \"Which support to believe\")",
+                                 rail.spec.name, what, u.from_si(peak->value, qty), u.label(qty), peak->point.x() * lf, u.label(Quantity::length),
+                                 peak->element_id, peak->time, support, r.model.nodes[static_cast<std::size_t>(at)].id)});
+    }
+  return out;
 }
 
 }  // namespace framedyn::coupling

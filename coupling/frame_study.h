@@ -131,4 +131,18 @@ void write_frame_outputs(const FrameStudyResults& results, const FrameStudyReque
 // bending_share, outputs.<name> (every output set's peaks).
 std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);
 
+// A finding the user must see beside the numbers (summary.json's top-level
+// `warnings` list of {code, message}, and stderr).
+struct StudyWarning {
+  std::string code;     // stable, for scripts: e.g. "peak_at_artificial_support"
+  std::string message;  // for people: what, where, when and what to do
+};
+// Supports that the real machine does not have: the clamp of `clamped` and
+// `fixed_rear_end` (the thesis's SAPIV model), or the mesh's *BOUNDARY.
+// `peak_at_artificial_support`: an output set's peak normal stress or
+// resultant bending moment lies on an element with a supported node (at the
+// support or within one element of it), where the clamp's reaction, which the
+// moving machine never supplies, sets the stress.
+std::vector<StudyWarning> frame_warnings(const FrameStudyResults& results, const FrameStudyRequest& request);
+
 }  // namespace framedyn::coupling
