@@ -556,9 +556,9 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
     const char* meaning = q.supports == FrameSupports::free_free_inertia_relief
                               ? "no supports: the loads are balanced by the frame model's rigid-body inertia (inertia relief)"
                           : clamp ? "all six DOFs of the support nodes fixed: a support the moving machine does not have (thesis parity)"
-                                  : "the mesh's own *BOUNDARY";
+                                  : "the mesh's own *BOUNDARY (the supports the mesh's author gave)";
     j += fmt::format("\n  ],\n  \"support\": {{\"kind\": \"{}\", \"node_sets\": [{}], \"nodes\": [{}], \"artificial\": {}, \"meaning\": {}}}",
-                     supports_name(q.supports), sets, ids, q.supports == FrameSupports::free_free_inertia_relief ? "false" : "true", json_string(meaning));
+                     supports_name(q.supports), sets, ids, clamp ? "true" : "false", json_string(meaning));
   }
   // Every load applied to the frame model: where it is, how it reaches the mesh, its largest force and moment.
   j += ",\n  \"load_points\": [";
@@ -664,17 +664,22 @@ std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyReque
 
 std::vector<StudyWarning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
   std::vector<StudyWarning> out;
-  if (r.model.constraints.empty()) return out;  // free-free: no support to distort the stresses
+  // Only the study's clamp is artificial: free-free has no support, and the mesh's own *BOUNDARY is what
+  // its author says holds the structure (a portal frame's feet).
+  const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
+  if (!clamp) return out;
   std::vector<bool> supported(r.model.nodes.size(), false);
-  for (const fem::Constraint& c : r.model.constraints) supported[static_cast<std::size_t>(c.node)] = true;
+  for (const std::string& name : q.support_sets) {
+    const auto set = r.model.node_sets.find(upper(name));
+    if (set != r.model.node_sets.end())
+      for (int node : set->second) supported[static_cast<std::size_t>(node)] = true;
+  }
   const core::UnitSystem& u = q.units;
   using core::Quantity;
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
-  const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
   std::string held;
-  if (clamp)
-    for (std::size_t k = 0; k < q.support_sets.size(); ++k) held += (k ? ", " : "") + q.support_sets[k];
-  const std::string support = clamp ? fmt::format("the clamp of {} ({})", held, supports_name(q.supports)) : "the mesh's *BOUNDARY";
+  for (std::size_t k = 0; k < q.support_sets.size(); ++k) held += (k ? ", " : "") + q.support_sets[k];
+  const std::string support = fmt::format("the clamp of {} ({})", held, supports_name(q.supports));
   for (const RailRecovery& rail : r.rails)
     for (const auto& [what, peak, qty] : {std::tuple<const char*, const RailPeak*, Quantity>{"normal stress", &rail.peak_normal_stress, Quantity::stress},
                                           {"bending moment", &rail.peak_bending_moment, Quantity::moment}}) {

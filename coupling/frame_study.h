@@ -137,12 +137,14 @@ struct StudyWarning {
   std::string code;     // stable, for scripts: e.g. "peak_at_artificial_support"
   std::string message;  // for people: what, where, when and what to do
 };
-// Supports that the real machine does not have: the clamp of `clamped` and
-// `fixed_rear_end` (the thesis's SAPIV model), or the mesh's *BOUNDARY.
-// `peak_at_artificial_support`: an output set's peak normal stress or
-// resultant bending moment lies on an element with a supported node (at the
-// support or within one element of it), where the clamp's reaction, which the
-// moving machine never supplies, sets the stress.
+// Artificial supports: the clamp of `clamped` and `fixed_rear_end` (the
+// thesis's SAPIV model), all six DOFs of the support_set nodes fixed, which a
+// frame on a moving machine does not have (the mesh's own *BOUNDARY is taken
+// as its author's real supports). `peak_at_artificial_support`: an output
+// set's peak normal stress or resultant bending moment lies on an element
+// with a clamped node (at the clamp or within one element of it), where the
+// clamp's reaction sets the stress. One warning per output set when both
+// peaks share the element.
 std::vector<StudyWarning> frame_warnings(const FrameStudyResults& results, const FrameStudyRequest& request);
 
 }  // namespace framedyn::coupling
