@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/run_outputs.h"
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
@@ -46,6 +47,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
   j["frame"] = coupling::frame_summary(r, q);
+  add_warnings(j, coupling::frame_warnings(r, q));
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
 

@@ -1,6 +1,8 @@
 // `framedyn run STUDY.yaml` for model: rigid_3d (thesis CMW3D, Chapter III):
-// modes with dominant coordinates, a forced response, and the frame loads at
-// the eight load points 24-31 as a load-history file (frame_loads.csv).
+// modes with dominant coordinates, a forced response, and the frame loads as
+// a load-history file (frame_loads.csv): the eight load points 24-31 and the
+// attachment's loads at point 19 (plow swing pin, or chain pin and boom
+// soil), every load on the frame, all of which load the frame model.
 // With --figures, every run draws its own Chapter V load-point figures: the
 // front axle pin's forces (thesis Figure 22 for the chain) and the rear axle
 // pin's and leveling cylinder's forces (Figure 23 chain, Figure 24 plow), each
@@ -25,6 +27,7 @@
 #include "core/results_folder.h"
 #include "apps/response_figures.h"
 #include "core/plot.h"
+#include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
@@ -164,13 +167,13 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     folder.write_text("events.csv", ev.str());
 
     if (r.frame_loads) {
-      folder.write_text("frame_loads.csv", coupling::format_load_history(r.frame_loads->points, u));
+      folder.write_text("frame_loads.csv", coupling::format_load_history(coupling::all_frame_loads(*r.frame_loads), u));
       if (figures) {
         const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads->points, study.machine.attachment, study.name, u, folder);
         figure_files.insert(figure_files.end(), drawn.begin(), drawn.end());
       }
       nlohmann::ordered_json loads;
-      for (const coupling::LoadPointHistory& p : r.frame_loads->points.points) {
+      for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads).points) {
         nlohmann::ordered_json jp;
         jp["location"] = {{"value", {p.location.x() * lf, p.location.y() * lf, p.location.z() * lf}}, {"unit", u.label(Quantity::length)}};
         for (int c = 0; c < 6; ++c) {
@@ -190,9 +193,12 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   // The pipeline: this run's frame loads into the beam model of the frame.
   std::optional<coupling::FrameStudyResults> frame;
   if (study.frame_response) {
-    frame = coupling::run_frame_study(*study.frame_response, &r.frame_loads->points);
+    // Every load on the frame (points 24-31 and the attachment's at point 19).
+    const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+    frame = coupling::run_frame_study(*study.frame_response, &loads);
     coupling::write_frame_outputs(*frame, *study.frame_response, folder);
     j["frame"] = coupling::frame_summary(*frame, *study.frame_response);
+    add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");

@@ -142,4 +142,10 @@ FrameLoads3D frame_loads_3d(const rigid::Machine3D& m, const rigid::Trajectory& 
   return out;
 }
 
+LoadHistory all_frame_loads(const FrameLoads3D& loads) {
+  LoadHistory all = loads.points;
+  all.points.insert(all.points.end(), loads.direct.points.begin(), loads.direct.points.end());
+  return all;
+}
+
 }  // namespace framedyn::coupling

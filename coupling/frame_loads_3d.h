@@ -35,4 +35,11 @@ std::vector<std::string> frame_load_point_names();
 
 FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajectory& trajectory);
 
+// Every load the vehicle model puts on the frame, as one history: points
+// 24-31, then the attachment's (`direct`: P19_PLOW_SWING_PIN, or
+// P19_CHAIN_PIN and BOOM_SOIL). This is what the frame model is loaded with
+// and what frame_loads.csv holds; with the frame's own inertia these loads
+// balance at every sample (docs/theory/coupling.md, section 6).
+LoadHistory all_frame_loads(const FrameLoads3D& loads);
+
 }  // namespace framedyn::coupling

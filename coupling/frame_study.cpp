@@ -9,6 +9,8 @@
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <algorithm>
 
 #include "core/csv_writer.h"
 #include "core/error.h"
@@ -567,15 +569,52 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     modes.push_back({{"mode", i + 1}, {"frequency_hz", r.frequencies_hz(i)}, {"damping_ratio", zeta}});
   }
   j["modes"] = modes;
+  // The support used, and whether the real machine has it (see frame_warnings).
+  {
+    const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
+    std::vector<int> supported;
+    for (const fem::Constraint& c : r.model.constraints) supported.push_back(r.model.nodes[static_cast<std::size_t>(c.node)].id);
+    std::sort(supported.begin(), supported.end());
+    supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
+    const char* meaning = q.supports == FrameSupports::free_free_inertia_relief
+                              ? "no supports: the loads are balanced by the frame model's rigid-body inertia (inertia relief)"
+                          : clamp ? "all six DOFs of the support nodes fixed: a support the moving machine does not have (thesis parity)"
+                                  : "the mesh's own *BOUNDARY (the supports the mesh's author gave)";
+    j["support"] = {{"kind", supports_name(q.supports)},
+                    {"node_sets", clamp ? q.support_sets : std::vector<std::string>{}},
+                    {"nodes", supported},
+                    {"artificial", clamp},
+                    {"meaning", meaning}};
+  }
+  // Every load applied to the frame model: where it is, how it reaches the mesh, its largest force and moment.
   ordered_json points = ordered_json::array();
-  for (const MappedLoadPoint& mp : r.mapping.points) {
+  const std::string L = u.label(Quantity::length);
+  for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
+    const MappedLoadPoint& mp = r.mapping.points[p];
     std::vector<int> ids;
     for (int n : mp.nodes) ids.push_back(r.model.nodes[static_cast<std::size_t>(n)].id);
-    points.push_back({{"name", mp.name},
-                      {"at_node", mp.at_node},
-                      {"node_set", mp.from_node_set},
-                      {"nodes", ids},
-                      {"spider_length", quantity(mp.spider_length * lf, u.label(Quantity::length))}});
+    ordered_json jp = {{"name", mp.name},
+                       {"position", {{"value", {mp.location.x() * lf, mp.location.y() * lf, mp.location.z() * lf}}, {"unit", L}}},
+                       {"at_node", mp.at_node},
+                       {"node_set", mp.from_node_set},
+                       {"nodes", ids},
+                       {"spider_length", quantity(mp.spider_length * lf, L)}};
+    if (p < r.loads.points.size()) {
+      // Largest resultant |F| and |M| over the history, with when.
+      const Eigen::MatrixXd& v = r.loads.points[p].values;
+      Eigen::Index kf = 0, km = 0;
+      for (Eigen::Index k = 1; k < v.rows(); ++k) {
+        if (v.row(k).head<3>().norm() > v.row(kf).head<3>().norm()) kf = k;
+        if (v.row(k).tail<3>().norm() > v.row(km).tail<3>().norm()) km = k;
+      }
+      if (v.rows() > 0) {
+        jp["peak_force"] = {{"value", u.from_si(v.row(kf).head<3>().norm(), Quantity::force)}, {"unit", u.label(Quantity::force)},
+                            {"time", quantity(r.loads.times(kf), "s")}};
+        jp["peak_moment"] = {{"value", u.from_si(v.row(km).tail<3>().norm(), Quantity::moment)}, {"unit", u.label(Quantity::moment)},
+                             {"time", quantity(r.loads.times(km), "s")}};
+      }
+    }
+    points.push_back(jp);
   }
   j["load_points"] = points;
   ordered_json moments = ordered_json::object(), components = ordered_json::object();
@@ -622,7 +661,6 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
                                {"peak_bending_moment", set_peak(rail.peak_bending_moment, Quantity::moment)},
                                {"peak_normal_stress", set_peak(rail.peak_normal_stress, Quantity::stress)}};
   }
-  const std::string L = u.label(Quantity::length);
   for (const NodalHistory& h : r.nodal) {
     ordered_json o = {{"kind", "node_set"}, {"set", h.spec.node_set}, {"nodes", h.node_ids}};
     o["peak_displacement"] = nodal_peak(h.peak_displacement, lf, L);
@@ -637,5 +675,47 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
 }
 
 std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) { return frame_summary(r, q).dump(2); }
+
+std::vector<core::Warning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
+  std::vector<core::Warning> out;
+  // Only the study's clamp is artificial: free-free has no support, and the mesh's own *BOUNDARY is what
+  // its author says holds the structure (a portal frame's feet).
+  const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
+  if (!clamp) return out;
+  std::vector<bool> supported(r.model.nodes.size(), false);
+  for (const std::string& name : q.support_sets) {
+    const auto set = r.model.node_sets.find(upper(name));
+    if (set != r.model.node_sets.end())
+      for (int node : set->second) supported[static_cast<std::size_t>(node)] = true;
+  }
+  const core::UnitSystem& u = q.units;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  std::string held;
+  for (std::size_t k = 0; k < q.support_sets.size(); ++k) held += (k ? ", " : "") + q.support_sets[k];
+  const std::string support = fmt::format("the clamp of {} ({})", held, supports_name(q.supports));
+  for (const RailRecovery& rail : r.rails)
+    for (const auto& [what, peak, qty] : {std::tuple<const char*, const RailPeak*, Quantity>{"normal stress", &rail.peak_normal_stress, Quantity::stress},
+                                          {"bending moment", &rail.peak_bending_moment, Quantity::moment}}) {
+      const int e = r.model.beam_index(peak->element_id);
+      if (e < 0) continue;
+      // One warning per rail and element: the moment's peak where the stress's is says nothing new.
+      if (peak == &rail.peak_bending_moment && rail.peak_bending_moment.element_id == rail.peak_normal_stress.element_id && !out.empty() &&
+          out.back().message.rfind(rail.spec.name + ":", 0) == 0)
+        continue;
+      const fem::BeamElement& b = r.model.beams[static_cast<std::size_t>(e)];
+      int at = -1;
+      if (supported[static_cast<std::size_t>(b.node_a)]) at = b.node_a;
+      else if (supported[static_cast<std::size_t>(b.node_b)]) at = b.node_b;
+      if (at < 0) continue;
+      out.push_back({"peak_at_artificial_support",
+                     fmt::format("{}: the peak {} {:.5g} {} at X = {:.4g} {} (element {}, t = {:.4g} s) lies at or next to {}, node {}: a support the "
+                                 "moving machine does not have, whose reaction sets this stress; compare with supports: none "
+                                 "(free_free_inertia_relief) before using it (docs/user-guide.md, \"Which support to believe\")",
+                                 rail.spec.name, what, u.from_si(peak->value, qty), u.label(qty), peak->point.x() * lf, u.label(Quantity::length),
+                                 peak->element_id, peak->time, support, r.model.nodes[static_cast<std::size_t>(at)].id)});
+    }
+  return out;
+}
 
 }  // namespace framedyn::coupling

@@ -37,9 +37,11 @@
 #include <string>
 #include <vector>
 
-#include "core/results_folder.h"
 #include <nlohmann/json.hpp>
+
+#include "core/results_folder.h"
 #include "core/units.h"
+#include "core/warnings.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
 #include "coupling/output_sets.h"
@@ -133,5 +135,15 @@ void write_frame_outputs(const FrameStudyResults& results, const FrameStudyReque
 // bending_share, outputs.<name> (every output set's peaks).
 nlohmann::ordered_json frame_summary(const FrameStudyResults& results, const FrameStudyRequest& request);
 std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);  // frame_summary(...).dump(2)
+
+// Artificial supports: the clamp of `clamped` and `fixed_rear_end` (the
+// thesis's SAPIV model), all six DOFs of the support_set nodes fixed, which a
+// frame on a moving machine does not have (the mesh's own *BOUNDARY is taken
+// as its author's real supports). `peak_at_artificial_support`: an output
+// set's peak normal stress or resultant bending moment lies on an element
+// with a clamped node (at the clamp or within one element of it), where the
+// clamp's reaction sets the stress. One warning per output set when both
+// peaks share the element.
+std::vector<core::Warning> frame_warnings(const FrameStudyResults& results, const FrameStudyRequest& request);
 
 }  // namespace framedyn::coupling

@@ -73,6 +73,9 @@ LOAD_POINTS = [
     ("P30_CAB_MOUNT_RL", 52.0, "L"),
     ("P31_CAB_MOUNT_RR", 52.0, "R"),
 ]
+# The attachment's load points (thesis point 19 and the chain boom's soil load), by
+# the names the 3-D vehicle model gives them (coupling/frame_loads_3d.h).
+HITCH_LOAD_POINTS = ["P19_PLOW_SWING_PIN", "P19_CHAIN_PIN", "BOOM_SOIL"]
 
 # --------------------------------------------------------------------------
 # Build
@@ -123,6 +126,11 @@ def build():
     for name, x, where in LOAD_POINTS:
         nsets[name] = [{"L": left, "R": right, "C": centre}[where][x]]
     nsets["REAR_END"] = [left[80.0], centre[80.0], right[80.0]]
+    # The attachment's loads at point 19 (plow swing pin, chain pin, soil on the
+    # chain boom) reach the frame through the hitch box, bolted across the rear end
+    # plate: a rigid spider to the plate's three nodes.
+    for name in HITCH_LOAD_POINTS:
+        nsets[name] = list(nsets["REAR_END"])
     nsets["LEFT_RAIL_NODES"] = [left[x] for x in STATIONS]
     nsets["RIGHT_RAIL_NODES"] = [right[x] for x in STATIONS]
     return nodes, elements, elsets, nsets, left, right, centre, cm_elements
@@ -318,6 +326,12 @@ def write_inp(path, nodes, elements, elsets, nsets, left, right, centre, cm_elem
     w("** Rear end nodes (X = 80): the thesis's SAPIV model clamped the frame here.")
     w("*NSET, NSET=REAR_END")
     w(", ".join(str(n) for n in nsets["REAR_END"]))
+    w("** The attachment's loads (thesis point 19: plow swing pin, chain pin, soil on the chain")
+    w("** boom) reach the frame through the hitch box on the rear end plate: a rigid spider")
+    w("** to the plate's three nodes (docs/meshes/r100_frame.md, \"Load points\").")
+    for name in HITCH_LOAD_POINTS:
+        w(f"*NSET, NSET={name}")
+        w(", ".join(str(n) for n in nsets[name]))
     w("*NSET, NSET=LEFT_RAIL_NODES, GENERATE")
     w(f"1, {ns}, 1")
     w("*NSET, NSET=RIGHT_RAIL_NODES, GENERATE")

@@ -75,6 +75,39 @@ TEST_F(OffsetPlowingPipeline, OneCommandGoesFromTheMachineToTheRailStresses) {
     EXPECT_TRUE(fs::exists(*dir_ / "out" / file)) << file;
 }
 
+// Every load on the frame reaches the frame model: points 24-31 and the plow's
+// at its swing pin (point 19, [80, 0, 6] in), which reaches the mesh through
+// the hitch spider on the rear end plate (nodes 22, 51, 44) and is the largest
+// of them (the plow's shaker and soil forces pass through it).
+TEST_F(OffsetPlowingPipeline, TheSummaryListsEveryAppliedLoadPointWithTheSwingPinAsTheLargest) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  const nlohmann::json& points = summary_["frame"]["load_points"];
+  ASSERT_EQ(points.size(), 9u);
+  const nlohmann::json& pin = points[8];
+  EXPECT_EQ(pin["name"], "P19_PLOW_SWING_PIN");
+  EXPECT_EQ(pin["position"]["value"], nlohmann::json::array({80, 0, 6}));
+  EXPECT_EQ(pin["position"]["unit"], "in");
+  EXPECT_EQ(pin["nodes"], nlohmann::json::array({22, 44, 51}));
+  EXPECT_EQ(pin["peak_force"]["unit"], "lbf");
+  for (std::size_t k = 0; k < 8; ++k)
+    EXPECT_GT(pin["peak_force"]["value"].get<double>(), points[k]["peak_force"]["value"].get<double>()) << points[k]["name"];
+  EXPECT_TRUE(summary_["rigid"]["frame_loads"].contains("P19_PLOW_SWING_PIN"));
+}
+
+// The thesis's clamped rear end (the example's support, kept for parity):
+// the summary says so, and since the peak lies on the rail element at the
+// clamp (X = 80 in) it warns, in summary.json and on stderr.
+TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  EXPECT_EQ(summary_["frame"]["support"]["kind"], "fixed_rear_end");
+  EXPECT_EQ(summary_["frame"]["support"]["artificial"], true);
+  EXPECT_EQ(summary_["frame"]["support"]["nodes"], nlohmann::json::array({22, 44, 51}));
+  EXPECT_EQ(summary_["frame"]["peak_normal_stress"]["x"]["value"], 80);
+  ASSERT_FALSE(summary_["warnings"].empty());
+  EXPECT_EQ(summary_["warnings"][0]["code"], "peak_at_artificial_support");
+  EXPECT_NE(slurp(*dir_ / "run.log").find("framedyn: warning [peak_at_artificial_support]: left_rail: the peak normal stress"), std::string::npos);
+}
+
 TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) {
   ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
   // The frame_response block of examples/offset_plowing.yaml, as a frame study on the written loads.

@@ -147,6 +147,9 @@ TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {
   EXPECT_EQ(l, "# point P24_REEL -25 0 0");
   for (int i = 0; i < 7; ++i) std::getline(lines, l);
   EXPECT_EQ(l, "# point P31_CAB_MOUNT_RR 52 15 0");
+  // Then the plow's load at its swing pin (point 19): every load on the frame is in the file.
+  std::getline(lines, l);
+  EXPECT_EQ(l, "# point P19_PLOW_SWING_PIN 80 0 6");
   std::getline(lines, l);
   EXPECT_EQ(l.rfind("time [s],P24_REEL.FX [lbf],P24_REEL.FY [lbf],P24_REEL.FZ [lbf],P24_REEL.MX [lbf*in],P24_REEL.MY [lbf*in],P24_REEL.MZ [lbf*in],"
                     "P25_FRONT_AXLE_PIN.FX [lbf],",
@@ -154,7 +157,7 @@ TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {
             0u);
   // The reader of the format (coupling/load_history.h) takes it back.
   const coupling::LoadHistory h = coupling::read_load_history(out + "/frame_loads.csv");
-  EXPECT_EQ(h.points.size(), 8u);
+  EXPECT_EQ(h.points.size(), 9u);  // 24-31 and 19
   EXPECT_EQ(h.time_count(), 101);
   const auto j = nlohmann::json::parse(read_text(out + "/summary.json"));
   EXPECT_EQ(j["rigid"]["model"], "rigid_3d");
