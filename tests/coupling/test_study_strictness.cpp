@@ -106,7 +106,7 @@ time [s],P25_FRONT_AXLE_PIN.FX [lbf],P25_FRONT_AXLE_PIN.FY [lbf],P25_FRONT_AXLE_
 
 std::string frame_study(const std::string& loads, bool convert) {
   return "framedyn_study: 1\nname: strict units\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n  mesh: " + (kSource / "meshes" / "r100_frame.inp").string() +
-         "\n  loads: " + loads + "\n  modes: 4\n  method: mode_displacement\n  damping: {modal_ratio: 0.02}\n  stations: 3\n" +
+         "\n  loads: " + loads + "\n  supports: fixed_rear_end\n  modes: 4\n  method: mode_displacement\n  damping: {modal_ratio: 0.02}\n  stations: 3\n" +
          (convert ? "  convert_units: true\n" : "");
 }
 

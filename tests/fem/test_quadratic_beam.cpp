@@ -410,11 +410,11 @@ TEST(QuadraticBeam, DistributedLoadsAndReleasesOnThreeNodeBeamsAreRefused) {
                            "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n"
                            "*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT\n0.05, 0.1\n*BOUNDARY\n1, 1, 6\n";
   expect_input_error(deck + "*DLOAD\nE, PZ, 100\n",
-                     "deck.inp:16: *DLOAD: expected two-node beam elements (B31, B33) for *DLOAD (distributed loads on three-node beams "
+                     "deck.inp:18: *DLOAD: expected two-node beam elements (B31, B33) for *DLOAD (distributed loads on three-node beams "
                      "are not implemented), found element 1 of type B32R");
-  expect_input_error(deck + "*DLOAD\n, GRAV, 9.81, 0, 0, -1\n", "deck.inp:16: *DLOAD: expected two-node beam elements (B31, B33)");
+  expect_input_error(deck + "*DLOAD\n, GRAV, 9.81, 0, 0, -1\n", "deck.inp:18: *DLOAD: expected two-node beam elements (B31, B33)");
   expect_input_error(deck + "*RELEASE\n1, S2, M1\n",
-                     "deck.inp:16: *RELEASE: expected two-node beam elements (B31, B33) to release (releases of three-node beams are not "
+                     "deck.inp:18: *RELEASE: expected two-node beam elements (B31, B33) to release (releases of three-node beams are not "
                      "implemented), found element 1 of type B32R");
 }
 
