@@ -9,12 +9,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-echo "== Release build and tests (build/)"
+echo "== $(date -u +%T) Release build and tests (build/)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFRAMEDYN_BUILD_TESTS=ON
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
 
-echo "== Sanitized build and tests: AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)"
+echo "== $(date -u +%T) Sanitized build and tests: AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRAMEDYN_SANITIZE=address,undefined -DFRAMEDYN_BUILD_TESTS=ON
 cmake --build build-asan -j2
 ctest --test-dir build-asan --output-on-failure -j2
+echo "== $(date -u +%T) suite done"
