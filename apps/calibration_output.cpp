@@ -23,7 +23,7 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
                                          const core::ResultsFolder& folder) {
   nlohmann::ordered_json cal;
   nlohmann::ordered_json params = nlohmann::ordered_json::array();
-  core::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial", "lower", "upper", "at_bound", "uncertainty"});
+  core::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial [1]", "lower", "upper", "at_bound", "uncertainty"});
   for (std::size_t i = 0; i < c.fitted.size(); ++i) {
     const std::string& name = request.parameters[i];
     const core::Quantity q = quantity(name);
@@ -44,9 +44,9 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
         .add(u.from_si(c.fitted[i], q))
         .add(c.fitted[i] / c.initial[i])
         .add(u.from_si(c.lower[i], q))
-        .add(std::isfinite(c.upper[i]) ? fmt::format("{:.6g}", u.from_si(c.upper[i], q)) : std::string("none"))
+        .add(std::isfinite(c.upper[i]) ? core::format_number(u.from_si(c.upper[i], q)) : std::string("none"))
         .add(c.at_bound[i] ? "yes" : "no")
-        .add(std::isfinite(c.uncertainty[i]) ? fmt::format("{:.6g}", u.from_si(c.uncertainty[i], q)) : std::string("undetermined"));
+        .add(std::isfinite(c.uncertainty[i]) ? core::format_number(u.from_si(c.uncertainty[i], q)) : std::string("undetermined"));
   }
   nlohmann::ordered_json targets = nlohmann::ordered_json::array(), labels = nlohmann::ordered_json::array();
   for (std::size_t t = 0; t < request.targets.size(); ++t) {
