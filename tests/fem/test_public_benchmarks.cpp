@@ -19,12 +19,15 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "fem/assembly.h"
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
+#include "tests/support/run_framedyn.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -149,6 +152,28 @@ TEST(NafemsFv2DoubleCross, ModesThatKeepTheCentreStillEqualThePublishedClosedFor
 
 TEST(NafemsFv2DoubleCross, CentreTranslationPairsEqualTheClosedFormOnceTheArmsAreAxiallyRigid) {
   expect_published_after_refinement(1e4, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
+}
+
+// The deck as a user runs it: `framedyn modes DECK --modes 16`. The summary
+// reports the library's frequencies (same solver, written to 10 digits), a
+// certified set, no rigid-body modes (the pinned ends hold the cross in its
+// plane) and the hand-computed mass: 8 arms x 5 m x 0.125^2 m^2 x 8000 kg/m^3
+// = 5000 kg.
+TEST(NafemsFv2DoubleCross, ModesCommandOnTheDeckReportsTheSameCertifiedSetAndTheHandMass) {
+  const std::string deck = kBenchmarks + "nafems_fv2_double_cross.inp";
+  const std::vector<double> library = frequencies(fem::read_inp(deck), 16);
+  const framedyn::testing::TempDir dir("framedyn_fv2");
+  const framedyn::testing::RunResult run =
+      framedyn::testing::framedyn(dir, "modes " + framedyn::testing::quote(deck) + " --modes 16 --out out");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const nlohmann::json summary = nlohmann::json::parse(framedyn::testing::read_file(dir / "out" / "summary.json"));
+  const nlohmann::json &frame = summary.at("frame");
+  EXPECT_NEAR(frame.at("total_mass").at("value").get<double>(), 8 * 5.0 * 0.125 * 0.125 * 8000.0, 1e-9 * 5000.0);
+  EXPECT_TRUE(frame.at("sturm_check").at("certified").get<bool>());
+  EXPECT_EQ(frame.at("rigid_body_modes_expected").get<int>(), 0);
+  ASSERT_EQ(frame.at("modes").size(), 16u);
+  for (std::size_t i = 0; i < 16; ++i)
+    EXPECT_NEAR(frame.at("modes")[i].at("frequency_hz").get<double>(), library[i], 1e-8 * library[i]) << "mode " << i + 1;
 }
 
 // NAFEMS FV5, deep simply supported beam
