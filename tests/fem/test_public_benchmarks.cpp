@@ -271,4 +271,47 @@ TEST(NafemsFv5DeepBeam, FrequenciesEqualTheClosedFormAndThePublishedValuesItRepr
   }
 }
 
+// code_aster Validation Manual V2.05.400, case 1
+// (tests/data/benchmarks/code_aster_v2_05_400_*.inp): a 0.783 m beam of
+// 0.014 m square section (E = 6.07e10 Pa, nu = 0, rho = 2400 kg/m^3) pinned at
+// A, free at B, bending in its plane. Published roots of
+// sin(kL) cosh(kL) = cos(kL) sinh(kL): kL = 0, 3.9266, 7.06858, 10.2102,
+// 13.3518, 16.4934, with omega = sqrt(EI / (rho S)) k^2. The first is the
+// rotation about the pin: a partially supported beam, whose rigid-body mode
+// must be counted from the support (one) and returned at zero frequency.
+// Tolerance: the published roots' rounding (half a unit in their last
+// digit, doubled since f ~ (kL)^2) plus the discretisation error left after
+// Richardson extrapolation (10 and 40 B33, h^4), bounded by the correction.
+TEST(CodeAsterV205400PinnedFreeBeam, RigidRotationAboutThePinAndFiveBendingRootsEqualThePublishedOnes) {
+  constexpr std::array<double, 6> kL = {0.0, 3.9266, 7.06858, 10.2102, 13.3518, 16.4934};
+  constexpr std::array<double, 6> half_unit = {0.0, 5e-5, 5e-6, 5e-5, 5e-5, 5e-5};
+  const double c = 0.014, length = 0.783, E = 6.07e10, rho = 2400.0;
+  const double bending = std::sqrt(E * c * c * c * c / 12.0 / (rho * c * c));  // sqrt(EI / (rho S)), m^2/s
+  std::array<std::vector<fem::Mode>, 2> modes;
+  const std::array<const char *, 2> decks = {"code_aster_v2_05_400_pinned_free_beam.inp",
+                                             "code_aster_v2_05_400_pinned_free_beam_fine.inp"};
+  for (std::size_t d = 0; d < 2; ++d) {
+    fem::ModalOptions options;
+    options.mode_count = 6;
+    const fem::ModalResult r = fem::compute_modes(fem::read_inp(kBenchmarks + decks[d]), options);
+    EXPECT_TRUE(r.certified) << decks[d];
+    EXPECT_EQ(r.rigid_body_modes_expected, 1) << decks[d];  // the rotation about the pin
+    modes[d] = r.modes;
+    ASSERT_EQ(modes[d].size(), 6u) << decks[d];
+    EXPECT_TRUE(modes[d][0].rigid_body) << decks[d];
+    EXPECT_EQ(modes[d][0].frequency_hz, 0.0) << decks[d];
+    for (std::size_t i = 1; i < 6; ++i) EXPECT_FALSE(modes[d][i].rigid_body) << decks[d] << ", mode " << i + 1;
+  }
+  std::printf("mode  kL        reference [Hz]  10 B33 (ratio)        40 B33 (ratio)         extrapolated\n");
+  for (std::size_t i = 1; i < 6; ++i) {
+    const double reference = bending * std::pow(kL[i] / length, 2) / (2.0 * kPi);
+    const double coarse = modes[0][i].frequency_hz, fine = modes[1][i].frequency_hz;
+    const double correction = (fine - coarse) / 255.0;
+    const double extrapolated = fine + correction;
+    std::printf("%4zu  %-8g  %14.4f  %9.4f (%.6f)  %9.4f (%.7f)  %9.4f\n", i + 1, kL[i], reference, coarse, coarse / reference,
+                fine, fine / reference, extrapolated);
+    EXPECT_NEAR(extrapolated, reference, 2.0 * half_unit[i] / kL[i] * reference + std::abs(correction)) << "mode " << i + 1;
+  }
+}
+
 }  // namespace
