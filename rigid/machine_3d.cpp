@@ -384,21 +384,7 @@ void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd
 std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd&, const std::vector<int>& fired,
                                 const std::vector<int>& directions) {
   last_event_length_ = {};
-  std::string what;
-  bool soil_fired = false;
-  for (std::size_t k = 0; k < fired.size(); ++k) {
-    const int contact = fired[k] - soil_event_count();
-    if (contact < 0) {
-      soil_fired = true;
-      continue;
-    }
-    const std::string s = contacts_.on_event(t, contact, directions[k]);
-    if (!s.empty()) what += (what.empty() ? "" : "; ") + s;
-  }
-  if (!soil_fired) return what;
-  const std::string soil = soil_switch(t, q, directions[0]);
-  // The soil's switch last: the event log appends the blade's position to it.
-  return soil.empty() ? what : (what.empty() ? soil : what + "; " + soil);
+  return contacts_.on_events(t, soil_event_count(), fired, directions, [&](int direction) { return soil_switch(t, q, direction); });
 }
 
 std::string Machine3D::soil_switch(double t, const Eigen::VectorXd& q, int direction) {

@@ -74,6 +74,24 @@ void UnilateralContacts::events(double t, const Eigen::VectorXd& q, const Eigen:
   }
 }
 
+std::string UnilateralContacts::on_events(double t, int soil_events, const std::vector<int>& fired, const std::vector<int>& directions,
+                                          const std::function<std::string(int)>& soil_switch) {
+  std::string what;
+  int soil_direction = 0;
+  for (std::size_t k = 0; k < fired.size(); ++k) {
+    const int contact = fired[k] - soil_events;
+    if (contact < 0) {
+      soil_direction = directions[k];
+      continue;
+    }
+    const std::string s = on_event(t, contact, directions[k]);
+    if (!s.empty()) what += (what.empty() ? "" : "; ") + s;
+  }
+  if (soil_direction == 0) return what;
+  const std::string soil = soil_switch(soil_direction);
+  return soil.empty() ? what : (what.empty() ? soil : what + "; " + soil);
+}
+
 std::string UnilateralContacts::on_event(double t, int contact, int direction) {
   const auto i = static_cast<std::size_t>(contact);
   if (touching_[i] && direction < 0) {

@@ -21,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,13 @@ class UnilateralContacts {
   // Contact i's event crossed in direction (+1 rising, -1 falling): returns a
   // description if its state changed, else empty.
   std::string on_event(double t, int contact, int direction);
+  // The events of one instant of a machine whose event functions are its soil
+  // law's (the first `soil_events`) followed by these contacts': each contact
+  // event through on_event, the soil's through `soil_switch(direction)`.
+  // Returns what happened, "; "-joined, the soil's switch last (the event log
+  // appends the blade's position to it).
+  std::string on_events(double t, int soil_events, const std::vector<int>& fired, const std::vector<int>& directions,
+                        const std::function<std::string(int)>& soil_switch);
   // Adds (4a.4) to the generalised force f for every contact lost now.
   void add_lost_contacts(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& f) const;
 
