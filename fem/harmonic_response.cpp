@@ -59,27 +59,20 @@ HarmonicResult harmonic_response(const FrameDynamics& frame, const ModalBasis& b
     const Eigen::Index count = std::min(kBlock, nf - start);
     const Eigen::MatrixXcd q = modal_block(response, r.frequencies_hz, start, count);
     if (chosen.size() > 0) r.output.middleCols(start, count) = chosen.evaluate(q);
-    if (displacement.size() > 0) {
-      // Squared moduli: the maximum is the same, without a square root per entry.
-      const Eigen::MatrixXd amplitude2 = displacement.evaluate(q).cwiseAbs2();
+    // The largest amplitude of `outputs` over this block, kept if it beats
+    // `peak` so far (squared moduli: the same maximum, no square root per entry).
+    auto track = [&](const LinearOutputs& outputs, double& peak, Eigen::Index& peak_row, int& peak_frequency) {
+      if (outputs.size() == 0) return;
       Eigen::Index row = 0, col = 0;
-      const double peak = std::sqrt(amplitude2.maxCoeff(&row, &col));
-      if (peak > r.max_displacement || max_row < 0) {
-        r.max_displacement = peak;
-        max_row = row;
-        r.max_displacement_frequency = static_cast<int>(start + col);
+      const double block_peak = std::sqrt(outputs.evaluate(q).cwiseAbs2().maxCoeff(&row, &col));
+      if (block_peak > peak || peak_row < 0) {
+        peak = block_peak;
+        peak_row = row;
+        peak_frequency = static_cast<int>(start + col);
       }
-    }
-    if (stress.size() > 0) {
-      const Eigen::MatrixXd amplitude2 = stress.evaluate(q).cwiseAbs2();
-      Eigen::Index row = 0, col = 0;
-      const double peak = std::sqrt(amplitude2.maxCoeff(&row, &col));
-      if (peak > r.max_fiber_stress || stress_row < 0) {
-        r.max_fiber_stress = peak;
-        stress_row = row;
-        r.max_fiber_stress_frequency = static_cast<int>(start + col);
-      }
-    }
+    };
+    track(displacement, r.max_displacement, max_row, r.max_displacement_frequency);
+    track(stress, r.max_fiber_stress, stress_row, r.max_fiber_stress_frequency);
   }
   // The spectra at the two peaks, for the figures.
   Eigen::MatrixXcd q_all(response.mode_count(), nf);
