@@ -7,7 +7,7 @@ Standard library only (and gnuplot for `overlay`). Two commands:
       The thesis's qualitative results 6-9 (../shared/docs/thesis-figures.md,
       "Qualitative results") as ratios measured on four results folders of
       examples/r100_plow_straight.yaml, r100_plow_offset.yaml,
-      r100_chain_center.yaml, r100_chain_offset.yaml (docs/validation.md §7).
+      r100_chain_center.yaml, r100_chain_offset.yaml (docs/validation.md P2).
 
   examples/tools/chapter5_3d.py overlay RUN_A RUN_B FIGURE OUT.png
       Draws one figure of two runs in one PNG (e.g. FIGURE =

@@ -155,7 +155,7 @@ TEST_F(CantileverStudy, SingleModeTipDisplacementVelocityAndAccelerationMatchThe
   const auto r = coupling::run_frame_study(q);
   const coupling::NodalHistory& tip = r.nodal[0];
   // Mode 1 of 20 cubic elements: frequency within 2 (beta_1 h)^4 / 1440 = 1.1e-7 of
-  // (1.8751)^2 sqrt(EI/m)/L^2 (the consistent-mass Hermite error, docs/validation.md section 1).
+  // (1.8751)^2 sqrt(EI/m)/L^2 (the consistent-mass Hermite error, docs/validation.md V1).
   const double w = 2 * kPi * r.frequencies_hz(0);
   std::cout.precision(10);
   std::cout << "[ measured ] f1 = " << r.frequencies_hz(0) << " and " << r.frequencies_hz(1) << " Hz, closed form " << omega(1) / (2 * kPi) << " Hz\n";
@@ -246,7 +246,7 @@ TEST_F(CantileverStudy, FreeFreeBeamHasTheClosedFormFirstElasticFrequency) {
   const auto r = coupling::run_frame_study(request("  supports: none\n  modes: 2\n  outputs:\n    tip: {node_set: TIP}\n"));
   const double f1 = 4.730040744862704 * 4.730040744862704 * std::sqrt(kE * kI / (kRho * kArea)) / (kL * kL) / (2 * kPi);
   std::cout << "[ measured ] free-free f1 = " << r.frequencies_hz(0) << " Hz, closed form " << f1 << " Hz\n";
-  // 20 cubic elements: within 2 (beta_1 h)^4 / 1440 = 4.3e-6 (docs/validation.md section 1).
+  // 20 cubic elements: within 2 (beta_1 h)^4 / 1440 = 4.3e-6 (docs/validation.md V1).
   const double tol = 2 * std::pow(4.730040744862704 / kElements, 4) / 1440;
   EXPECT_NEAR(r.frequencies_hz(0) / f1, 1.0, tol);
   // Square section: the two bending modes are a pair.

@@ -21,7 +21,7 @@
 // to the axle pins, a tire bounce, the plow's vibration, a side force), so the
 // test does not depend on the 3-D vehicle model. bench/mode_truncation_study.cpp
 // runs the comparison on the offset-plowing loads of the 3-D model
-// (docs/validation.md, "Mode truncation (issue 5)").
+// (docs/validation.md, V9, "Mode truncation").
 #include <gtest/gtest.h>
 
 #include <cmath>

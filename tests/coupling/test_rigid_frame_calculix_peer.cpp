@@ -22,7 +22,7 @@
 // by 8.7e-4 in the y and theta_x modes).
 //
 // What CalculiX 2.20 needs (tried on one- and seven-node models first,
-// docs/validation.md §7): *FREQUENCY returns all-zero eigenvalues without an
+// docs/validation.md V11): *FREQUENCY returns all-zero eigenvalues without an
 // error when the model has few equations (ccx.log: ARPACK's info = -3, the
 // Lanczos basis is larger than the problem). Eight independent padding
 // oscillators (mass 1 kg, springs 1e12 N/m: 1.6e5 Hz, far above the frame's
