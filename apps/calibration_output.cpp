@@ -57,6 +57,11 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
                        {"achieved_dominant", c.achieved_dominant[t]},
                        {"relative_error", (c.achieved_hz[t] - tg.frequency_hz) / tg.frequency_hz},
                        {"label_matches", static_cast<bool>(c.label_matches[t])}});
+    if (t < request.shapes.size() && request.shapes[t]) {
+      targets.back()["shape_components"] = request.shapes[t]->components.size();
+      targets.back()["shape_weight"] = request.shapes[t]->weight;
+      targets.back()["mac"] = c.mac[t];  // modal assurance of the measured and the fitted shape (9.6)
+    }
     labels.push_back(static_cast<bool>(c.label_matches[t]));
   }
   nlohmann::ordered_json unresolved = nlohmann::ordered_json::array();
@@ -79,6 +84,7 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
   cal["labels_match"] = labels;
   cal["labels_all_match"] = c.labels_match;
   cal["iterations"] = c.iterations;
+  cal["iteration_limit_reached"] = c.iteration_limit_reached;
   folder.write_text("calibration.csv", pcsv.str());
   return cal;
 }
@@ -89,6 +95,10 @@ void print_calibration(const coupling::CalibrationRequest& request, const rigid:
              c.iterations, request.targets.size(), c.independent_targets, c.fitted.size(),
              c.underdetermined ? fmt::format(", UNDERDETERMINED (regularization weight {:g})", c.regularization) : "", 100 * c.max_relative_error,
              c.labels_match ? "as the targets say" : "NOT all as the targets say");
+  for (std::size_t t = 0; t < request.targets.size(); ++t)
+    if (c.mac[t] >= 0) fmt::print("  target {} ({:g} Hz): measured shape MAC {:.4f}\n", t + 1, request.targets[t].frequency_hz, c.mac[t]);
+  if (c.iteration_limit_reached)
+    fmt::print("  the fit stopped at its iteration limit with the residual still falling: the values are not a converged fit\n");
   for (std::size_t i = 0; i < c.fitted.size(); ++i)
     fmt::print("  {:32s} x {:.4f}  (bounds x {:.4g} .. x {:.4g}){}\n", request.parameters[i], c.fitted[i] / c.initial[i], c.lower[i] / c.initial[i],
                c.upper[i] / c.initial[i], c.at_bound[i] ? "  AT BOUND" : "");

@@ -108,7 +108,6 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
   return written;
 }
 
-bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha"; }
 }  // namespace
 
 int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
@@ -153,12 +152,12 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
-    for (const std::string& c : r.coordinates) h.push_back(core::column(c, is_angle(c) ? std::string("rad") : u.label(Quantity::length)));
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
     for (const coupling::Series& s : r.series) h.push_back(core::column(s.name, u.label(s.quantity)));
     core::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
       csv.row().add(tr.time[i]);
-      for (std::size_t c = 0; c < r.coordinates.size(); ++c) csv.add(tr.q[i](static_cast<Eigen::Index>(c)) * (is_angle(r.coordinates[c]) ? 1.0 : lf));
+      for (std::size_t c = 0; c < r.coordinates.size(); ++c) csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());

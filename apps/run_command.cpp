@@ -34,12 +34,6 @@ struct RunOptions {
   ProgressFlags progress;
 };
 
-std::string coordinate_unit(const std::string& name, const core::UnitSystem& u) {
-  return name.rfind("theta", 0) == 0 || name == "psi" ? std::string("rad") : u.label(Quantity::length);
-}
-double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
-  return name.rfind("theta", 0) == 0 || name == "psi" ? 1.0 : 1.0 / u.to_si_factor(Quantity::length);
-}
 
 int run_study(const RunOptions& opt) {
   if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
@@ -88,14 +82,14 @@ int run_study(const RunOptions& opt) {
     rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
-    for (const std::string& c : r.coordinates) h.push_back(core::column(c, coordinate_unit(c, u)));
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
     for (const coupling::Series& s : r.series)
       h.push_back(s.quantity == Quantity::dimensionless ? s.name : core::column(s.name, u.label(s.quantity)));
     core::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
       csv.row().add(tr.time[i]);
       for (std::size_t c = 0; c < r.coordinates.size(); ++c)
-        csv.add(tr.q[i](static_cast<Eigen::Index>(c)) * coordinate_factor(r.coordinates[c], u));
+        csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());

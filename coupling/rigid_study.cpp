@@ -263,7 +263,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(
         *cal, [&](const std::string& name) { return get_parameter(p, name); },
-        [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters());
+        [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters(), false);
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
   check_machine(p, s.fixed_coordinates, root, file);
@@ -279,6 +279,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
     });
   rigid::Machine2D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
+  r.coordinate_quantities = machine.model().coordinate_quantities();
   if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(study.modal_soil), r.coordinates, study.fixed_coordinates);
   if (!study.response) return r;
 

@@ -36,9 +36,26 @@ struct ParameterBound {
   double lower = 0.0, upper = 0.0;  // SI
   std::string basis;                // where the bounds come from (default rule or the study's reason)
 };
+// A measured mode shape of one calibration target (calibration.targets[i].shape):
+// each component at a coordinate (in that coordinate's unit) or at a point of the
+// frame (its displacement along x, y or z); turned into a rigid::ShapeTarget with
+// the machine's coordinate table and frame-point Jacobians (shape_target).
+struct ShapeComponent {
+  std::string coordinate;            // empty for a frame point
+  std::vector<double> frame_point;   // SI: [X, Z] (2-D) or [X, Y, Z] (3-D); empty for a coordinate
+  int direction = -1;                // frame point: 0, 1, 2 for x, y, z
+  double as_length = 0.0;            // the value read, in SI as a length (a translation or a frame point)
+  double as_angle = 0.0;             // the value read as an angle (rad, the same in every system)
+  core::InputLocation where;         // the component's `coordinate` (or `frame_point`) key
+};
+struct ShapeRequest {
+  std::vector<ShapeComponent> components;
+  double weight = 1.0;               // of the shape residual (9.6)
+};
 struct CalibrationRequest {
   std::vector<std::string> parameters;            // e.g. "tires.front.normal.stiffness"
-  std::vector<rigid::FrequencyTarget> targets;
+  std::vector<rigid::FrequencyTarget> targets;    // shapes are filled in by calibrate_parameters from `shapes`
+  std::vector<std::optional<ShapeRequest>> shapes;  // one per target
   std::vector<ParameterBound> bounds;             // one per parameter
   double regularization = 0.0;                    // calibration.regularization.weight (0: none; underdetermined fits refused)
   core::InputLocation where;                      // the calibration block, for the refusal of an underdetermined fit
@@ -89,6 +106,7 @@ struct Series {
 
 struct RigidResults {
   std::vector<std::string> coordinates;
+  std::vector<core::Quantity> coordinate_quantities;  // length or angle, one per coordinate (the model's table)
   std::optional<rigid::CalibrationResult> calibration;  // with the study's CalibrationRequest
   std::vector<rigid::RigidMode> modes;
   // Response (empty if none was asked for).

@@ -316,7 +316,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   }
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
-                                            calibratable_parameters_3d());
+                                            calibratable_parameters_3d(), true);
   check_machine(p, s.fixed_coordinates, root, file);
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
@@ -340,6 +340,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   r.machine = study.machine;
   rigid::Machine3D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
+  r.coordinate_quantities = machine.model().coordinate_quantities();
   if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(), r.coordinates, study.fixed_coordinates);
   if (!study.response) return r;
 

@@ -57,6 +57,7 @@ core::Quantity parameter_quantity_3d(const std::string& name);
 
 struct RigidResults3D {
   std::vector<std::string> coordinates;
+  std::vector<core::Quantity> coordinate_quantities;  // length or angle, one per coordinate (the model's table)
   std::optional<rigid::CalibrationResult> calibration;
   rigid::Machine3DParameters machine;  // as analysed (after any calibration)
   std::vector<rigid::RigidMode> modes;

@@ -256,9 +256,82 @@ ParameterBound inertia_bounds_from_dimensions(double mass, double a, double b, b
 
 }  // namespace
 
+namespace {
+
+// calibration.targets[i].shape: {weight, components: [{coordinate, value} or
+// {frame_point, direction, value}]}.
+ShapeRequest read_shape(const YamlMap& s, bool three_d) {
+  s.allow_only({"components", "weight"});
+  ShapeRequest shape;
+  shape.weight = s.has("weight") ? s.positive("weight", Quantity::dimensionless) : 1.0;
+  const std::vector<YamlMap> items = s.list_of_maps("components");
+  if (items.empty()) throw s.error("components", "a list of {coordinate, value} or {frame_point, direction, value}", "none");
+  for (const YamlMap& c : items) {
+    c.allow_only({"coordinate", "frame_point", "direction", "value"});
+    ShapeComponent k;
+    if (c.has("coordinate") == c.has("frame_point"))
+      throw c.error("coordinate", "exactly one of coordinate or frame_point", c.has("coordinate") ? "both" : "neither");
+    if (c.has("coordinate")) {
+      k.coordinate = c.text("coordinate");
+      k.where = c.location("coordinate");
+      if (c.has("direction")) throw c.error("direction", "direction only with frame_point", "direction with coordinate");
+    } else {
+      k.frame_point = c.numbers("frame_point", Quantity::length);
+      k.where = c.location("frame_point");
+      if (k.frame_point.size() != (three_d ? 3u : 2u))
+        throw c.error("frame_point", three_d ? "[X, Y, Z] of a point of the frame" : "[X, Z] of a point of the frame", describe(c.node()["frame_point"]));
+      const std::string d = c.text("direction");
+      const std::string allowed = three_d ? "x, y or z" : "x or z";
+      if (d == "x") k.direction = 0;
+      else if (d == "y" && three_d) k.direction = 1;
+      else if (d == "z") k.direction = 2;
+      else throw c.error("direction", allowed, "'" + d + "'");
+    }
+    k.as_length = c.number("value", Quantity::length);
+    k.as_angle = c.number("value", Quantity::angle);
+    shape.components.push_back(std::move(k));
+  }
+  return shape;
+}
+
+}  // namespace
+
+rigid::ShapeTarget shape_target(const ShapeRequest& s, const rigid::Multibody& model,
+                                const std::function<rigid::Jacobian(const std::vector<double>&)>& frame_point_jacobian) {
+  const std::vector<std::string>& names = model.coordinate_names();
+  const Eigen::Index m = static_cast<Eigen::Index>(s.components.size()), n = model.size();
+  rigid::ShapeTarget t;
+  t.weight = s.weight;
+  t.observation = Eigen::MatrixXd::Zero(m, n);
+  t.measured.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const ShapeComponent& k = s.components[static_cast<std::size_t>(i)];
+    if (!k.coordinate.empty()) {
+      const auto it = std::find(names.begin(), names.end(), k.coordinate);
+      if (it == names.end()) {
+        std::string list;
+        for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+        throw core::InputError(k.where, "one of the machine's coordinates (" + list + ")", "'" + k.coordinate + "'");
+      }
+      const Eigen::Index j = it - names.begin();
+      t.observation(i, j) = 1.0;
+      t.measured(i) = model.coordinate_quantities()[static_cast<std::size_t>(j)] == Quantity::angle ? k.as_angle : k.as_length;
+    } else {
+      t.observation.row(i) = frame_point_jacobian(k.frame_point).row(k.direction);
+      t.measured(i) = k.as_length;
+    }
+  }
+  if (!(t.measured.squaredNorm() > 0)) {
+    core::InputLocation where = s.components.front().where;
+    where.key = where.key.substr(0, where.key.rfind(".components"));
+    throw core::InputError(where, "a measured shape with a non-zero component", "every component zero");
+  }
+  return t;
+}
+
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
                                             const std::function<core::Quantity(const std::string&)>& quantity,
-                                            const std::vector<std::string>& known) {
+                                            const std::vector<std::string>& known, bool three_d) {
   cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization"});
   if (cal.has("fit_labels"))
     throw cal.error("fit_labels", "no fit_labels (the dominant coordinates are never fitted: they are checked after the fit, as a prediction)",
@@ -324,8 +397,10 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
     req.bounds[i] = bound;
   }
   for (const YamlMap& t : cal.list_of_maps("targets")) {
-    t.allow_only({"frequency_hz", "dominant"});
-    req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", "")});
+    t.allow_only({"frequency_hz", "dominant", "shape"});
+    req.targets.push_back({t.positive("frequency_hz", Quantity::frequency), t.text_or("dominant", ""), std::nullopt});
+    req.shapes.push_back(std::nullopt);
+    if (auto s = t.optional_map("shape")) req.shapes.back() = read_shape(*s, three_d);
   }
   if (req.targets.empty()) throw cal.error("targets", "a list of {frequency_hz, dominant}", "none");
   if (auto r = cal.optional_map("regularization")) {

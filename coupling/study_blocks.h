@@ -16,6 +16,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/units.h"
@@ -90,9 +91,17 @@ ResponseRequest read_response_request(const YamlMap& r);
 // physical quantity (for the units of its bounds). Every parameter gets
 // bounds: the block's `bounds` entry for it (with its reason), else the
 // default rule of calibration_default_bounds.
+// `three_d`: frame points of measured shapes are [X, Y, Z], else [X, Z].
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
                                             const std::function<core::Quantity(const std::string&)>& quantity,
-                                            const std::vector<std::string>& known);
+                                            const std::vector<std::string>& known, bool three_d);
+
+// The measured shape `s` as a rigid::ShapeTarget of `model`: a coordinate's
+// component observes that coordinate (its value in its own quantity), a frame
+// point's the row of frame_point_jacobian(point) along its direction. Unknown
+// coordinates and all-zero shapes are input errors at their keys.
+rigid::ShapeTarget shape_target(const ShapeRequest& s, const rigid::Multibody& model,
+                                const std::function<rigid::Jacobian(const std::vector<double>&)>& frame_point_jacobian);
 
 // The default bounds of a parameter with nominal value `nominal` (SI):
 // stiffness, damping, mass, length: [nominal / f, nominal f] with f the
@@ -113,6 +122,20 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
 // A fit the targets cannot determine is an InputError at the calibration block.
 template <class Machine, class Parameters, class Get, class Set, class Modes>
 rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const CalibrationRequest& c, Get get, Set set, Modes modes) {
+  CalibrationRequest request = c;
+  {
+    // Measured shapes seen through the nominal machine (the calibrated
+    // parameters do not move its points or change its coordinates).
+    const Machine nominal(parameters);
+    const auto jacobian = [&](const std::vector<double>& point) {
+      if constexpr (std::is_same_v<Machine, rigid::Machine2D>)
+        return nominal.frame_point_jacobian(Eigen::Vector2d(point.at(0), point.at(1)));
+      else
+        return nominal.frame_point_jacobian(Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
+    };
+    for (std::size_t t = 0; t < c.shapes.size(); ++t)
+      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.model(), jacobian);
+  }
   const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
     Parameters p = parameters;
     for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
@@ -120,7 +143,7 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
   };
   rigid::CalibrationResult result;
   try {
-    result = run_calibration(c, [&](const std::string& name) { return get(parameters, name); }, modes_of);
+    result = run_calibration(request, [&](const std::string& name) { return get(parameters, name); }, modes_of);
   } catch (const rigid::UnderdeterminedFit& e) {
     throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
   }

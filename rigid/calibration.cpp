@@ -49,6 +49,13 @@ std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::v
   return match;
 }
 
+double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const double aa = a.squaredNorm(), bb = b.squaredNorm();
+  if (!(aa > 0 && bb > 0)) return 0.0;
+  const double ab = a.dot(b);
+  return ab * ab / (aa * bb);
+}
+
 int independent_count(const Eigen::VectorXd& s) {
   if (s.size() == 0 || !(s(0) > 0)) return 0;
   int n = 0;
@@ -65,16 +72,52 @@ std::vector<double> from_log(const Eigen::VectorXd& x) {
   return p;
 }
 
-// The log-frequency errors (9.1), then w (x - x0) when regularised (9.2).
+// The number of data residuals: one per target frequency, plus one per
+// component of each measured shape (9.6).
+Eigen::Index data_rows(const std::vector<FrequencyTarget>& targets) {
+  Eigen::Index n = static_cast<Eigen::Index>(targets.size());
+  for (const FrequencyTarget& t : targets)
+    if (t.shape) n += t.shape->measured.size();
+  return n;
+}
+
+// The information the targets carry: a frequency each, and a measured shape
+// of m components m - 1 more (its scale is not information).
+Eigen::Index information_count(const std::vector<FrequencyTarget>& targets) {
+  Eigen::Index n = static_cast<Eigen::Index>(targets.size());
+  for (const FrequencyTarget& t : targets)
+    if (t.shape) n += std::max<Eigen::Index>(t.shape->measured.size() - 1, 0);
+  return n;
+}
+
+// The shape residual sign(c) (s - c p) of unit shapes s (measured) and p
+// (observed), c = s.p: its squared norm is 1 - MAC (9.6).
+Eigen::VectorXd shape_residual(const ShapeTarget& shape, const Eigen::VectorXd& phi) {
+  const Eigen::VectorXd observed = shape.observation * phi;
+  const double no = observed.norm(), nm = shape.measured.norm();
+  if (!(no > 0) || !(nm > 0)) return shape.measured.normalized();  // nothing observed: the whole shape unexplained
+  const Eigen::VectorXd s = shape.measured / nm, p = observed / no;
+  const double c = s.dot(p);
+  return (c < 0 ? -1.0 : 1.0) * (s - c * p);
+}
+
+// The log-frequency errors (9.1), the shape residuals (9.6), then w (x - x0)
+// when regularised (9.2).
 Eigen::VectorXd residuals(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
                           const Eigen::VectorXd& x0, double w) {
   const std::vector<RigidMode> modes = modes_of(from_log(x));
   const std::vector<int> match = match_targets(modes, targets);
-  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(nt + (w > 0 ? x.size() : 0));
+  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size()), nd = data_rows(targets);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(nd + (w > 0 ? x.size() : 0));
+  Eigen::Index row = nt;
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (match[t] < 0) throw UnderdeterminedFit(fmt::format("{} target frequencies but the model has {} modes", targets.size(), modes.size()));
-    r(static_cast<Eigen::Index>(t)) = std::log(modes[static_cast<std::size_t>(match[t])].frequency_hz / targets[t].frequency_hz);
+    const RigidMode& m = modes[static_cast<std::size_t>(match[t])];
+    r(static_cast<Eigen::Index>(t)) = std::log(m.frequency_hz / targets[t].frequency_hz);
+    if (const auto& shape = targets[t].shape) {
+      r.segment(row, shape->measured.size()) = shape->weight * shape_residual(*shape, m.shape);
+      row += shape->measured.size();
+    }
   }
   if (w > 0) r.tail(x.size()) = w * (x - x0);
   return r;
@@ -97,16 +140,43 @@ Eigen::MatrixXd jacobian(const ModesOfParameters& modes_of, const std::vector<Fr
   return j;
 }
 
-int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
-              const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const CalibrationOptions& options) {
+struct StageResult {
+  int iterations = 0;
+  bool limit_reached = false;  // stopped by max_iterations, still improving
+};
+
+StageResult fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
+                      const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const CalibrationOptions& options) {
   const double w = options.regularization;
-  const Eigen::Index nt = static_cast<Eigen::Index>(targets.size());
+  const Eigen::Index nd = data_rows(targets);
   Eigen::VectorXd r = residuals(modes_of, targets, x, x0, w);
   double lambda = 1e-3;
-  int iterations = 0;
-  for (int it = 0; it < options.max_iterations && r.head(nt).norm() > options.tolerance; ++it) {
+  StageResult stage;
+  int& iterations = stage.iterations;
+  bool stalled = false;
+  std::vector<double> history;  // |r| at the start of each iteration
+  for (int it = 0; it < options.max_iterations && r.head(nd).norm() > options.tolerance; ++it) {
     iterations = it + 1;
     const Eigen::MatrixXd j = jacobian(modes_of, targets, x, x0, w, lo, hi);
+    // First-order optimality on the bounds (KKT): the gradient J^T r with the
+    // components that push a parameter out through the bound it sits on
+    // removed. Below 1e-10 of |J| |r| the fit is a constrained minimum, even
+    // with a residual that cannot reach zero.
+    Eigen::VectorXd g = j.transpose() * r;
+    for (Eigen::Index i = 0; i < g.size(); ++i)
+      if ((x(i) - lo(i) < 1e-9 && g(i) > 0) || (hi(i) - x(i) < 1e-9 && g(i) < 0)) g(i) = 0;
+    if (g.norm() <= 1e-10 * j.norm() * r.norm()) {
+      stalled = true;
+      break;
+    }
+    // A plateau: the residual fell by less than 1e-7 of itself over the last
+    // 50 iterations (a flat valley the data barely resolve): converged as far
+    // as the targets can tell.
+    history.push_back(r.norm());
+    if (history.size() > 50 && history[history.size() - 51] - r.norm() < 1e-7 * r.norm()) {
+      stalled = true;
+      break;
+    }
     bool improved = false;
     for (int attempt = 0; attempt < 20 && !improved; ++attempt) {
       Eigen::MatrixXd a = j.transpose() * j;
@@ -134,9 +204,13 @@ int fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarg
         lambda *= 10;
       }
     }
-    if (!improved) break;
+    if (!improved) {
+      stalled = true;  // a (local) minimum of the residual: converged, if not to zero
+      break;
+    }
   }
-  return iterations;
+  stage.limit_reached = !stalled && iterations == options.max_iterations && r.head(nd).norm() > options.tolerance;
+  return stage;
 }
 
 }  // namespace
@@ -170,9 +244,10 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
 
   // Refuse what the targets cannot determine, before fitting (9.3).
   {
-    if (nt < np && w == 0)
-      throw UnderdeterminedFit(fmt::format("{} target frequencies for {} parameters: fewer independent targets than parameters "
-                                           "(fit fewer parameters, or ask for regularization)", nt, np));
+    if (information_count(targets) < np && w == 0)
+      throw UnderdeterminedFit(fmt::format("{} target frequencies{} for {} parameters: fewer independent targets than parameters "
+                                           "(fit fewer parameters, add measured shapes, or ask for regularization)",
+                                           nt, information_count(targets) > nt ? fmt::format(" and shapes ({} pieces of information)", information_count(targets)) : "", np));
     const Eigen::MatrixXd s0 = jacobian(modes_of, targets, x, x0, 0.0, lo, hi);
     const int independent = independent_count(Eigen::JacobiSVD<Eigen::MatrixXd>(s0).singularValues());
     if (independent < np && w == 0)
@@ -193,7 +268,13 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
       const double f0 = start_modes[static_cast<std::size_t>(start_match[t])].frequency_hz;
       staged[t].frequency_hz = f0 * std::pow(targets[t].frequency_hz / f0, static_cast<double>(stage) / kStages);
     }
-    out.iterations += fit_stage(modes_of, staged, x, x0, lo, hi, options);
+    // The intermediate stages only carry the modes along; the last one is
+    // the fit, given ten times the iterations to reach its minimum.
+    CalibrationOptions stage_options = options;
+    if (stage == kStages) stage_options.max_iterations = 10 * options.max_iterations;
+    const StageResult r = fit_stage(modes_of, staged, x, x0, lo, hi, stage_options);
+    out.iterations += r.iterations;
+    if (stage == kStages) out.iteration_limit_reached = r.limit_reached;
   }
   out.fitted = from_log(x);
 
@@ -208,6 +289,7 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
     out.max_relative_error = std::max(out.max_relative_error, std::abs(m.frequency_hz - targets[t].frequency_hz) / targets[t].frequency_hz);
     const bool ok = targets[t].dominant.empty() || m.dominant == targets[t].dominant;
     out.label_matches.push_back(ok);
+    out.mac.push_back(targets[t].shape ? modal_assurance(targets[t].shape->measured, targets[t].shape->observation * m.shape) : -1.0);
     out.labels_match = out.labels_match && ok;
   }
   for (Eigen::Index i = 0; i < np; ++i) {
@@ -222,10 +304,10 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
   out.independent_targets = independent_count(out.singular_values);
   for (Eigen::Index i = out.independent_targets; i < np; ++i) out.unresolved.push_back(svd.matrixV().col(i));
   out.underdetermined = out.independent_targets < np;
-  Eigen::VectorXd freq_residual(nt);
-  for (Eigen::Index t = 0; t < nt; ++t) freq_residual(t) = std::log(out.achieved_hz[static_cast<std::size_t>(t)] / targets[static_cast<std::size_t>(t)].frequency_hz);
-  const double dof = static_cast<double>(std::max<Eigen::Index>(nt - np, 0));
-  const double variance = std::max(dof > 0 ? freq_residual.squaredNorm() / dof : 0.0, std::pow(options.target_relative_uncertainty, 2));
+  // The data residual (frequencies and shapes) per degree of freedom (9.4).
+  const Eigen::VectorXd data_residual = residuals(modes_of, targets, x, x0, 0.0);
+  const double dof = static_cast<double>(std::max<Eigen::Index>(information_count(targets) - np, 0));
+  const double variance = std::max(dof > 0 ? data_residual.squaredNorm() / dof : 0.0, std::pow(options.target_relative_uncertainty, 2));
   Eigen::MatrixXd info = s.transpose() * s;
   info.diagonal().array() += w * w;
   // Pseudo-inverse: a direction the targets do not see has no finite uncertainty.

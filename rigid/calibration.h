@@ -19,11 +19,18 @@
 // The dominant coordinates of the targets are never fitted: targets are paired
 // with modes by frequency alone and the labels are checked afterwards, as a
 // prediction (labels_match per target).
+// A target may also carry a measured mode shape (components at chosen
+// coordinates or frame points, as an accelerometer survey gives them): its
+// residual is the part of the measured unit shape s that the model's observed
+// unit shape p does not explain, sign(c) (s - c p) with c = s.p, whose squared
+// norm is 1 - MAC(s, p) (9.6), weighted by the target's shape weight. The
+// modal assurance criterion of every shaped target is reported.
 #pragma once
 
 #include <Eigen/Dense>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,10 +38,23 @@
 
 namespace framedyn::rigid {
 
+// A measured mode shape: `measured` (m components) against observation * phi,
+// the model's mode phi (all coordinates) seen at the same m places.
+struct ShapeTarget {
+  Eigen::MatrixXd observation;  // m x n
+  Eigen::VectorXd measured;     // m, SI (translations m, rotations rad)
+  double weight = 1.0;          // of the shape residual against the log-frequency residual
+};
+
 struct FrequencyTarget {
   double frequency_hz = 0.0;
   std::string dominant;  // the coordinate the mode is expected to be led by (checked, never fitted); may be empty
+  std::optional<ShapeTarget> shape;  // a measured mode shape, fitted through its MAC (9.6)
 };
+
+// Modal assurance criterion of two shapes: (a.b)^2 / ((a.a)(b.b)), in [0, 1],
+// 1 when one is a multiple of the other; 0 if either is zero.
+double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
 
 // The modes of the model with parameter values p (positive).
 using ModesOfParameters = std::function<std::vector<RigidMode>(const std::vector<double>& p)>;
@@ -70,6 +90,10 @@ struct CalibrationResult {
   double max_relative_error = 0.0;          // max |f - target| / target
   bool labels_match = false;                // every labelled target's mode has the target's dominant coordinate
   int iterations = 0;
+  // The last stage of the fit stopped at options.max_iterations with the
+  // residual still falling: the fitted values are not a converged minimum.
+  bool iteration_limit_reached = false;
+  std::vector<double> mac;                  // per target: MAC of the measured and the fitted shape (-1: no shape)
   // Identifiability at the fitted values (9.3).
   Eigen::VectorXd singular_values;          // of S, largest first
   int independent_targets = 0;              // singular values above 1e-3 of the largest

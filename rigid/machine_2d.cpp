@@ -25,6 +25,14 @@ std::vector<std::string> coordinate_names(Attachment a) {
   return {"x", "z", "theta_y", "w", "theta_v"};
 }
 
+// What each coordinate measures (Chapter II): X, Z and W translations; the
+// pitch angles theta_y, theta_v and the linkage angle psi rotations.
+std::vector<core::Quantity> coordinate_quantities(Attachment a) {
+  using core::Quantity;
+  if (a == Attachment::plow) return {Quantity::length, Quantity::length, Quantity::angle, Quantity::angle, Quantity::length, Quantity::angle};
+  return {Quantity::length, Quantity::length, Quantity::angle, Quantity::length, Quantity::angle};
+}
+
 int index_of(const std::vector<std::string>& names, const std::string& n) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == n) return static_cast<int>(i);
@@ -54,7 +62,7 @@ FrameMassProperties frame_mass_properties(const Frame2D& frame, const Cab2D& cab
 }
 
 Machine2D::Machine2D(const Machine2DParameters& p)
-    : p_(p), frame_(frame_mass_properties(p.frame, p.cab)), model_(coordinate_names(p.attachment)) {
+    : p_(p), frame_(frame_mass_properties(p.frame, p.cab)), model_(coordinate_names(p.attachment), coordinate_quantities(p.attachment)) {
   const std::vector<std::string>& names = model_.coordinate_names();
   const int n = model_.size();
   const int ix = index_of(names, "x"), iz = index_of(names, "z"), ity = index_of(names, "theta_y");

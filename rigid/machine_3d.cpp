@@ -26,6 +26,20 @@ std::vector<std::string> coordinate_names(Attachment a) {
   return names;
 }
 
+// What each coordinate measures (Chapter III): the frame's and the cab's
+// X, Y, Z (x, y, z; u, v, w) translations, every theta, the axle's roll eta,
+// the linkage's psi and alpha rotations.
+std::vector<core::Quantity> coordinate_quantities(Attachment a) {
+  using core::Quantity;
+  constexpr Quantity L = Quantity::length, A = Quantity::angle;
+  std::vector<Quantity> q{L, L, L, A, A, A, L, L, L, A, A, A, A};
+  if (a == Attachment::plow) {
+    q.push_back(A);
+    q.push_back(A);
+  }
+  return q;
+}
+
 int index_of(const std::vector<std::string>& names, const std::string& n) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == n) return static_cast<int>(i);
@@ -63,7 +77,7 @@ RigidPart3D combine(const std::vector<RigidPart3D>& parts, const std::string& na
   return c;
 }
 
-Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_names(p.attachment)) {
+Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_names(p.attachment), coordinate_quantities(p.attachment)) {
   const std::vector<std::string>& names = model_.coordinate_names();
   const int n = model_.size();
   auto col = [&](const char* c) { return index_of(names, c); };

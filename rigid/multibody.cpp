@@ -17,7 +17,12 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& r) {
   return s;
 }
 
-Multibody::Multibody(std::vector<std::string> names) : names_(std::move(names)) {}
+Multibody::Multibody(std::vector<std::string> names, std::vector<core::Quantity> quantities)
+    : names_(std::move(names)), quantities_(std::move(quantities)) {
+  if (quantities_.size() != names_.size()) throw std::invalid_argument("one quantity per coordinate");
+  for (core::Quantity q : quantities_)
+    if (q != core::Quantity::length && q != core::Quantity::angle) throw std::invalid_argument("a coordinate is a length or an angle");
+}
 
 int Multibody::add_body(Body body) {
   if (body.translation.cols() != size() || body.rotation.cols() != size())

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "core/units.h"
+
 namespace framedyn::rigid {
 
 using Jacobian = Eigen::Matrix<double, 3, Eigen::Dynamic>;  // 3 x n
@@ -61,10 +63,14 @@ struct SpringDamper {
 // The assembled model: what the integrators and modal analysis work with.
 class Multibody {
  public:
-  explicit Multibody(std::vector<std::string> coordinate_names);
+  // Each coordinate by name (the thesis's symbol) and what it measures: a
+  // translation (Quantity::length) or a rotation (Quantity::angle), so that
+  // every output gives it its unit from this table, never from its name.
+  Multibody(std::vector<std::string> coordinate_names, std::vector<core::Quantity> coordinate_quantities);
 
   int size() const { return static_cast<int>(names_.size()); }
   const std::vector<std::string>& coordinate_names() const { return names_; }
+  const std::vector<core::Quantity>& coordinate_quantities() const { return quantities_; }
 
   int add_body(Body body);
   int add_point(Point point);
@@ -90,6 +96,7 @@ class Multibody {
 
  private:
   std::vector<std::string> names_;
+  std::vector<core::Quantity> quantities_;
   std::vector<Body> bodies_;
   std::vector<Point> points_;
   std::vector<SpringDamper> elements_;

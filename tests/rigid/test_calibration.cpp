@@ -1,6 +1,8 @@
 // Calibration of vehicle parameters to target natural frequencies.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -9,6 +11,7 @@
 
 #include "coupling/rigid_study.h"
 #include "rigid/calibration.h"
+#include "rigid/machine_2d.h"
 #include "tests/support/calibration_checks.h"
 #include "tests/support/temp_dir.h"
 
@@ -84,6 +87,73 @@ TEST(Calibration, LabelsArePredictedNotFitted) {
   EXPECT_FALSE(r.label_matches[0]);
   EXPECT_FALSE(r.label_matches[1]);
   EXPECT_EQ(r.achieved_dominant[0], "b");
+}
+
+// MAC (Eq. 9.6): 1 for shapes that are multiples of each other, whatever the
+// sign; the squared cosine of their angle otherwise; 0 for orthogonal ones.
+TEST(Calibration, ModalAssuranceIsTheSquaredCosineOfTheShapesAngle) {
+  EXPECT_DOUBLE_EQ(rigid::modal_assurance(Eigen::Vector2d(1, 2), Eigen::Vector2d(2, 4)), 1.0);
+  EXPECT_DOUBLE_EQ(rigid::modal_assurance(Eigen::Vector2d(1, 2), Eigen::Vector2d(-3, -6)), 1.0);
+  EXPECT_DOUBLE_EQ(rigid::modal_assurance(Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 5)), 0.0);
+  EXPECT_NEAR(rigid::modal_assurance(Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 0)), 0.5, 1e-15);
+  EXPECT_EQ(rigid::modal_assurance(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0)), 0.0);
+}
+
+// Two unit masses in a chain, ground - k1 - mass a - k2 - mass b. One
+// frequency cannot determine (k1, k2) and is refused; the same frequency with
+// its measured shape (x_b / x_a = r) can: k2 = r w^2 / (r - 1) and
+// k1 = k2 (r - 1) + w^2 from the two rows of (K - w^2 M) x = 0. The "measured"
+// mode is that of k1 = 400, k2 = 250 N/m; the fit from (300, 300) returns both
+// to the fit tolerance and the shape with MAC 1.
+TEST(Calibration, MeasuredShapeDeterminesTheStiffnessesOneFrequencyCannot) {
+  const rigid::ModesOfParameters chain = [](const std::vector<double>& p) {
+    Eigen::Matrix2d k;
+    k << p[0] + p[1], -p[1], -p[1], p[1];
+    return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
+  };
+  const std::vector<rigid::RigidMode> truth = chain({400.0, 250.0});
+  const double w2 = std::pow(kTwoPi * truth[0].frequency_hz, 2);
+  const double r = truth[0].shape(1) / truth[0].shape(0);
+  ASSERT_NEAR(r * w2 / (r - 1), 250.0, 1e-9);  // the closed form the fit must reach
+  EXPECT_THROW(rigid::calibrate(chain, {300.0, 300.0}, {{truth[0].frequency_hz, ""}}), rigid::UnderdeterminedFit);
+  rigid::FrequencyTarget target{truth[0].frequency_hz, "", rigid::ShapeTarget{Eigen::MatrixXd::Identity(2, 2), 2.5 * truth[0].shape, 1.0}};
+  const rigid::CalibrationResult fit = rigid::calibrate(chain, {300.0, 300.0}, {target});
+  EXPECT_NEAR(fit.fitted[0] / 400.0, 1.0, 1e-8);
+  EXPECT_NEAR(fit.fitted[1] / 250.0, 1.0, 1e-8);
+  EXPECT_NEAR(fit.mac[0], 1.0, 1e-12);
+  EXPECT_EQ(fit.independent_targets, 2);
+  EXPECT_FALSE(fit.iteration_limit_reached);
+  // A shape seen at b alone carries no information (its scale is not
+  // measured): refused as one frequency alone is.
+  rigid::FrequencyTarget at_b{truth[0].frequency_hz, "", rigid::ShapeTarget{Eigen::RowVector2d(0, 1), Eigen::VectorXd::Constant(1, 1.0), 1.0}};
+  EXPECT_THROW(rigid::calibrate(chain, {300.0, 300.0}, {at_b}), rigid::UnderdeterminedFit);
+}
+
+// A fit cut short by its iteration limit while still improving says so; the
+// same fit with the default limit converges and does not. The two-mass chain
+// of the test above, fitted to both its frequencies with k1 started e^18
+// below its value: a step moves ln k1 by at most 1, so the 7 + 10 iterations
+// that one iteration a stage allows (the last stage gets ten times the limit)
+// cannot get there.
+TEST(Calibration, FitStoppedAtItsIterationLimitIsReported) {
+  const rigid::ModesOfParameters chain = [](const std::vector<double>& p) {
+    Eigen::Matrix2d k;
+    k << p[0] + p[1], -p[1], -p[1], p[1];
+    return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
+  };
+  const std::vector<rigid::RigidMode> truth = chain({400.0, 250.0});
+  const std::vector<rigid::FrequencyTarget> targets{{truth[0].frequency_hz, ""}, {truth[1].frequency_hz, ""}};
+  const double start = 400.0 * std::exp(-18.0);
+  rigid::CalibrationOptions short_fit;
+  short_fit.max_iterations = 1;
+  const rigid::CalibrationResult cut = rigid::calibrate(chain, {start, 250.0}, targets, short_fit);
+  EXPECT_LE(cut.iterations, 17);
+  EXPECT_TRUE(cut.iteration_limit_reached);
+  EXPECT_GT(std::abs(std::log(cut.fitted[0] / 400.0)), 0.5);
+  const rigid::CalibrationResult full = rigid::calibrate(chain, {start, 250.0}, targets);
+  EXPECT_FALSE(full.iteration_limit_reached);
+  EXPECT_NEAR(full.fitted[0] / 400.0, 1.0, 1e-8);
+  EXPECT_NEAR(full.fitted[1] / 250.0, 1.0, 1e-8);
 }
 
 // Fewer targets than parameters: refused before any fitting.
@@ -197,6 +267,52 @@ TEST(CalibrationStudy, UnderdeterminedFitIsRefusedAtTheBlockOrFlaggedWhenRegular
   EXPECT_EQ(r.calibration->regularization, 0.01);
   EXPECT_EQ(r.calibration->independent_targets, 2);
   EXPECT_EQ(r.calibration->unresolved.size(), 1u);
+}
+
+// A measured shape in the study's units (inches and radians) at two
+// coordinates and one frame point, taken from the machine's own pitch mode:
+// calibrating one stiffness to that mode's frequency and shape leaves it where
+// it was, with MAC 1. Had the translations been read as metres, the shape
+// would be another one (its MAC with the mode, computed here, is far from 1),
+// so the test sees the units.
+TEST(CalibrationStudy, MeasuredShapeInTheStudysUnitsIsTheMachinesOwnModeShape) {
+  const coupling::RigidStudy base = case1_with_calibration("");
+  const coupling::RigidResults own = coupling::run_rigid_study(base);
+  const auto pitch = std::find_if(own.modes.begin(), own.modes.end(), [](const rigid::RigidMode& m) { return m.dominant == "theta_y"; });
+  ASSERT_NE(pitch, own.modes.end());
+  const rigid::RigidMode& mode = *pitch;
+  const rigid::Machine2D machine(base.machine);
+  const int iz = machine.coordinate("z"), it = machine.coordinate("theta_y");
+  const double in = 0.0254, scale = 3.7;
+  const double point_z = (machine.frame_point_jacobian(Eigen::Vector2d(40 * in, 10 * in)).row(2) * mode.shape)(0);
+  const double z_in = scale * mode.shape(iz) / in, theta = scale * mode.shape(it), p_in = scale * point_z / in;
+  const std::string block = fmt::format(
+      "calibration:\n  parameters: [tires.front.normal.stiffness]\n  targets:\n    - frequency_hz: {:.17g}\n      shape:\n        components:\n"
+      "          - {{coordinate: z, value: {:.17g}}}\n          - {{coordinate: theta_y, value: {:.17g}}}\n"
+      "          - {{frame_point: [40, 10], direction: z, value: {:.17g}}}\n",
+      mode.frequency_hz, z_in, theta, p_in);
+  const coupling::RigidStudy study = case1_with_calibration(block);
+  const coupling::RigidResults r = coupling::run_rigid_study(study);
+  ASSERT_TRUE(r.calibration.has_value());
+  EXPECT_NEAR(r.calibration->fitted[0] / r.calibration->initial[0], 1.0, 1e-7);
+  EXPECT_NEAR(r.calibration->mac[0], 1.0, 1e-10);
+  const double mac_if_metres = rigid::modal_assurance(Eigen::Vector3d(z_in, theta, p_in), Eigen::Vector3d(mode.shape(iz), mode.shape(it), point_z));
+  EXPECT_LT(mac_if_metres, 0.99);
+}
+
+// A shape component at a coordinate the machine does not have is an input
+// error at its key, listing the machine's coordinates.
+TEST(CalibrationStudy, ShapeAtAnUnknownCoordinateIsRefusedAtItsKey) {
+  const coupling::RigidStudy study = case1_with_calibration(
+      "calibration:\n  parameters: [cab.inertia]\n  targets:\n    - frequency_hz: 6.268\n      shape:\n        components:\n"
+      "          - {coordinate: theta_q, value: 1}\n");
+  try {
+    coupling::run_rigid_study(study);
+    ADD_FAILURE() << "an unknown coordinate was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().key, "calibration.targets[0].shape.components[0].coordinate");
+    EXPECT_NE(std::string(e.what()).find("x, z, theta_y, w, theta_v"), std::string::npos) << e.what();
+  }
 }
 
 // Bounds of a rotary inertia from the declared box of its body: at most all

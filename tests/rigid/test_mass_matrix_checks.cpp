@@ -24,7 +24,7 @@ using rigid::Multibody;
 // Three coordinates: the frame's bounce and pitch, the cab's bounce. The cab
 // sits 2 m ahead of the frame's c.g. and moves with all three.
 Multibody frame_and_cab(double cab_mass, const Eigen::Matrix3d& cab_inertia) {
-  Multibody m({"z_frame", "theta_frame", "z_cab"});
+  Multibody m({"z_frame", "theta_frame", "z_cab"}, {core::Quantity::length, core::Quantity::angle, core::Quantity::length});
   Body frame{"frame", 1000.0, Eigen::Vector3d(300.0, 2000.0, 2200.0).asDiagonal(), rigid::Jacobian::Zero(3, 3), rigid::Jacobian::Zero(3, 3)};
   frame.translation(2, 0) = 1.0;
   frame.rotation(1, 1) = 1.0;
@@ -65,7 +65,7 @@ TEST(MassMatrixChecks, ACoordinateThatMovesOnlyAMasslessBodyNamesItAndTheBody) {
 }
 
 TEST(MassMatrixChecks, ACoordinateThatMovesNoBodySaysSo) {
-  Multibody m({"z_frame", "x_point"});
+  Multibody m({"z_frame", "x_point"}, {core::Quantity::length, core::Quantity::length});
   Body frame{"frame", 1000.0, Eigen::Matrix3d::Identity(), rigid::Jacobian::Zero(3, 2), rigid::Jacobian::Zero(3, 2)};
   frame.translation(2, 0) = 1.0;
   m.add_body(frame);
