@@ -326,9 +326,6 @@ std::vector<Row> rows() {
       mesh_row("INP-50", kData, "*RELEASE\n2, S1, T\n2, S2, T\n" + kData, "S2, T", "*RELEASE"),
       mesh_row("INP-51", kData, "*TRANSVERSE SHEAR STIFFNESS\n1e8, 1e8\n" + kData, "*TRANSVERSE", "*TRANSVERSE SHEAR STIFFNESS"),
       mesh_row("INP-52", "SECTION=RECT", "SECTION=RECT, RAYLEIGH=YES", "*BEAM SECTION", "*BEAM SECTION"),
-      // distributed loads and releases on three-node beams: not implemented, refused
-      quadratic_mesh_row("INP-53", "*DLOAD\nFRAME, PZ, 100.\n", "FRAME, PZ", "*DLOAD"),
-      quadratic_mesh_row("INP-54", "*RELEASE\n1, S2, M1\n", "1, S2", "*RELEASE"),
       // rigid links (fem/rigid_links.cpp, through the reader)
       mesh_row("INP-55", kData, "*NODE\n4, 0, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=1\n*BOUNDARY\n4, 1\n" + kData,
                "*RIGID BODY, NSET=ARM, REF NODE=1", "*RIGID BODY"),
