@@ -542,8 +542,6 @@ std::vector<Row> rows() {
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:4: frequency [Hz]", true},
       {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
-      {"CLI-33", {{"frame.inp", edit(kMesh, "*BOUNDARY\n", "*DLOAD\nFRAME, PZ, 100.\n*BOUNDARY\n")}},
-       "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results", "frame.inp: *DLOAD", true},
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");
