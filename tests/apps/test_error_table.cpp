@@ -227,14 +227,6 @@ Row mesh_row(const std::string& id, const std::string& from, const std::string& 
   return {id, {{"frame.inp", text}}, command, marker.empty() ? "frame.inp: " + key : at("frame.inp", text, marker, key)};
 }
 
-// The table's mesh with its two B31 elements made one B32R element, and
-// `keywords` added before the supports.
-Row quadratic_mesh_row(const std::string& id, const std::string& keywords, const std::string& marker, const std::string& key) {
-  const std::string text = edit(edit(kMesh, "*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n", "*ELEMENT, TYPE=B32R, ELSET=FRAME\n1, 1, 2, 3\n"),
-                                "*BOUNDARY\n", keywords + "*BOUNDARY\n");
-  return {id, {{"frame.inp", text}}, "static frame.inp --out results -q", at("frame.inp", text, marker, key)};
-}
-
 Row study_row(const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key,
               const std::string& base = kStudy2D) {
   const std::string text = edit(base, from, to);
