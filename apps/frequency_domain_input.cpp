@@ -39,15 +39,9 @@ FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& opt,
   progress.stage("reading " + opt.mesh.path);
   f.model = std::make_unique<fem::FrameModel>(opt.mesh.load());
   const fem::FrameModel& model = *f.model;
-  // The beams' line loads (*DLOAD) enter the static solve with fixed-end terms
-  // in the section forces; the frequency-domain stress recovery has no such
-  // terms yet, so a line load would give wrong fiber stresses: refused.
-  if (!model.element_loads.empty())
-    throw core::InputError({opt.mesh.path, 0, "*DLOAD"},
-                           fmt::format("nodal loads (*CLOAD, or GRAV on MASS elements) as the load amplitudes of the {} analysis (line loads "
-                                       "on beams, *DLOAD P1, P2, PX, PY, PZ and GRAV on beams, are not implemented in the frequency domain)",
-                                       analysis),
-                           fmt::format("line loads on {} beam element(s)", model.element_loads.size()));
+  // The beams' line loads (*DLOAD) are load amplitudes like the nodal ones:
+  // their consistent nodal loads are in applied_loads, their fixed-end terms
+  // in the stress outputs' residual row (fem/modal_frequency_response.h).
   f.load = fem::applied_loads(model);
   if (f.load.cwiseAbs().maxCoeff() == 0.0)
     throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, fmt::format("a nonzero nodal load (the load amplitudes of the {} analysis)", analysis),

@@ -125,7 +125,7 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
       sp.x_unit = "Hz";
       sp.y_label = "fiber stress amplitude";
       sp.y_unit = S;
-      core::PlotSeries ss{fmt::format("element {}, end {}, stress point {}", r.max_fiber_stress_point.element_id, r.max_fiber_stress_point.end + 1,
+      core::PlotSeries ss{fmt::format("element {}, {}, stress point {}", r.max_fiber_stress_point.element_id, fem::describe_station(r.max_fiber_stress_point),
                                       r.max_fiber_stress_point.stress_point + 1),
                           r.frequencies_hz, {}};
       for (Eigen::Index k = 0; k < r.max_fiber_stress_spectrum.size(); ++k) ss.y.push_back(r.max_fiber_stress_spectrum(k) * sf);

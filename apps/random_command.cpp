@@ -114,7 +114,7 @@ int run_random(const RandomCommandOptions& opt) {
     figures.push_back("response_psd.png");
     if (has_stress) {
       core::write_png(spectrum_plot(fmt::format("Fiber stress PSD in element {}, the largest", r.max_stress_psd_point.element_id), "fiber stress PSD", S2,
-                                    fmt::format("element {}, end {}, stress point {}", r.max_stress_psd_point.element_id, r.max_stress_psd_point.end + 1,
+                                    fmt::format("element {}, {}, stress point {}", r.max_stress_psd_point.element_id, fem::describe_station(r.max_stress_psd_point),
                                                 r.max_stress_psd_point.stress_point + 1),
                                     r.frequencies_hz, r.max_stress_psd_spectrum, sf * sf),
                       folder.path_of("stress_psd.png"));

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "fem/beam_element.h"
+#include "fem/quadratic_beam_element.h"
 #include "fem/section_forces.h"
 
 namespace framedyn::coupling {
@@ -154,11 +155,13 @@ SectionHistory section_history(const fem::FrameModel& model, const Eigen::Matrix
     const int b = model.beam_index(id);
     if (b < 0) continue;
     beams.push_back(b);
-    geometry.push_back(fem::beam_geometry(model, model.beams[static_cast<std::size_t>(b)]));
+    const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(b)];
+    geometry.push_back(beam.is_quadratic() ? fem::BeamGeometry{} : fem::beam_geometry(model, beam));
+    const double length = beam.is_quadratic() ? fem::quadratic_beam_length(model, beam) : geometry.back().data.length;
     for (int s = 0; s < stations; ++s) {
       h.element_ids.push_back(id);
       h.station_index.push_back(s);
-      h.station_x.push_back(geometry.back().data.length * s / (stations - 1));
+      h.station_x.push_back(length * s / (stations - 1));  // arc length on a three-node beam
     }
   }
   const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
@@ -166,6 +169,17 @@ SectionHistory section_history(const fem::FrameModel& model, const Eigen::Matrix
   for (Eigen::Index j = 0; j < u.cols(); ++j) {
     const Eigen::VectorXd uj = u.col(j);
     for (std::size_t e = 0; e < beams.size(); ++e) {
+      if (model.beams[static_cast<std::size_t>(beams[e])].is_quadratic()) {  // B32, B32R: stations by statics of the nodal forces
+        const std::vector<fem::StationResult> st = fem::beam_stations(model, beams[e], uj, stations);
+        for (int s = 0; s < stations; ++s) {
+          const fem::StationResult& r = st[static_cast<std::size_t>(s)];
+          double smax = 0.0;
+          for (double v : r.fiber_stress) smax = std::max(smax, std::abs(v));
+          h.values.row(j * ns + static_cast<Eigen::Index>(e) * stations + s) << r.forces.n, r.forces.vy, r.forces.vz, r.forces.t, r.forces.my,
+              r.forces.mz, smax;
+        }
+        continue;
+      }
       const fem::Vector12d f = fem::element_end_forces(geometry[e], model.beams[static_cast<std::size_t>(beams[e])], uj);
       for (int s = 0; s < stations; ++s) {
         const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;

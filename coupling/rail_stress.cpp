@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "fem/beam_element.h"
+#include "fem/section_forces.h"
 
 namespace framedyn::coupling {
 
@@ -42,6 +43,14 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
     std::vector<fem::BeamGeometry> geometry;
     for (int b : beams) {
       const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(b)];
+      if (beam.is_quadratic()) {  // B32, B32R: stations evenly in arc length along the (possibly curved) element
+        geometry.emplace_back();
+        for (const fem::StationResult& st : fem::beam_stations(model, b, Eigen::VectorXd::Zero(model.dof_count()), stations)) {
+          r.station_element_ids.push_back(beam.id);
+          r.station_points.push_back(st.point);
+        }
+        continue;
+      }
       geometry.push_back(fem::beam_geometry(model, beam));
       const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
       const Eigen::Vector3d& e = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
@@ -58,14 +67,23 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
       const double t = times(j);
       for (std::size_t e = 0; e < beams.size(); ++e) {
         const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(beams[e])];
+        // Section forces at the element's stations: from the two end forces of a
+        // two-node beam, by statics of the nodal forces on a three-node one.
         const fem::BeamGeometry& g = geometry[e];
-        const fem::Vector12d f = fem::element_end_forces(g, beam, uj);
-        const fem::SectionProperties& sec = g.data.section;
+        std::vector<fem::SectionForces> forces;
+        fem::SectionProperties sec;
+        if (beam.is_quadratic()) {
+          for (const fem::StationResult& st : fem::beam_stations(model, beams[e], uj, stations)) forces.push_back(st.forces);
+          sec = fem::section_geometry(model, beam.section, fem::BeamTheory::timoshenko).data.section;
+        } else {
+          const fem::Vector12d f = fem::element_end_forces(g, beam, uj);
+          for (int s = 0; s < stations; ++s) forces.push_back(fem::section_forces_at(f, (static_cast<double>(s) / (stations - 1)) * g.data.length));
+          sec = g.data.section;
+        }
         for (int s = 0; s < stations; ++s) {
           const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;
           const Eigen::Vector3d& x = r.station_points[static_cast<std::size_t>(k)];
-          const double xs = (static_cast<double>(s) / (stations - 1)) * g.data.length;
-          const fem::SectionForces sf = fem::section_forces_at(f, xs);
+          const fem::SectionForces& sf = forces[static_cast<std::size_t>(s)];
           const double m = std::hypot(sf.my, sf.mz);
           r.envelope_bending_moment(k) = std::max(r.envelope_bending_moment(k), m);
           r.envelope_mz(k) = std::max(r.envelope_mz(k), std::abs(sf.mz));

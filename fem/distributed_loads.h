@@ -1,6 +1,8 @@
 // Distributed loads on beam elements (*DLOAD PX, PY, PZ, P1, P2, GRAV): the
 // consistent nodal loads they put into the load vector, and the line load
 // each element carries for the recovery of its section forces.
+// Three-node beams (B32, B32R): p = int N^T q ds by Gauss integration over the
+// (possibly curved) element, quadratic_beam_consistent_load.
 //
 // A uniform force per length q on an element of length L is replaced by its
 // consistent nodal loads p = integral N^T q dx: qL/2 at each node and the end
@@ -27,7 +29,16 @@ Eigen::VectorXd element_load_vector(const FrameModel& model);
 // a harmonic or transient run uses as the mesh's load pattern.
 Eigen::VectorXd applied_load_vector(const FrameModel& model);
 
-// The summed uniform line load of every beam (index as model.beams), N/m, global components.
-std::vector<Eigen::Vector3d> beam_line_loads(const FrameModel& model);
+// The summed uniform line load of a beam: `global` (N/m, global components)
+// plus `section` (N/m along the section's axes as written, n1 and n2 = t x n1;
+// only on three-node beams, whose axes turn along a curved element).
+struct BeamLineLoad {
+  Eigen::Vector3d global = Eigen::Vector3d::Zero();
+  Eigen::Vector2d section = Eigen::Vector2d::Zero();
+  bool is_zero() const { return global.isZero(0.0) && section.isZero(0.0); }
+};
+
+// The summed line load of every beam (index as model.beams).
+std::vector<BeamLineLoad> beam_line_loads(const FrameModel& model);
 
 }  // namespace framedyn::fem

@@ -99,9 +99,14 @@ struct NodalLoad {
 
 // A uniform line load on a beam element (*DLOAD PX, PY, PZ, P1, P2 and the
 // weight of the beam under GRAV), force per length in global components.
+// P1 and P2 on a three-node beam follow the section's axes as written (n1,
+// n2 = t x n1), which turn along a curved element: they are kept in those
+// axes (section_force_per_length) and resolved at each point of the element.
+// On a two-node beam the reader resolves them into force_per_length.
 struct ElementLoad {
   int beam = 0;                  // index into FrameModel::beams
   Eigen::Vector3d force_per_length = Eigen::Vector3d::Zero();  // N/m, global axes
+  Eigen::Vector2d section_force_per_length = Eigen::Vector2d::Zero();  // N/m along n1, n2 (three-node beams only)
 };
 
 // A rigid link (*RIGID BODY, *MPC BEAM): the slave nodes follow the small

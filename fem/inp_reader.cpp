@@ -1088,11 +1088,8 @@ void Parser::apply_releases(FrameModel& model) const {
     for (int id : element_targets(r.target, r.where)) {
       const int bi = model.beam_index(id);
       if (bi < 0)
-        throw InputError(r.where, "beam elements (B31, B33) to release", fmt::format("element {} of type {}", id, elements_[element_index_.at(id)].type));
+        throw InputError(r.where, "beam elements (B31, B32, B32R, B33) to release", fmt::format("element {} of type {}", id, elements_[element_index_.at(id)].type));
       BeamElement& beam = model.beams[static_cast<std::size_t>(bi)];
-      if (beam.is_quadratic())
-        throw InputError(r.where, "two-node beam elements (B31, B33) to release (releases of three-node beams are not implemented)",
-                         fmt::format("element {} of type {}", id, elements_[element_index_.at(id)].type));
       beam.released |= r.mask;
       // On a section with a product of inertia the element works in principal
       // axes: a single bending release (M1 or M2 alone) would not be the
@@ -1103,7 +1100,10 @@ void Parser::apply_releases(FrameModel& model) const {
             throw InputError(r.where, "M1 and M2 released together on a section with I12 != 0 (its elements bend about principal axes)",
                              fmt::format("element {}: {}", id, describe_releases(beam.released)));
       try {
-        beam_release_transformation(beam_geometry(model, beam).data);
+        if (beam.is_quadratic())
+          quadratic_beam_release_transformation(model, beam, section_geometry(model, beam.section, BeamTheory::timoshenko));
+        else
+          beam_release_transformation(beam_geometry(model, beam).data);
       } catch (const std::invalid_argument& e) {
         throw InputError(r.where, "releases that leave the element stiff against every motion of its nodes", fmt::format("element {}: {}", id, e.what()));
       }
@@ -1131,9 +1131,6 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
     for (int id : ids) {
       const int bi = model.beam_index(id);
       const RawElement& raw = elements_[element_index_.at(id)];
-      if (bi >= 0 && model.beams[static_cast<std::size_t>(bi)].is_quadratic())
-        throw InputError(d.where, "two-node beam elements (B31, B33) for *DLOAD (distributed loads on three-node beams are not implemented)",
-                         fmt::format("element {} of type {}", id, raw.type));
       if (d.type == "GRAV") {
         const double g = d.magnitude * acceleration_factor;
         if (bi >= 0) {
@@ -1156,14 +1153,21 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
         continue;
       }
       if (bi < 0)
-        throw InputError(d.where, "beam elements (B31, B33) for a " + d.type + " line load", fmt::format("element {} of type {}", id, raw.type));
+        throw InputError(d.where, "beam elements (B31, B32, B32R, B33) for a " + d.type + " line load", fmt::format("element {} of type {}", id, raw.type));
       const BeamElement& beam = model.beams[static_cast<std::size_t>(bi)];
       const double q = units.to_si(d.magnitude, Quantity::force_per_length);
       Eigen::Vector3d direction = Eigen::Vector3d::Zero();
       if (d.type == "PX") direction = Eigen::Vector3d::UnitX();
       else if (d.type == "PY") direction = Eigen::Vector3d::UnitY();
       else if (d.type == "PZ") direction = Eigen::Vector3d::UnitZ();
-      else {
+      else if (beam.is_quadratic()) {
+        // P1, P2 follow the section's axes as written, which turn along a curved element.
+        if (!(std::abs(q) <= kLargestSi)) throw InputError(d.where, "a force per length of magnitude at most 1e300 in SI units", fmt::format("{:g}", d.magnitude));
+        ElementLoad load{bi, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()};
+        load.section_force_per_length(d.type == "P1" ? 0 : 1) = q;
+        model.element_loads.push_back(load);
+        continue;
+      } else {
         // The section's local axes as written (n1, n2 = t x n1), not the principal axes the element may use.
         const Eigen::Matrix3d axes = beam_local_axes(model.nodes[static_cast<std::size_t>(beam.node_a)].position,
                                                      model.nodes[static_cast<std::size_t>(beam.node_b)].position,

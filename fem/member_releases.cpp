@@ -1,16 +1,27 @@
 // Static condensation of released member-end rotations; see member_releases.h.
 #include "fem/member_releases.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
 namespace framedyn::fem {
 
 Eigen::Matrix<double, 12, 12> release_transformation(const Eigen::Matrix<double, 12, 12>& k, ReleaseMask released) {
-  Eigen::Matrix<double, 12, 12> t = Eigen::Matrix<double, 12, 12>::Identity();
-  if (released == 0) return t;
-  std::vector<int> r, c;
-  for (int i = 0; i < 12; ++i) ((released >> i) & 1u ? r : c).push_back(i);
+  if (released == 0) return Eigen::Matrix<double, 12, 12>::Identity();
+  std::vector<int> r;
+  for (int i = 0; i < 12; ++i)
+    if ((released >> i) & 1u) r.push_back(i);
+  return release_transformation(Eigen::MatrixXd(k), r, released);
+}
+
+Eigen::MatrixXd release_transformation(const Eigen::MatrixXd& k, const std::vector<int>& r, ReleaseMask released) {
+  const int n = static_cast<int>(k.rows());
+  Eigen::MatrixXd t = Eigen::MatrixXd::Identity(n, n);
+  if (r.empty()) return t;
+  std::vector<int> c;
+  for (int i = 0; i < n; ++i)
+    if (std::find(r.begin(), r.end(), i) == r.end()) c.push_back(i);
   const int nr = static_cast<int>(r.size()), nc = static_cast<int>(c.size());
   Eigen::MatrixXd krr(nr, nr), krc(nr, nc);
   for (int i = 0; i < nr; ++i) {

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace framedyn::fem {
 
@@ -32,6 +33,11 @@ constexpr ReleaseMask release_bit(int end, int local_rotation) { return static_c
 // std::invalid_argument if the released DOFs leave the element free to move
 // (K_rr singular: torsion released at both ends).
 Eigen::Matrix<double, 12, 12> release_transformation(const Eigen::Matrix<double, 12, 12>& k, ReleaseMask released);
+
+// The same for any element stiffness `k` (n x n) and the indices of its
+// released DOFs (the three-node beams condense their end rotations, taken in
+// the local axes at the element's ends, this way).
+Eigen::MatrixXd release_transformation(const Eigen::MatrixXd& k, const std::vector<int>& released_dofs, ReleaseMask released);
 
 // "S1: M1, T" for messages and reports.
 std::string describe_releases(ReleaseMask released);

@@ -100,23 +100,38 @@ LinearOutputs displacement_outputs(const ModalFrequencyResponse& response, const
   return out;
 }
 
+std::string describe_station(const FiberPoint& point) {
+  if (point.stations == 2) return fmt::format("end {}", point.station + 1);
+  return fmt::format("station {} of {}", point.station + 1, point.stations);
+}
+
+int frequency_response_stations(const BeamElement& beam, const BeamLineLoad& load) {
+  if (!load.is_zero()) return 9;
+  return beam.is_quadratic() ? 3 : 2;
+}
+
 LinearOutputs fiber_stress_outputs(const FrameModel& model, const ModalFrequencyResponse& response, std::vector<FiberPoint>& points) {
-  // Stresses are linear in u: recover them for each mode shape and for the residual.
-  auto end_stresses = [&](const Eigen::VectorXd& u, bool label) {
-    const std::vector<StationResult> stations = recover_stations(model, u, 2);
+  const std::vector<BeamLineLoad> loads = beam_line_loads(model);
+  const BeamLineLoad none;
+  // Stresses are linear in u and in the line loads: recover them for each mode
+  // shape (no load) and for the residual (with the load pattern's line loads).
+  auto stresses = [&](const Eigen::VectorXd& u, bool with_loads_and_labels) {
     std::vector<double> values;
-    for (const StationResult& s : stations)
-      for (std::size_t p = 0; p < s.fiber_stress.size(); ++p) {
-        values.push_back(s.fiber_stress[p]);
-        if (label) points.push_back({s.element_id, s.station, static_cast<int>(p)});
-      }
+    for (std::size_t i = 0; i < model.beams.size(); ++i) {
+      const int n = frequency_response_stations(model.beams[i], loads[i]);
+      for (const StationResult& s : beam_stations(model, static_cast<int>(i), u, n, with_loads_and_labels ? loads[i] : none))
+        for (std::size_t p = 0; p < s.fiber_stress.size(); ++p) {
+          values.push_back(s.fiber_stress[p]);
+          if (with_loads_and_labels) points.push_back({s.element_id, s.station, n, static_cast<int>(p)});
+        }
+    }
     return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size())).eval();
   };
   points.clear();
   LinearOutputs out;
-  out.residual = end_stresses(response.residual, true);
+  out.residual = stresses(response.residual, true);
   out.modal.resize(out.residual.size(), response.mode_count());
-  for (int j = 0; j < response.mode_count(); ++j) out.modal.col(j) = end_stresses(response.shapes.col(j), false);
+  for (int j = 0; j < response.mode_count(); ++j) out.modal.col(j) = stresses(response.shapes.col(j), false);
   return out;
 }
 

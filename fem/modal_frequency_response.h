@@ -26,8 +26,11 @@
 #include <Eigen/Dense>
 
 #include <complex>
+#include <string>
 #include <vector>
 
+#include "fem/distributed_loads.h"
+#include "fem/frame_model.h"
 #include "fem/modal_transient.h"
 
 namespace framedyn::fem {
@@ -72,16 +75,35 @@ struct LinearOutputs {
 // The displacements at the given global DOFs.
 LinearOutputs displacement_outputs(const ModalFrequencyResponse& response, const std::vector<int>& global_dofs);
 
-// One fiber-stress output: a stress point of a section at one end of a beam
-// element. Without loads between the nodes the section forces are linear
-// along an element, so |sigma(x)| of a complex amplitude, convex in x, is
-// largest at an end: the two ends cover the whole element.
+// One fiber-stress output: a stress point of a section at one station of a
+// beam element. The stations cover each element's peak (Eq. H.7):
+//   - a two-node beam without a line load: its two ends. Its section forces
+//     are linear along it, so |sigma(x)| of a complex amplitude, convex in x,
+//     is largest at an end;
+//   - a three-node beam without a line load: its ends and its middle (the
+//     midside node, when it sits at the middle of the arc): the forces are
+//     linear on each half, with a kink where the midside node's force acts;
+//   - any beam with a line load: 9 stations (eighths). The load adds the
+//     parabola q x (L - x)/2 to the moment; sampling at spacing L/8 misses a
+//     parabola's peak by at most q (L/16)^2 / 2 = q L^2/512, 1/64 of the
+//     element's own sag q L^2/8.
 struct FiberPoint {
   int element_id = 0;
-  int end = 0;          // 0: node a, 1: node b
+  int station = 0;      // 0 (node a) .. stations - 1 (node b), evenly spaced in arc length
+  int stations = 2;     // stations of this element
   int stress_point = 0; // index into the section's stress points
 };
-// Fiber stresses (Pa) at both ends of every beam (fem/section_forces' recovery); `points` labels the rows.
+// "end 1", "end 2" on an element with two stations, else "station 3 of 9", for legends.
+std::string describe_station(const FiberPoint& point);
+// Stations per element of the frequency-domain stress outputs (see FiberPoint).
+int frequency_response_stations(const BeamElement& beam, const BeamLineLoad& load);
+
+// Fiber stresses (Pa) at the stations of every beam; `points` labels the rows.
+// The load pattern's line loads (*DLOAD on beams) act with the same complex
+// amplitude as the nodal loads, so their fixed-end terms (the statics of the
+// load between the nodes and the consistent loads taken off the nodal forces,
+// section_forces.h) go into the residual row y_residual, which multiplies the
+// load's amplitude (Eq. H.8); the mode shapes' rows carry none.
 LinearOutputs fiber_stress_outputs(const FrameModel& model, const ModalFrequencyResponse& response, std::vector<FiberPoint>& points);
 
 }  // namespace framedyn::fem

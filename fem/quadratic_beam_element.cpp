@@ -8,6 +8,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem/member_releases.h"
+
 namespace framedyn::fem {
 
 namespace {
@@ -136,7 +138,9 @@ void check_quadratic_beam_geometry(const FrameModel& model, const BeamElement& b
 
 double quadratic_beam_length(const FrameModel& model, const BeamElement& beam) { return arc_length_to(model, beam, 1.0); }
 
-Matrix18d quadratic_beam_stiffness(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section) {
+namespace {
+
+Matrix18d unreleased_stiffness(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section) {
   const Rule& rule = beam.reduced_integration ? kTwoPoint : kThreePoint;
   const Eigen::Matrix<double, 6, 1> d = section_stiffness(section.data);
   Matrix18d k = Matrix18d::Zero();
@@ -149,7 +153,16 @@ Matrix18d quadratic_beam_stiffness(const FrameModel& model, const BeamElement& b
   return 0.5 * (k + k.transpose());
 }
 
-Matrix18d quadratic_beam_mass(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section, MassFormulation formulation) {
+// The line load at xi, global components.
+Eigen::Vector3d line_load_at(const FrameModel& model, const BeamElement& beam, const BeamLineLoad& load, double xi) {
+  if (load.section.isZero(0.0)) return load.global;
+  // The section's axes as written (not principal), as for P1/P2 on two-node beams.
+  const Eigen::Matrix3d axes =
+      beam_local_axes(Eigen::Vector3d::Zero(), tangent_vector(model, beam, xi), model.sections[static_cast<std::size_t>(beam.section)].n1_direction);
+  return load.global + load.section(0) * axes.row(1).transpose() + load.section(1) * axes.row(2).transpose();
+}
+
+Matrix18d unreleased_mass(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section, MassFormulation formulation) {
   const BeamElementData& e = section.data;
   const double rho_a = e.density * e.section.area;
   const Eigen::Vector3d rho_i(e.density * e.section.polar_moment(), e.density * e.section.i11, e.density * e.section.i22);
@@ -174,13 +187,62 @@ Matrix18d quadratic_beam_mass(const FrameModel& model, const BeamElement& beam, 
   return 0.5 * (m + m.transpose());
 }
 
-std::vector<StationResult> quadratic_beam_stations(const FrameModel& model, const BeamElement& beam, const Eigen::VectorXd& u, int stations) {
+}  // namespace
+
+Matrix18d quadratic_beam_release_transformation(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section) {
+  if (beam.released == 0) return Matrix18d::Identity();
+  // Q: the end nodes' rotations into the local axes at their end.
+  Matrix18d q = Matrix18d::Identity();
+  q.block<3, 3>(3, 3) = quadratic_beam_point(model, beam, section, -1.0).axes;
+  q.block<3, 3>(15, 15) = quadratic_beam_point(model, beam, section, 1.0).axes;
+  std::vector<int> released;  // local DOFs 6 end + 3..5 -> element DOFs 3..5 (node a), 15..17 (node b)
+  for (int end = 0; end < 2; ++end)
+    for (int k = kReleaseTorsion; k <= kReleaseM2; ++k)
+      if (beam.released & release_bit(end, k)) released.push_back(12 * end + k);
+  const Eigen::MatrixXd k_end = q * unreleased_stiffness(model, beam, section) * q.transpose();
+  const Matrix18d t = release_transformation(k_end, released, beam.released);
+  return q.transpose() * t * q;
+}
+
+Matrix18d quadratic_beam_stiffness(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section) {
+  const Matrix18d k = unreleased_stiffness(model, beam, section);
+  if (beam.released == 0) return k;
+  const Matrix18d g = quadratic_beam_release_transformation(model, beam, section);
+  const Matrix18d kr = g.transpose() * k * g;
+  return 0.5 * (kr + kr.transpose());
+}
+
+Matrix18d quadratic_beam_mass(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section, MassFormulation formulation) {
+  const Matrix18d m = unreleased_mass(model, beam, section, formulation);
+  if (beam.released == 0) return m;
+  const Matrix18d g = quadratic_beam_release_transformation(model, beam, section);
+  const Matrix18d mr = g.transpose() * m * g;
+  return 0.5 * (mr + mr.transpose());
+}
+
+Vector18d quadratic_beam_consistent_load(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section,
+                                         const BeamLineLoad& load) {
+  Vector18d p = Vector18d::Zero();
+  if (load.is_zero()) return p;
+  for (int g = 0; g < 6; ++g) {
+    const double xi = kSixPoints[g];
+    const Eigen::Vector3d q = line_load_at(model, beam, load, xi) * (tangent_vector(model, beam, xi).norm() * kSixWeights[g]);
+    const Eigen::Vector3d n = shape(xi);
+    for (int i = 0; i < 3; ++i) p.segment<3>(6 * i) += n(i) * q;
+  }
+  if (beam.released == 0) return p;
+  return quadratic_beam_release_transformation(model, beam, section).transpose() * p;
+}
+
+std::vector<StationResult> quadratic_beam_stations(const FrameModel& model, const BeamElement& beam, const Eigen::VectorXd& u, int stations,
+                                                   const BeamLineLoad& load) {
   const SectionGeometry section = section_geometry(model, beam.section, BeamTheory::timoshenko);
   const std::array<int, 18> dofs = quadratic_beam_dofs(beam);
   Vector18d ue;
   for (int i = 0; i < 18; ++i) ue(i) = u(dofs[static_cast<std::size_t>(i)]);
-  // Forces the nodes exert on the element, global components.
-  const Vector18d f = quadratic_beam_stiffness(model, beam, section) * ue;
+  // Forces the nodes exert on the element, global components (with the line
+  // load, the element's own load is taken off: K u - p).
+  const Vector18d f = quadratic_beam_stiffness(model, beam, section) * ue - quadratic_beam_consistent_load(model, beam, section, load);
   const double length = quadratic_beam_length(model, beam);
   const double midside = arc_length_to(model, beam, 0.0);
   const auto nodes = element_nodes(beam);
@@ -205,6 +267,19 @@ std::vector<StationResult> quadratic_beam_stations(const FrameModel& model, cons
       const Eigen::Vector3d fi = f.segment<3>(6 * i), mi = f.segment<3>(6 * i + 3);
       force += fi;
       moment += mi + (node_position(model, nodes[static_cast<std::size_t>(i)]) - p.position).cross(fi);
+    }
+    // The line load on the part from node a to the cut (xi from -1 to the cut's).
+    if (!load.is_zero() && xi > -1.0) {
+      const double half = 0.5 * (xi + 1.0);
+      for (int g = 0; g < 6; ++g) {
+        const double xg = -1.0 + half * (kSixPoints[g] + 1.0);
+        const Eigen::Vector3d q = line_load_at(model, beam, load, xg) * (tangent_vector(model, beam, xg).norm() * kSixWeights[g] * half);
+        Eigen::Vector3d at = Eigen::Vector3d::Zero();
+        const Eigen::Vector3d n = shape(xg);
+        for (int i = 0; i < 3; ++i) at += n(i) * node_position(model, nodes[static_cast<std::size_t>(i)]);
+        force += q;
+        moment += (at - p.position).cross(q);
+      }
     }
     // The cut's positive face (outward normal +t) carries minus the forces on the part before it.
     const Eigen::Vector3d fl = -(p.axes * force), ml = -(p.axes * moment);

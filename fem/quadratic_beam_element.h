@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "fem/beam_element.h"
+#include "fem/distributed_loads.h"
 #include "fem/frame_model.h"
 #include "fem/section_forces.h"
 
@@ -56,17 +57,36 @@ void check_quadratic_beam_geometry(const FrameModel& model, const BeamElement& b
 // Arc length of the element, m.
 double quadratic_beam_length(const FrameModel& model, const BeamElement& beam);
 
-// Element matrices in global components, DOFs as quadratic_beam_dofs.
+// Member-end releases (*RELEASE, beam.released): G (global components, DOFs
+// as quadratic_beam_dofs) with the element's displacements u = G u_c, the
+// released end rotations following the others. The released rotations are the
+// components along the element's local axes at that end (t, n1, n2 at xi = -1
+// for S1, +1 for S2): with Q the rotation of the end nodes' rotations into
+// those axes, G = Q^T T Q and T the static condensation of member_releases.h.
+// The identity without releases. Throws std::invalid_argument if the releases
+// leave the element free to turn (torsion released at both ends).
+Matrix18d quadratic_beam_release_transformation(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section);
+
+// Element matrices in global components, DOFs as quadratic_beam_dofs, with the
+// element's releases condensed out (G^T K G, G^T M G).
 Matrix18d quadratic_beam_stiffness(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section);
 Matrix18d quadratic_beam_mass(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section,
                               MassFormulation formulation);
 
+// Consistent nodal loads p = G^T int N^T q(s) ds (forces only: the rotations
+// are interpolated independently, so a line force does no work on them),
+// integrated with a 6-point Gauss rule in xi (exact on a straight element,
+// where N_i J is a cubic).
+Vector18d quadratic_beam_consistent_load(const FrameModel& model, const BeamElement& beam, const SectionGeometry& section,
+                                         const BeamLineLoad& load);
+
 // Section forces at `stations` points evenly spaced in arc length (ends
-// included) from the element's nodal forces K u by statics of the part from
-// node a to the cut (exact when no load acts between the nodes; a load at the
-// midside node acts on the cut from just past it: a station exactly at the
-// midside node carries the forces just before it).
+// included) by statics of the part from node a to the cut: the nodal forces
+// K u - p of the nodes on that part plus the line load between node a and the
+// cut (its resultant and moment about the cut, 6-point Gauss rule). A station
+// exactly at the midside node takes the midside node's force as acting just
+// past it.
 std::vector<StationResult> quadratic_beam_stations(const FrameModel& model, const BeamElement& beam, const Eigen::VectorXd& u,
-                                                   int stations);
+                                                   int stations, const BeamLineLoad& load = {});
 
 }  // namespace framedyn::fem

@@ -1,12 +1,10 @@
 // Recovery of section forces and fiber stresses; see section_forces.h.
 #include "fem/section_forces.h"
 
-#include "fem/quadratic_beam_element.h"
-
 #include <stdexcept>
 #include <string>
 
-#include "fem/distributed_loads.h"
+#include "fem/quadratic_beam_element.h"
 
 namespace framedyn::fem {
 
@@ -49,35 +47,39 @@ std::vector<double> fiber_stresses(const SectionProperties& sec, const SectionFo
   return out;
 }
 
+std::vector<StationResult> beam_stations(const FrameModel& model, int beam_index, const Eigen::VectorXd& u, int stations, const BeamLineLoad& load) {
+  if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
+  const BeamElement& beam = model.beams.at(static_cast<std::size_t>(beam_index));
+  if (beam.is_quadratic()) return quadratic_beam_stations(model, beam, u, stations, load);
+  const BeamGeometry g = beam_geometry(model, beam);
+  const Eigen::Vector3d q = g.axes * load.global;
+  Vector12d f = element_end_forces(g, beam, u);
+  if (!q.isZero(0.0)) f -= beam_local_uniform_load(g.data, q);
+  const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
+  const Eigen::Vector3d& b = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
+  std::vector<StationResult> out;
+  out.reserve(static_cast<std::size_t>(stations));
+  for (int s = 0; s < stations; ++s) {
+    StationResult r;
+    r.element_id = beam.id;
+    r.station = s;
+    const double xi = static_cast<double>(s) / (stations - 1);
+    r.x = xi * g.data.length;
+    r.point = a + xi * (b - a);
+    r.forces = section_forces_at(f, r.x, q);
+    r.fiber_stress = fiber_stresses(g.data.section, r.forces);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 std::vector<StationResult> recover_stations(const FrameModel& model, const Eigen::VectorXd& u, int stations) {
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
   std::vector<StationResult> out;
   out.reserve(model.beams.size() * static_cast<std::size_t>(stations));
-  const std::vector<Eigen::Vector3d> line_loads = beam_line_loads(model);
-  for (std::size_t i = 0; i < model.beams.size(); ++i) {
-    const BeamElement& beam = model.beams[i];
-    if (beam.is_quadratic()) {  // line loads on three-node beams are refused by the reader
-      for (StationResult& r : quadratic_beam_stations(model, beam, u, stations)) out.push_back(std::move(r));
-      continue;
-    }
-    const BeamGeometry g = beam_geometry(model, beam);
-    const Eigen::Vector3d q = g.axes * line_loads[i];
-    Vector12d f = element_end_forces(g, beam, u);
-    if (!q.isZero(0.0)) f -= beam_local_uniform_load(g.data, q);
-    const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
-    const Eigen::Vector3d& b = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
-    for (int s = 0; s < stations; ++s) {
-      StationResult r;
-      r.element_id = beam.id;
-      r.station = s;
-      const double xi = static_cast<double>(s) / (stations - 1);
-      r.x = xi * g.data.length;
-      r.point = a + xi * (b - a);
-      r.forces = section_forces_at(f, r.x, q);
-      r.fiber_stress = fiber_stresses(g.data.section, r.forces);
-      out.push_back(std::move(r));
-    }
-  }
+  const std::vector<BeamLineLoad> line_loads = beam_line_loads(model);
+  for (std::size_t i = 0; i < model.beams.size(); ++i)
+    for (StationResult& r : beam_stations(model, static_cast<int>(i), u, stations, line_loads[i])) out.push_back(std::move(r));
   return out;
 }
 

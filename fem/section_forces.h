@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fem/beam_element.h"
+#include "fem/distributed_loads.h"
 #include "fem/frame_model.h"
 
 namespace framedyn::fem {
@@ -45,6 +46,12 @@ struct StationResult {
   SectionForces forces;
   std::vector<double> fiber_stress;  // Pa, one per section stress point
 };
+
+// Section forces at `stations` evenly spaced points (>= 2, ends included,
+// evenly in arc length on a three-node beam) of the beam model.beams[beam_index],
+// of either kind, with the fixed-end terms of its line load `load` (none: zero).
+std::vector<StationResult> beam_stations(const FrameModel& model, int beam_index, const Eigen::VectorXd& u, int stations,
+                                         const BeamLineLoad& load = {});
 
 // Section forces at `stations` evenly spaced points (>= 2, ends included) of
 // every beam, with the fixed-end terms of the model's element loads.

@@ -227,14 +227,6 @@ Row mesh_row(const std::string& id, const std::string& from, const std::string& 
   return {id, {{"frame.inp", text}}, command, marker.empty() ? "frame.inp: " + key : at("frame.inp", text, marker, key)};
 }
 
-// The table's mesh with its two B31 elements made one B32R element, and
-// `keywords` added before the supports.
-Row quadratic_mesh_row(const std::string& id, const std::string& keywords, const std::string& marker, const std::string& key) {
-  const std::string text = edit(edit(kMesh, "*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n", "*ELEMENT, TYPE=B32R, ELSET=FRAME\n1, 1, 2, 3\n"),
-                                "*BOUNDARY\n", keywords + "*BOUNDARY\n");
-  return {id, {{"frame.inp", text}}, "static frame.inp --out results -q", at("frame.inp", text, marker, key)};
-}
-
 Row study_row(const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key,
               const std::string& base = kStudy2D) {
   const std::string text = edit(base, from, to);
@@ -326,9 +318,6 @@ std::vector<Row> rows() {
       mesh_row("INP-50", kData, "*RELEASE\n2, S1, T\n2, S2, T\n" + kData, "S2, T", "*RELEASE"),
       mesh_row("INP-51", kData, "*TRANSVERSE SHEAR STIFFNESS\n1e8, 1e8\n" + kData, "*TRANSVERSE", "*TRANSVERSE SHEAR STIFFNESS"),
       mesh_row("INP-52", "SECTION=RECT", "SECTION=RECT, RAYLEIGH=YES", "*BEAM SECTION", "*BEAM SECTION"),
-      // distributed loads and releases on three-node beams: not implemented, refused
-      quadratic_mesh_row("INP-53", "*DLOAD\nFRAME, PZ, 100.\n", "FRAME, PZ", "*DLOAD"),
-      quadratic_mesh_row("INP-54", "*RELEASE\n1, S2, M1\n", "1, S2", "*RELEASE"),
       // rigid links (fem/rigid_links.cpp, through the reader)
       mesh_row("INP-55", kData, "*NODE\n4, 0, 0, 0.5\n*NSET, NSET=ARM\n4\n*RIGID BODY, NSET=ARM, REF NODE=1\n*BOUNDARY\n4, 1\n" + kData,
                "*RIGID BODY, NSET=ARM, REF NODE=1", "*RIGID BODY"),
@@ -551,8 +540,6 @@ std::vector<Row> rows() {
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:4: frequency [Hz]", true},
       {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
-      {"CLI-33", {{"frame.inp", edit(kMesh, "*BOUNDARY\n", "*DLOAD\nFRAME, PZ, 100.\n*BOUNDARY\n")}},
-       "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results", "frame.inp: *DLOAD", true},
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

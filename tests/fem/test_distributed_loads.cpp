@@ -288,7 +288,7 @@ TEST(DistributedLoads, MalformedLinesNameTheLineAndWhatWasExpected) {
       {"UndefinedElement", "*DLOAD\n9, PY, 5\n", "9, PY", "expected an element defined by *ELEMENT or a defined *ELSET, found element 9"},
       {"NotANumber", "*DLOAD\nBEAM, PY, heavy\n", "heavy", "expected a force per length (a finite number), found 'heavy'"},
       {"LineLoadOnAMassElement", "*ELEMENT, TYPE=MASS, ELSET=PM\n100, 3\n*MASS, ELSET=PM\n5\n*DLOAD\nPM, PZ, 5\n", "PM, PZ",
-       "expected beam elements (B31, B33) for a PZ line load, found element 100 of type MASS"},
+       "expected beam elements (B31, B32, B32R, B33) for a PZ line load, found element 100 of type MASS"},
   };
   for (const DloadError& c : cases) {
     const std::string deck = beam_deck("m-N-s", Eigen::Vector3d::UnitX(), 2.0, 2, "B31",

@@ -7,6 +7,7 @@
 //     outside the quarter points the element is refused;
 //   - section forces at stations by statics; the reader's B32/B32R, CalculiX's
 //     *BEAM GENERAL SECTION BOX and PIPE, and its refusals (NLGEOM, offsets).
+// Line loads and releases on them: test_quadratic_beam_loads.cpp.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -400,22 +401,6 @@ TEST(QuadraticBeam, ReaderRefusesFoldedElementsOffsetSectionsAndNonlinearSteps) 
   EXPECT_NO_THROW(fem::read_inp_text(good + "*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT, OFFSET1=0\n0.05, 0.1\n*BOUNDARY\n1, 1, 6\n"
                                             "*STEP, NLGEOM=NO\n*STATIC\n*END STEP\n",
                                      "deck.inp", "."));
-}
-
-// Distributed loads and end releases are formulated for the two-node elements
-// (consistent loads qL/2, qL^2/12; static condensation of the Hermite element):
-// on a three-node beam they are refused, not applied wrongly.
-TEST(QuadraticBeam, DistributedLoadsAndReleasesOnThreeNodeBeamsAreRefused) {
-  const std::string deck = "** units: m-N-s\n*NODE\n1, 0, 0, 0\n2, 0.5, 0, 0\n3, 1, 0, 0\n*ELEMENT, TYPE=B32R, ELSET=E\n1, 1, 2, 3\n"
-                           "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n"
-                           "*BEAM SECTION, ELSET=E, MATERIAL=STEEL, SECTION=RECT\n0.05, 0.1\n*BOUNDARY\n1, 1, 6\n";
-  expect_input_error(deck + "*DLOAD\nE, PZ, 100\n",
-                     "deck.inp:18: *DLOAD: expected two-node beam elements (B31, B33) for *DLOAD (distributed loads on three-node beams "
-                     "are not implemented), found element 1 of type B32R");
-  expect_input_error(deck + "*DLOAD\n, GRAV, 9.81, 0, 0, -1\n", "deck.inp:18: *DLOAD: expected two-node beam elements (B31, B33)");
-  expect_input_error(deck + "*RELEASE\n1, S2, M1\n",
-                     "deck.inp:18: *RELEASE: expected two-node beam elements (B31, B33) to release (releases of three-node beams are not "
-                     "implemented), found element 1 of type B32R");
 }
 
 }  // namespace
