@@ -14,6 +14,7 @@
 #include "core/csv_writer.h"
 #include "core/error.h"
 #include "core/results_folder.h"
+#include "fem/partial_supports.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
 #include "fem/vtu_writer.h"
@@ -28,6 +29,7 @@ struct StaticOptions {
   MeshInput mesh;
   std::string out;
   int stations = 3;
+  bool inertia_relief = false;
   ProgressFlags progress;
 };
 
@@ -40,7 +42,23 @@ int run_static(const StaticOptions& opt) {
   const core::UnitSystem& u = model.units;
   if (model.loads.empty() && model.element_loads.empty())
     throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis", "none");
-  const fem::StaticResult r = fem::solve_static(model, progress.callback());
+  fem::StaticOptions so;
+  so.inertia_relief = opt.inertia_relief;
+  fem::StaticResult r;
+  try {
+    r = fem::solve_static(model, progress.callback(), so);
+  } catch (const fem::UnbalancedLoadError& e) {
+    // Loads that do work on a rigid motion the supports leave free (docs/theory/fem.md, Eq. 19.1): the input's fault, named as such.
+    throw core::InputError({opt.mesh.path, 0, model.loads.empty() ? "*DLOAD" : "*CLOAD"},
+                           "loads that do no work on the rigid motions the supports leave free (add supports, balance the loads, or ask for "
+                           "--inertia-relief)",
+                           e.what());
+  }
+  if (opt.inertia_relief && r.free_rigid_motions == 0)
+    throw core::InputError({"command line", 0, "--inertia-relief"},
+                           "a frame whose supports leave rigid motions free (inertia relief takes the loads' unbalanced part by those motions' "
+                           "accelerations)",
+                           opt.mesh.path + ", held against every rigid motion by its supports");
   progress.stage("recovering section forces");
   const std::vector<fem::StationResult> stations = fem::recover_stations(model, r.displacement, opt.stations);
 
@@ -139,6 +157,25 @@ int run_static(const StaticOptions& opt) {
       {"applied_force_sum", {{"value", {applied.x() * ff, applied.y() * ff, applied.z() * ff}}, {"unit", F}}},
       {"reaction_force_sum", {{"value", {total.x() * ff, total.y() * ff, total.z() * ff}}, {"unit", F}}},
       {"relative_residual", r.relative_residual}};
+  // A partially supported or free frame (docs/theory/fem.md, section 19): the
+  // displacement is one solution; any free rigid motion may be added to it.
+  nlohmann::ordered_json rigid = {{"count", r.free_rigid_motions}, {"parts", r.free_motions}};
+  if (r.free_rigid_motions > 0) {
+    nlohmann::ordered_json held = nlohmann::ordered_json::array();
+    for (int g : r.auxiliary_dofs) held.push_back(model.describe_dof(g));
+    rigid["auxiliary_supports"] = held;
+    if (r.inertia_relief) {
+      rigid["solution"] = "inertia relief: the elastic part (no rigid motion in the mean, R^T M u = 0)";
+      double amax = 0.0;
+      int anode = 0;
+      for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (const double a = r.rigid_acceleration.segment<3>(static_cast<Eigen::Index>(6 * n)).norm(); a > amax * (1.0 + 1e-9)) amax = a, anode = model.nodes[n].id;
+      rigid["max_rigid_acceleration"] = {{"value", amax * lf}, {"unit", L + "/s^2"}, {"node", anode}};
+    } else {
+      rigid["solution"] = "balanced loads: the displacement with the auxiliary supports held, defined up to a free rigid motion";
+    }
+  }
+  j["frame"]["free_rigid_motions"] = rigid;
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
@@ -148,6 +185,10 @@ int run_static(const StaticOptions& opt) {
   fmt::print("peak fiber stress {:.6g} {} in element {}\n", peak_stress * sf, S, peak_element);
   fmt::print("applied force sum ({:.6g}, {:.6g}, {:.6g}) {}; reactions ({:.6g}, {:.6g}, {:.6g}) {}\n", applied.x() * ff, applied.y() * ff,
              applied.z() * ff, F, total.x() * ff, total.y() * ff, total.z() * ff, F);
+  if (r.free_rigid_motions > 0)
+    fmt::print("{} free rigid motion(s) ({}): {}\n", r.free_rigid_motions, r.free_motions,
+               r.inertia_relief ? "loads relieved by their inertia, elastic part shown"
+                                : "loads balanced on them; the displacement is defined up to that rigid motion");
   fmt::print("results in {}/ (summary.json, displacements.csv, reactions.csv, section_forces.csv, static.vtu)\n", out_dir);
   return 0;
 }
@@ -160,6 +201,8 @@ void add_static_command(CLI::App& app, std::function<int()>& run) {
   opt->mesh.add_options(*cmd);
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_static)");
   cmd->add_option("--stations", opt->stations, "Section-force stations per element, ends included (default 3)")->check(number_check("2 to 101 stations (the element's ends and points between)", [](double n) { return n >= 2 && n <= 101; }, true));
+  cmd->add_flag("--inertia-relief", opt->inertia_relief,
+                "Take the loads' unbalanced part by the accelerations of the rigid motions the supports leave free (d'Alembert)");
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_static(*opt); }; });
 }

@@ -18,6 +18,7 @@
 #include "fem/modal_analysis.h"
 #include "fem/quadratic_beam_element.h"
 #include "fem/section_forces.h"
+#include "fem/static_analysis.h"
 #include "fem/vtu_writer.h"
 
 namespace framedyn::coupling {
@@ -113,7 +114,7 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir, FrameDefaults defaults) {
   f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                "direct_substeps", "convert_units"});
+                "direct_substeps", "convert_units", "mesh_loads"});
   const bool pipeline = defaults == FrameDefaults::pipeline;
   FrameStudyRequest r;
   r.file = f.file();
@@ -178,6 +179,10 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     }
   }
   r.convert_units = f.boolean_or("convert_units", false);
+  const std::string mesh_loads = f.text_or("mesh_loads", pipeline ? "none" : "constant");
+  if (mesh_loads != "constant" && mesh_loads != "none")
+    throw f.error("mesh_loads", "constant (the mesh's *CLOAD and *DLOAD act throughout, from their static equilibrium) or none", quoted(mesh_loads));
+  r.mesh_loads = mesh_loads == "constant";
   for (const char* key : {"supports", "support_set", "modes", "loads", "mesh"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
@@ -330,16 +335,17 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   check_load_points_on_mesh(model, out.mapping, out.loads, q, loads_file);
 
   fem::FrameDynamics frame(model);
-  const bool free_free = frame.free_free();
+  const int rigid_count = frame.rigid_count();  // free-free 6, supported 0, partially supported between
+  out.free_rigid_motions = rigid_count;
   fem::ModalBasis basis;
   if (q.method != FrameMethod::direct && q.modes < 0) {
     basis = frame.all_modes();
   } else {
     fem::ModalOptions mo;
     const int wanted = q.method == FrameMethod::direct ? std::min(20, frame.dofs().free_count() - 7) : q.modes;
-    mo.mode_count = wanted + (free_free ? 6 : 0);
+    mo.mode_count = wanted + rigid_count;
     if (mo.mode_count >= frame.dofs().free_count())
-      throw core::InputError(q.where("modes"), fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - (free_free ? 6 : 0)),
+      throw core::InputError(q.where("modes"), fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - rigid_count),
                              std::to_string(q.modes));
     basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, mo));
   }
@@ -348,6 +354,29 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   in.times = out.loads.times;
   in.distribution = out.mapping.distribution;
   in.components = out.loads.component_matrix();
+  // The mesh's own loads (*CLOAD, *DLOAD with gravity): one more load
+  // component, 1 at every time, so they act throughout; with the default
+  // initial state the response starts from the static equilibrium under them
+  // and the history's first row (no start-up shock; docs/theory/fem.md, Eq. 19.8).
+  if (q.mesh_loads && (!model.loads.empty() || !model.element_loads.empty())) {
+    out.constant_load = fem::applied_loads(model);
+    out.constant_cloads = static_cast<int>(model.loads.size());
+    std::vector<int> beams;
+    for (const fem::ElementLoad& e : model.element_loads) beams.push_back(e.beam);
+    std::sort(beams.begin(), beams.end());
+    out.constant_dloads = static_cast<int>(std::unique(beams.begin(), beams.end()) - beams.begin());
+    std::vector<Eigen::Triplet<double>> t;
+    for (int col = 0; col < in.distribution.outerSize(); ++col)
+      for (fem::SparseMatrix::InnerIterator it(in.distribution, col); it; ++it) t.emplace_back(static_cast<int>(it.row()), col, it.value());
+    const int extra = static_cast<int>(in.distribution.cols());
+    for (Eigen::Index g = 0; g < out.constant_load.size(); ++g)
+      if (out.constant_load(g) != 0.0) t.emplace_back(static_cast<int>(g), extra, out.constant_load(g));
+    fem::SparseMatrix d(in.distribution.rows(), extra + 1);
+    d.setFromTriplets(t.begin(), t.end());
+    in.distribution = d;
+    in.components.conservativeResize(extra + 1, Eigen::NoChange);
+    in.components.row(extra).setOnes();
+  }
   int interval = 1;
   if (q.output_interval) {
     const double dt = (in.times(in.times.size() - 1) - in.times(0)) / static_cast<double>(in.times.size() - 1);
@@ -617,6 +646,24 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     points.push_back(jp);
   }
   j["load_points"] = points;
+  // The mesh's own loads, constant throughout (mesh_loads: constant).
+  if (r.constant_load.size() > 0) {
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    for (Eigen::Index n = 0; n + 5 < r.constant_load.size(); n += 6) total += r.constant_load.segment<3>(n);
+    const double ff = 1.0 / u.to_si_factor(Quantity::force);
+    j["constant_loads"] = {{"source", q.mesh.filename().string()},
+                           {"cload_entries", r.constant_cloads},
+                           {"dload_beams", r.constant_dloads},
+                           {"resultant_force", {{"value", {total.x() * ff + 0.0, total.y() * ff + 0.0, total.z() * ff + 0.0}}, {"unit", u.label(Quantity::force)}}},
+                           {"meaning", "the mesh's *CLOAD and *DLOAD act at every time, added to the load history; the response starts from the "
+                                       "static equilibrium under them and the history's first row"}};
+  } else {
+    j["constant_loads"] = nullptr;
+  }
+  if (r.free_rigid_motions > 0 && q.supports != FrameSupports::free_free_inertia_relief)
+    j["free_rigid_motions"] = {{"count", r.free_rigid_motions},
+                               {"meaning", "the supports leave these rigid motions free: the loads are relieved by their inertia and the "
+                                           "displacements are the elastic part (as for supports: none)"}};
   ordered_json moments = ordered_json::object(), components = ordered_json::object();
   const RailRecovery* worst = nullptr;
   for (const RailRecovery& rail : r.rails) {

@@ -19,6 +19,7 @@
 //       left_rail: {element_set: LEFT_RAIL}
 //       tip: {node_set: TIP}
 //     pvd: true                            # ParaView time series
+//     mesh_loads: constant                 # the mesh's *CLOAD/*DLOAD: constant loads throughout | none
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -85,6 +86,10 @@ struct FrameStudyRequest {
   bool pvd = false;
   int direct_substeps = 4;                   // Newmark steps per load-history interval
   bool convert_units = false;                // mesh or load history in other units than the study: convert (else refuse)
+  // The mesh's own *CLOAD and *DLOAD (gravity) as constant loads acting
+  // throughout, the response starting from the static equilibrium under them
+  // (frame-response's default; the pipeline's loads come from the vehicle model).
+  bool mesh_loads = false;
   // Output sets: element sets (section forces and stresses; the rails in the
   // pipeline) and node sets (nodal histories), in the study's order.
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
@@ -115,6 +120,11 @@ struct FrameStudyResults {
   std::vector<NodalHistory> nodal;           // the node-set outputs, in request.node_outputs' order
   std::vector<SectionHistory> sections;      // per element-set output with history (empty entries otherwise)
   double wall_seconds = 0.0;
+  // The mesh's loads applied as constant loads (mesh_loads: constant), all
+  // DOFs (N, N m); empty when none acted.
+  Eigen::VectorXd constant_load;
+  int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
+  int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
 };
 
 // Runs the study. `loads` replaces the request's load-history file (e.g. the

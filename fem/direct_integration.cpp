@@ -30,7 +30,8 @@ TransientResult direct_transient(const FrameDynamics& frame, const TransientInpu
 
   const SparseMatrix& k = frame.system().stiffness;
   const SparseMatrix& m = frame.system().mass;
-  const Eigen::MatrixXd b = frame.free_loads(in.distribution);
+  const bool rigid = o.include_rigid_motion && frame.rigid_count() > 0;
+  const Eigen::MatrixXd b = frame.free_loads(in.distribution, !rigid);
   const Eigen::Index n = b.rows();
   auto load = [&](Eigen::Index step, double s) -> Eigen::VectorXd {  // F at t_step + s (t_{step+1} - t_step), linear
     if (s == 0.0) return b * in.components.col(step);
@@ -42,7 +43,7 @@ TransientResult direct_transient(const FrameDynamics& frame, const TransientInpu
 
   Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = Eigen::VectorXd::Zero(n), a(n);
   Eigen::VectorXd f = load(0, 0.0);
-  if (o.initial == InitialState::static_equilibrium) u = frame.static_response(f);
+  if (o.initial == InitialState::static_equilibrium) u = frame.static_response(rigid ? frame.relieve(f) : f);
   {  // a0 = M^-1 (F0 - C v0 - K u0)
     SparseCholesky mass_solver;
     if (!mass_solver.factorize(m))
@@ -62,7 +63,7 @@ TransientResult direct_transient(const FrameDynamics& frame, const TransientInpu
   auto record = [&](Eigen::Index kk) {
     if (next_out < outputs.size() && outputs[next_out] == kk) {
       r.times(static_cast<Eigen::Index>(next_out)) = in.times(kk);
-      r.displacement.col(static_cast<Eigen::Index>(next_out++)) = frame.expand(frame.elastic_part(u));
+      r.displacement.col(static_cast<Eigen::Index>(next_out++)) = frame.expand(rigid ? u : frame.elastic_part(u));
     }
   };
   record(0);

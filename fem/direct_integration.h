@@ -16,10 +16,14 @@ struct NewmarkOptions {
   int substeps = 1;             // Newmark steps per interval of the load history (load linear within)
   int output_interval = 1;      // keep every n-th time of the input (the first always)
   InitialState initial = InitialState::static_equilibrium;
+  // Drive the frame by the unrelieved loads and return the whole motion,
+  // free rigid motions included (Eq. 19.7); false: inertia relief (below).
+  bool include_rigid_motion = false;
 };
 
 // Same inputs and outputs as modal_transient (no modal coordinates). A
-// free-free frame is driven by the relieved load and its elastic part returned.
+// free-free or partially supported frame is driven by the relieved load and
+// its elastic part returned, unless the rigid motion is included.
 // Throws core::NumericalError when K_eff cannot be factorised.
 TransientResult direct_transient(const FrameDynamics& frame, const TransientInput& input, const NewmarkOptions& options);
 

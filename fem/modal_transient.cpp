@@ -11,6 +11,8 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "fem/partial_supports.h"
+#include "fem/rigid_body_modes.h"
 
 namespace framedyn::fem {
 
@@ -118,13 +120,23 @@ FrameDynamics::FrameDynamics(const FrameModel& model, MassFormulation mass) : mo
   free_free_ = !grounded;
   static_solver_ = std::make_unique<SparseCholesky>();
   const int n = dofs_.free_count();
-  if (!free_free_) {
+  // The rigid motions the supports leave free (fem/rigid_body_modes.h): none
+  // for a supported frame, six for a free-free one in one piece, any number
+  // for a partially supported frame (docs/theory/fem.md, section 19).
+  const FreeRigidMotions free_motions = free_rigid_motions(model);
+  if (free_motions.shapes.cols() == 0) {
+    free_free_ = false;
     if (!static_solver_->factorize(system_.stiffness))
       throw core::NumericalError(fmt::format(
           "the stiffness matrix of the supported frame is singular at {}: the supports leave a mechanism",
           model.describe_dof(dofs_.free_dofs[static_cast<std::size_t>(std::max(0, static_solver_->failed_equation()))])));
     rigid_.resize(n, 0);
     mass_rigid_.resize(n, 0);
+    return;
+  }
+  if (!free_free_ || free_motions.parts > 1 || free_motions.shapes.cols() != 6) {
+    free_free_ = false;
+    set_up_partial_supports(rigid_motions_on_equations(dofs_, free_motions.shapes));
     return;
   }
   if (model.nodes.size() < 2) throw core::NumericalError("a free-free frame needs at least two nodes");
@@ -194,24 +206,30 @@ FrameDynamics::FrameDynamics(const FrameModel& model, MassFormulation mass) : mo
   auxiliary_.insert(auxiliary_.end(), choice.begin(), choice.end());
   for (int& g : auxiliary_) g = dofs_.free_index[static_cast<std::size_t>(g)];
   std::sort(auxiliary_.begin(), auxiliary_.end());
-  // K_s: K with the auxiliary rows and columns replaced by the identity (times K's diagonal there).
-  std::vector<char> is_aux(static_cast<std::size_t>(n), 0);
-  for (int e : auxiliary_) is_aux[static_cast<std::size_t>(e)] = 1;
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(system_.stiffness.nonZeros()));
-  for (int col = 0; col < system_.stiffness.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(system_.stiffness, col); it; ++it) {
-      const bool aux = is_aux[static_cast<std::size_t>(it.row())] || is_aux[static_cast<std::size_t>(col)];
-      if (!aux) t.emplace_back(static_cast<int>(it.row()), col, it.value());
-      else if (it.row() == col) t.emplace_back(col, col, it.value() > 0.0 ? it.value() : 1.0);
-    }
-  SparseMatrix ks(n, n);
-  ks.setFromTriplets(t.begin(), t.end());
+  // K_s: K with the auxiliary rows and columns replaced by its diagonal (Eq. 19.4).
+  const SparseMatrix ks = with_auxiliary_supports(system_.stiffness, auxiliary_);
   if (!static_solver_->factorize(ks))
     throw core::NumericalError("the free-free frame on its auxiliary supports is still a mechanism (disconnected parts?)");
 }
 
 FrameDynamics::~FrameDynamics() = default;
+
+void FrameDynamics::set_up_partial_supports(const Eigen::MatrixXd& r) {
+  // M-orthonormal free rigid motions (Eq. 19.5) and p auxiliary supports that fix them (Eq. 19.3).
+  const Eigen::MatrixXd mr = system_.mass.selfadjointView<Eigen::Lower>() * r;
+  const Eigen::MatrixXd gram = r.transpose() * mr;
+  Eigen::LLT<Eigen::MatrixXd> llt(gram);
+  if (llt.info() != Eigen::Success)
+    throw core::NumericalError("the mass of the frame's free rigid motions is singular (a part without mass that can move rigidly?)");
+  const Eigen::MatrixXd linv_t = llt.matrixL().solve(Eigen::MatrixXd::Identity(r.cols(), r.cols())).transpose();
+  rigid_ = r * linv_t;
+  mass_rigid_ = mr * linv_t;
+  auxiliary_ = fem::auxiliary_supports(r);
+  if (!static_solver_->factorize(with_auxiliary_supports(system_.stiffness, auxiliary_)))
+    throw core::NumericalError(fmt::format(
+        "the partially supported frame on auxiliary supports against its {} free rigid motions is still a mechanism at {}", r.cols(),
+        model_.describe_dof(dofs_.free_dofs[static_cast<std::size_t>(std::max(0, static_solver_->failed_equation()))])));
+}
 
 Eigen::VectorXd FrameDynamics::mass_times(const Eigen::VectorXd& x) const { return system_.mass.selfadjointView<Eigen::Lower>() * x; }
 Eigen::VectorXd FrameDynamics::stiffness_times(const Eigen::VectorXd& x) const {
@@ -219,16 +237,16 @@ Eigen::VectorXd FrameDynamics::stiffness_times(const Eigen::VectorXd& x) const {
 }
 
 Eigen::VectorXd FrameDynamics::relieve(const Eigen::VectorXd& f) const {
-  if (!free_free_) return f;
+  if (rigid_.cols() == 0) return f;
   return f - mass_rigid_ * (rigid_.transpose() * f);
 }
 
 Eigen::VectorXd FrameDynamics::elastic_part(const Eigen::VectorXd& u) const {
-  if (!free_free_) return u;
+  if (rigid_.cols() == 0) return u;
   return u - rigid_ * (mass_rigid_.transpose() * u);
 }
 
-Eigen::MatrixXd FrameDynamics::free_loads(const SparseMatrix& distribution) const {
+Eigen::MatrixXd FrameDynamics::free_loads(const SparseMatrix& distribution, bool relieved) const {
   if (distribution.rows() != model_.dof_count())
     throw std::invalid_argument(fmt::format("load distribution has {} rows, the model {} DOFs", distribution.rows(), model_.dof_count()));
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(dofs_.free_count(), distribution.cols());
@@ -246,7 +264,7 @@ Eigen::MatrixXd FrameDynamics::free_loads(const SparseMatrix& distribution) cons
         }
       }
     }
-  if (free_free_) b -= mass_rigid_ * (rigid_.transpose() * b);
+  if (relieved && rigid_.cols() > 0) b -= mass_rigid_ * (rigid_.transpose() * b);
   return b;
 }
 
@@ -284,7 +302,7 @@ ModalBasis FrameDynamics::all_modes() const {
   ModalBasis b;
   b.eigenvalues = es.eigenvalues();
   b.shapes = es.eigenvectors();
-  const int rigid = free_free_ ? 6 : 0;
+  const int rigid = rigid_count();
   for (Eigen::Index i = 0; i < b.eigenvalues.size(); ++i) {
     b.rigid_body.push_back(i < rigid);
     if (i < rigid) b.eigenvalues(i) = 0.0;
@@ -372,9 +390,38 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
     }
   }
 
+  // The free rigid motions under the unrelieved loads (Eq. 19.7): k = 0,
+  // c = alpha of Rayleigh damping (0 for modal ratios), from rest; the same
+  // exact step as the elastic modes.
+  const bool rigid = o.include_rigid_motion && frame.rigid_count() > 0;
+  if (rigid) {
+    const Eigen::MatrixXd pr = frame.rigid_vectors().transpose() * frame.free_loads(in.distribution, false) * in.components;
+    r.rigid_coordinates.resize(frame.rigid_count(), no);
+    const double c = o.damping.rayleigh ? o.damping.alpha : 0.0;
+    for (int i = 0; i < frame.rigid_count(); ++i) {
+      double q = 0.0, v = 0.0, h_prev = -1.0;
+      PiecewiseLinearStep step{};
+      std::size_t next_out = 0;
+      for (Eigen::Index k = 0; k < nt; ++k) {
+        if (k > 0) {
+          const double h = in.times(k) - in.times(k - 1);
+          if (std::abs(h - h_prev) > 1e-12 * h) {
+            step = piecewise_linear_step(0.0, c, h);
+            h_prev = h;
+          }
+          const double q1 = step.a(0, 0) * q + step.a(0, 1) * v + step.b0(0) * pr(i, k - 1) + step.b1(0) * pr(i, k);
+          v = step.a(1, 0) * q + step.a(1, 1) * v + step.b0(1) * pr(i, k - 1) + step.b1(1) * pr(i, k);
+          q = q1;
+        }
+        if (next_out < outputs.size() && outputs[next_out] == k) r.rigid_coordinates(i, static_cast<Eigen::Index>(next_out++)) = q;
+      }
+    }
+  }
+
   r.displacement.resize(frame.model().dof_count(), no);
   for (Eigen::Index j = 0; j < no; ++j) {
     Eigen::VectorXd u = phi * r.modal_coordinates.col(j);
+    if (rigid) u += frame.rigid_vectors() * r.rigid_coordinates.col(j);
     if (o.method == ResponseMethod::mode_acceleration) u += correction * in.components.col(outputs[static_cast<std::size_t>(j)]);
     r.displacement.col(j) = frame.expand(u);
   }

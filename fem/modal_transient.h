@@ -4,8 +4,12 @@
 // histories, and the mode-displacement or mode-acceleration method (static
 // correction with the full flexibility for the modes left out). Supports are
 // the model's constraints; a model without constraints is free-free and is
-// analysed with inertia relief. Theory: docs/theory/fem.md, "Transient
-// response by mode superposition", Eqs. (T.1)-(T.12).
+// analysed with inertia relief, and so is a partially supported one (its
+// supports leave some rigid motions free, fem/rigid_body_modes.h) on the
+// motions left free. With `include_rigid_motion` the free rigid motions are
+// integrated too (q'' + alpha q' = r^T F, exact for piecewise-linear loads)
+// and added to the elastic response. Theory: docs/theory/fem.md, "Transient
+// response by mode superposition", Eqs. (T.1)-(T.12), and section 19.
 //
 // Vectors on "free DOFs" follow DofMap's equation numbering; vectors on "all
 // DOFs" follow FrameModel (6 per node: ux uy uz rx ry rz), SI units.
@@ -88,6 +92,10 @@ class FrameDynamics {
   const DofMap& dofs() const { return dofs_; }
   const FreeSystem& system() const { return system_; }  // lower triangles
   bool free_free() const { return free_free_; }
+  // Rigid motions the supports leave free: 6 free-free, 0 supported, between
+  // for a partially supported frame (auxiliary supports and relief as for a
+  // free-free one, on those motions; docs/theory/fem.md, section 19).
+  int rigid_count() const { return static_cast<int>(rigid_.cols()); }
 
   // All modes by a dense generalised eigensolution (small models: the cost grows as n^3).
   ModalBasis all_modes() const;
@@ -95,7 +103,8 @@ class FrameDynamics {
   // Restriction of an all-DOF load-distribution matrix to the free DOFs,
   // relieved (Eq. T.9: F_rel = F - M R R^T F, R the M-orthonormal rigid-body
   // vectors) when the frame is free-free.
-  Eigen::MatrixXd free_loads(const SparseMatrix& distribution) const;
+  // `relieved` false: the loads as they are (the free rigid motions then move under them).
+  Eigen::MatrixXd free_loads(const SparseMatrix& distribution, bool relieved = true) const;
   Eigen::VectorXd relieve(const Eigen::VectorXd& f_free) const;
   // The elastic static response G f (Eq. T.10): K^-1 f for a supported frame;
   // for a free-free frame the solution on the auxiliary supports with the
@@ -103,9 +112,10 @@ class FrameDynamics {
   Eigen::VectorXd static_response(const Eigen::VectorXd& f_free) const;
   // Reactions at the auxiliary supports for load f (zero for a self-equilibrated f; Eq. T.11).
   Eigen::VectorXd auxiliary_reactions(const Eigen::VectorXd& f_free) const;
-  // Equation numbers of the auxiliary supports (free-free only; 3-2-1 choice).
+  // Equation numbers of the auxiliary supports (free-free: the 3-2-1 choice;
+  // partially supported: one per free rigid motion, Eq. 19.3; else none).
   const std::vector<int>& auxiliary_supports() const { return auxiliary_; }
-  // M-orthonormal rigid-body vectors on the free DOFs (free-free only, else 0 columns).
+  // M-orthonormal free rigid motions on the free DOFs (0 columns for a supported frame).
   const Eigen::MatrixXd& rigid_vectors() const { return rigid_; }
   // Removes the rigid-body part: u - R R^T M u (free-free), else u.
   Eigen::VectorXd elastic_part(const Eigen::VectorXd& u_free) const;
@@ -115,6 +125,7 @@ class FrameDynamics {
   Eigen::VectorXd stiffness_times(const Eigen::VectorXd& x) const;
 
  private:
+  void set_up_partial_supports(const Eigen::MatrixXd& rigid_free);
   const FrameModel& model_;
   DofMap dofs_;
   FreeSystem system_;
@@ -142,14 +153,21 @@ struct ModalTransientOptions {
   int mode_count = -1;          // elastic modes used, lowest first; -1: all of the basis
   int output_interval = 1;      // keep every n-th time of the input (the first always)
   InitialState initial = InitialState::static_equilibrium;
+  // Integrate the free rigid motions under the unrelieved loads (Eq. 19.7)
+  // and add them to the displacement; false: the elastic part under the
+  // relieved loads (inertia relief), as for a free-free frame.
+  bool include_rigid_motion = false;
 };
 
 struct TransientResult {
   Eigen::VectorXd times;             // output times, s
-  Eigen::MatrixXd displacement;      // all DOFs x outputs (m, rad); the elastic part for a free-free frame
+  // all DOFs x outputs (m, rad); the elastic part for a free-free or partially
+  // supported frame, unless the rigid motion was included
+  Eigen::MatrixXd displacement;
   Eigen::MatrixXd modal_coordinates; // elastic modes used x outputs (modal methods; m kg^0.5)
   Eigen::VectorXd frequencies_hz;    // of the elastic modes used
   Eigen::VectorXd damping_ratios;    // of the elastic modes used
+  Eigen::MatrixXd rigid_coordinates; // free rigid motions x outputs, when included (M-orthonormal coordinates)
 };
 
 // Throws std::invalid_argument for inconsistent sizes, fewer than two times

@@ -142,7 +142,8 @@ FreeRigidMotions free_rigid_motions(const FrameModel& model) {
   int col = 0;
   for (std::size_t q = 0; q < kernels.size(); ++q) {
     const std::vector<int>& gp = group_parts[static_cast<std::size_t>(kernel_group[q])];
-    for (Eigen::Index j = 0; j < kernels[q].cols(); ++j, ++col)
+    for (Eigen::Index j = 0; j < kernels[q].cols(); ++j, ++col) {
+      out.part_of_shape.push_back(gp[0]);
       for (std::size_t pi = 0; pi < gp.size(); ++pi)
         for (int i : nodes_of_part[static_cast<std::size_t>(gp[pi])])
           for (int d = 0; d < 6; ++d) {
@@ -150,6 +151,7 @@ FreeRigidMotions free_rigid_motions(const FrameModel& model) {
             for (int k = 0; k < 6; ++k) v += motion(i, d, k) * kernels[q](static_cast<Eigen::Index>(6 * pi) + k, j);
             out.shapes(kDofsPerNode * i + d, col) = v;
           }
+    }
   }
   // Exactly zero at fixed DOFs (the kernel makes them zero to round-off).
   for (const Constraint& c : model.constraints) out.shapes.row(kDofsPerNode * c.node + c.dof).setZero();

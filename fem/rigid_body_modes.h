@@ -30,6 +30,9 @@ struct FreeRigidMotions {
   // Motions left free per part (6 - rank of its restraints); parts joined by
   // springs between them are counted together, under the first of them.
   std::vector<int> free_per_part;
+  // Column j of `shapes` moves the part (or the group of parts joined by
+  // springs) counted under part_of_shape[j].
+  std::vector<int> part_of_shape;
   // "part 2 (41 nodes, node 42 among them): 6 free; ..." for the parts with
   // free motions (at most five named), for messages.
   std::string describe(const FrameModel& model) const;

@@ -3,14 +3,21 @@
 // K_ff u_f = f_f - K_fc u_c on a CHOLMOD factorisation, then reactions
 // R = K u - f at the constrained DOFs (with rigid links: T^T (K u - f), so a
 // supported reference node carries its tied nodes' loads; rigid_links.h).
-// A singular stiffness (a mechanism, a frame without supports) is reported
-// with the nodes that can move freely.
+// A singular stiffness (a mechanism) is reported with the nodes that can
+// move freely. A frame whose supports leave rigid motions free (free-free,
+// on one pin, held in its plane; fem/rigid_body_modes.h) is solved when the
+// loads do no work on those motions, on auxiliary supports that fix them
+// (the result is then one solution; any free rigid motion may be added), and
+// refused with UnbalancedLoadError naming the motion otherwise; with inertia
+// relief the unbalanced part is taken by rigid-body accelerations
+// (d'Alembert) and the elastic part returned (docs/theory/fem.md, section 19).
 #pragma once
 
 #include <Eigen/Dense>
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "fem/frame_model.h"
 
@@ -21,6 +28,20 @@ struct StaticResult {
   Eigen::VectorXd applied;       // nodal loads on all DOFs, with the consistent loads of *DLOAD (N, N m)
   Eigen::VectorXd reaction;      // all DOFs; nonzero only at constrained DOFs (N, N m)
   double relative_residual = 0.0;  // ||K_ff u_f - f_f|| / ||f_f||
+  // Partially supported or free frames (section 19):
+  int free_rigid_motions = 0;      // rigid motions the supports leave free
+  std::string free_motions;        // FreeRigidMotions::describe: which parts keep how many
+  std::vector<int> auxiliary_dofs; // global DOFs held by the auxiliary supports (Eq. 19.3)
+  bool inertia_relief = false;
+  // With inertia relief: the rigid-body acceleration on all DOFs (m/s^2,
+  // rad/s^2), M R a = the unbalanced load (Eq. 19.5); empty otherwise.
+  Eigen::VectorXd rigid_acceleration;
+};
+
+struct StaticOptions {
+  // Take the loads' unbalanced part by the rigid-body accelerations of the
+  // free rigid motions (d'Alembert) instead of refusing it; needs mass.
+  bool inertia_relief = false;
 };
 
 // The applied load vector on all DOFs (N, N m): the model's nodal loads
@@ -30,6 +51,7 @@ struct StaticResult {
 // type added to the model reaches all of them.
 Eigen::VectorXd applied_loads(const FrameModel& model);
 
-StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress = {});
+StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress = {},
+                          const StaticOptions& options = {});
 
 }  // namespace framedyn::fem

@@ -460,6 +460,7 @@ std::vector<Row> rows() {
       study_row("STUDY-81", "  radius_of_gyration: 16\n  position: [36, 32]", "  radius_of_gyration: 16\n  position: [36, 32]\n  radius_of_gyration: 18",
                 "radius_of_gyration: 18", "cab.radius_of_gyration"),
       frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
+      frame_row("STUDY-90", "  stations: 3\n", "  stations: 3\n  mesh_loads: gravity\n", "mesh_loads:", "frame.mesh_loads"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
@@ -492,6 +493,8 @@ std::vector<Row> rows() {
        "nothere.csv", false},
       loads_row("LOADS-19", "0.001,10,0,-300", "0.001,10,0,-1e308", "0.001,10,0,-1e308", "column 4 (P25_FRONT_AXLE_PIN.FZ [lbf])"),
       loads_row("LOADS-20", "0.001,10,0,-300", "0.001,10,0,-8e299", "0.001,10,0,-8e299", "column 4 (P25_FRONT_AXLE_PIN.FZ [lbf])"),
+      // ---- the mesh's loads in a static solve of a frame on one pin (apps/static_command.cpp, fem/partial_supports.cpp)
+      {"LOADS-21", {{"frame.inp", edit(kMesh, "1, ENCASTRE\n", "1, 1, 3\n")}}, "static frame.inp --out results -q", "frame.inp: *CLOAD"},
   };
   for (Row row : loads) {
     if (row.id == "LOADS-14") row.where = "loads.csv:" + std::to_string(line_of(row.files[2].second, "time [s]") + 1);
@@ -540,6 +543,7 @@ std::vector<Row> rows() {
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:4: frequency [Hz]", true},
       {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
+      cli_row("CLI-36", "static frame.inp --inertia-relief --out results -q", "command line: --inertia-relief"),
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

@@ -302,3 +302,62 @@ TEST(FrameStudyDefaults, PipelineKeepsTheTrencherRailsAndRearEndWhileAStudyNames
 }
 
 }  // namespace
+
+// The mesh's own gravity (*DLOAD GRAV) in frame-response: a constant load
+// acting throughout, the response starting from the static equilibrium under
+// it. With a zero load history the tip stays at w L^4 / 8 EI (cubic elements
+// give it exactly at the nodes), no start-up oscillation; with the step tip
+// load added, the response is the gravity deflection plus the step response
+// of the test above (superposition, to round-off), so it oscillates about
+// the static deflection under both with the closed-form amplitude checked there.
+class CantileverUnderGravity : public ::testing::Test {
+ protected:
+  framedyn::testing::TempDir dir;
+  static constexpr double kG = 9.81;
+  const double w = kRho * kArea * kG;                               // N/m
+  const double static_gravity = -w * std::pow(kL, 4) / (8.0 * kE * kI);  // tip uz, m
+  coupling::FrameStudyResults run(double p, const std::string& extra = "") {
+    dir.write("cantilever.inp", cantilever_inp(true) + "*DLOAD\nBEAM, GRAV, 9.81, 0, 0, -1\n");
+    dir.write("loads.csv", tip_load(p, kT1 / 120, 2 * kT1, ramped_step));
+    q = coupling::read_frame_study(
+        dir.write("s.yaml", study("  modes: all\n  method: mode_acceleration\n  damping: {modal_ratio: 0.0}\n  outputs:\n    tip: {node_set: TIP}\n" + extra))
+            .string());
+    return coupling::run_frame_study(q);
+  }
+  coupling::FrameStudyRequest q;
+};
+
+TEST_F(CantileverUnderGravity, ZeroLoadHistoryStaysAtTheStaticDeflectionWL4Over8EI) {
+  const auto r = run(0.0);
+  double worst = 0.0;
+  for (Eigen::Index j = 0; j < r.response.times.size(); ++j) worst = std::max(worst, std::abs(r.nodal[0].displacement(2, j) / static_gravity - 1.0));
+  std::cout << "[ measured ] w L^4 / 8EI = " << static_gravity << " m; largest relative departure of the tip over 2 periods " << worst << "\n";
+  EXPECT_LT(worst, 1e-9);
+  const nlohmann::ordered_json s = coupling::frame_summary(r, q);
+  EXPECT_EQ(s["constant_loads"]["dload_beams"], kElements);
+  EXPECT_EQ(s["constant_loads"]["cload_entries"], 0);
+  EXPECT_NEAR(s["constant_loads"]["resultant_force"]["value"][2].get<double>(), -w * kL, 1e-9 * w * kL);
+  // mesh_loads: none ignores them: the tip does not move.
+  const auto none = run(0.0, "  mesh_loads: none\n");
+  EXPECT_EQ(none.nodal[0].displacement.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_TRUE(coupling::frame_summary(none, q)["constant_loads"].is_null());
+}
+
+TEST_F(CantileverUnderGravity, StepLoadOscillatesAboutTheStaticDeflectionUnderGravityAndTheLoad) {
+  const auto with = run(kP);
+  const auto without = run(kP, "  mesh_loads: none\n");
+  double worst = 0.0, low = 0.0, high = 0.0;
+  for (Eigen::Index j = 0; j < with.response.times.size(); ++j) {
+    const double about = with.nodal[0].displacement(2, j) - static_gravity;
+    worst = std::max(worst, std::abs(about - without.nodal[0].displacement(2, j)));
+    low = std::min(low, about);
+    high = std::max(high, about);
+  }
+  std::cout << "[ measured ] superposition error " << worst / kStatic << " of PL^3/3EI; excursion about the gravity deflection " << low / kStatic
+            << " .. " << high / kStatic << " x PL^3/3EI\n";
+  EXPECT_LT(worst, 1e-9 * kStatic);
+  // Undamped step: between the gravity deflection and twice the load's static deflection beyond it.
+  EXPECT_GE(low, -1e-9 * kStatic);
+  EXPECT_LE(high, 2.0 * kStatic * (1.0 + 1e-4));
+  EXPECT_GE(high, 1.9 * kStatic);
+}
