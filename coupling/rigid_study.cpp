@@ -280,6 +280,8 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   rigid::Machine2D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
   if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(study.modal_soil), r.coordinates, study.fixed_coordinates);
+  r.static_contacts = static_contacts(machine);
+  if (study.modes) r.modes_by_state = modes_by_contact_state(machine, study.fixed_coordinates);
   if (!study.response) return r;
 
   const ResponseRequest& req = *study.response;
