@@ -35,8 +35,14 @@ Eigen::VectorXd gravity_force(const Multibody& model, double gravity) {
   return q;
 }
 
-ContactStatics solve_contact_statics(const Multibody& model, const Eigen::VectorXd& gravity, const std::vector<ContactDefinition>& all_contacts,
+ContactStatics solve_contact_statics(const Multibody& model, const Eigen::VectorXd& gravity, const std::vector<ContactDefinition>& given,
                                      const std::vector<int>& soil, ContactLaw law) {
+  // The contacts UnilateralContacts keeps: a normal element with stiffness or damping.
+  std::vector<ContactDefinition> all_contacts;
+  for (const ContactDefinition& c : given) {
+    const SpringDamper& el = model.elements().at(static_cast<std::size_t>(c.normal));
+    if (el.stiffness != 0.0 || el.damping != 0.0) all_contacts.push_back(c);
+  }
   const int n = model.size();
   const auto ne = model.elements().size();
   const Eigen::MatrixXd k_full = model.stiffness_matrix();
@@ -56,13 +62,6 @@ ContactStatics solve_contact_statics(const Multibody& model, const Eigen::Vector
     return s;
   }
 
-  // The contacts the iteration may release (as UnilateralContacts keeps them).
-  std::vector<std::size_t> active;
-  for (std::size_t i = 0; i < all_contacts.size(); ++i) {
-    const int e = all_contacts[i].normal;
-    const SpringDamper& el = model.elements().at(static_cast<std::size_t>(e));
-    if (el.stiffness != 0.0 || el.damping != 0.0) active.push_back(i);
-  }
   auto without = [&](Eigen::MatrixXd& k, int e) {
     const Eigen::RowVectorXd& g = maps[static_cast<std::size_t>(e)];
     k -= stiffness(e) * g.transpose() * g;
@@ -76,11 +75,11 @@ ContactStatics solve_contact_statics(const Multibody& model, const Eigen::Vector
   // A contact force below 1e-9 of the largest gravity load is taken as zero (no flip on round-off).
   const double tolerance = 1e-9 * std::max(gravity.cwiseAbs().maxCoeff(), 1e-300);
 
-  const int max_changes = 4 * static_cast<int>(active.size()) + 4;
+  const int max_changes = 4 * static_cast<int>(all_contacts.size()) + 4;
   for (;;) {
     Eigen::MatrixXd k = k_base;
     std::vector<std::string> lifted;
-    for (std::size_t i : active) {
+    for (std::size_t i = 0; i < all_contacts.size(); ++i) {
       if (s.engaged[i]) continue;
       lifted.push_back(all_contacts[i].name);
       without(k, all_contacts[i].normal);
@@ -107,7 +106,7 @@ ContactStatics solve_contact_statics(const Multibody& model, const Eigen::Vector
     // The largest violation (Eqs. 11.2-11.3), ties to the lowest index.
     double worst = tolerance;
     std::size_t flip = all_contacts.size();
-    for (std::size_t i : active) {
+    for (std::size_t i = 0; i < all_contacts.size(); ++i) {
       const double f = element_force(all_contacts[i].normal, s.deflection);
       const double violation = s.engaged[i] ? -f : f;  // tension while engaged, penetration while released
       if (violation > worst * (1.0 + 1e-9)) {
@@ -125,9 +124,16 @@ ContactStatics solve_contact_statics(const Multibody& model, const Eigen::Vector
 
   for (std::size_t e = 0; e < ne; ++e) s.element_forces.push_back(element_force(static_cast<int>(e), s.deflection));
   for (int e : soil) s.element_forces[static_cast<std::size_t>(e)] = 0.0;  // anchored where the blade stands
-  // Eq. 11.4: b = Q_g + sum over non-soil elements of G^T SF.
-  s.preload = gravity;
-  for (std::size_t e = 0; e < ne; ++e) s.preload += maps[e].transpose() * s.element_forces[e];
+  // Eq. 11.4: b = Q_g + sum over non-soil elements of G^T SF, which by (11.1)
+  // is the released contacts' share alone: summed so, b is exactly zero with
+  // every contact engaged (a symmetric machine stays exactly symmetric).
+  s.preload = Eigen::VectorXd::Zero(n);
+  for (std::size_t i = 0; i < all_contacts.size(); ++i) {
+    if (s.engaged[i]) continue;
+    std::vector<int> elements = all_contacts[i].tangential;
+    elements.push_back(all_contacts[i].normal);
+    for (int e : elements) s.preload += maps[static_cast<std::size_t>(e)].transpose() * s.element_forces[static_cast<std::size_t>(e)];
+  }
   return s;
 }
 

@@ -10,8 +10,9 @@
 // equilibrium position"; the cut-face reading has none while cutting), so
 // they are left out of K_A. The equations of motion, written about q_s, get
 // the constant generalised force
-//     b = Q_g + sum_{e not soil} G_e^T SF_e                                                    (11.4)
-// which is zero when every contact is engaged and balances the lost-contact
+//     b = Q_g + sum_{e not soil} G_e^T SF_e = sum_{e of released contacts} G_e^T SF_e    (11.4)
+// (by 11.1; summed in the second form, so that it is exactly zero when every
+// contact is engaged) which balances the lost-contact
 // correction (4a.4) of the released ones, so that q = 0, v = 0 is a rest
 // state of the response. Under `linear` (the thesis's bilateral springs) the
 // statics is the thesis's: every element, soil included, in K; b = 0.
@@ -37,8 +38,8 @@ namespace framedyn::rigid {
 struct ContactStatics {
   Eigen::VectorXd deflection;           // q_s from the unloaded springs, SI
   std::vector<double> element_forces;   // SF_e, N, compression positive (a released contact: -k G q_s < 0, its gap times k)
-  std::vector<ContactDefinition> contacts;  // as given
-  std::vector<bool> engaged;            // per contact, in the order given
+  std::vector<ContactDefinition> contacts;  // those given whose normal element has stiffness or damping, in order
+  std::vector<bool> engaged;            // per contact of `contacts`
   Eigen::VectorXd preload;              // b of Eq. 11.4, generalised force (SI)
   int changes = 0;                      // contact state changes the iteration made
 };
