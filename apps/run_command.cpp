@@ -58,6 +58,9 @@ int run_study(const RunOptions& opt) {
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
   rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
+  rigid["modes_state"] = coupling::contact_state_name(study.modal_soil);  // the contact state rigid.modes is in
+  rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
+  rigid["static"] = static_json(r.static_contacts, u);
 
   if (r.calibration && study.calibration)
     rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u,

@@ -12,11 +12,21 @@
 #include "core/units.h"
 #include "core/warnings.h"
 #include "coupling/contact_report.h"
+#include "coupling/static_report.h"
 
 namespace framedyn::apps {
 
 // rigid.contacts: one entry per contact, forces in the study's units.
 nlohmann::ordered_json contacts_json(const std::vector<coupling::ContactSummary>& contacts, const core::UnitSystem& units);
+
+// rigid.static: {contact_forces: {<name>: {value, unit}} (compression
+// positive), engaged: [names], lifted: [names]}, the equilibrium the response
+// starts from (docs/theory/rigid.md section 11).
+nlohmann::ordered_json static_json(const std::vector<coupling::StaticContact>& contacts, const core::UnitSystem& units);
+
+// rigid.modes_by_state: {<state>: {label, frequencies_hz}} for cutting,
+// backing_off and contact_lost (Eq. 11.7).
+nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateModes>& states);
 
 // Appends the warnings to summary["warnings"] (created if absent, so that any
 // stage of a run may add its own) and prints each on stderr as

@@ -281,6 +281,8 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   r.coordinates = machine.model().coordinate_names();
   r.coordinate_quantities = machine.model().coordinate_quantities();
   if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(study.modal_soil), r.coordinates, study.fixed_coordinates);
+  r.static_contacts = static_contacts(machine);
+  if (study.modes) r.modes_by_state = modes_by_contact_state(machine, study.fixed_coordinates);
   if (!study.response) return r;
 
   const ResponseRequest& req = *study.response;

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/units.h"
 #include "coupling/contact_report.h"
+#include "coupling/static_report.h"
 #include "coupling/frame_loads_2d.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
@@ -125,6 +126,8 @@ struct RigidResults {
   std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
   std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
+  std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
+  std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);

@@ -335,13 +335,16 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   RigidResults3D r;
   if (study.calibration)
     r.calibration = calibrate_parameters<rigid::Machine3D>(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::Machine3D& m) {
-      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), study.fixed_coordinates);
+      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting), m.model().coordinate_names(), study.fixed_coordinates);
     });
   r.machine = study.machine;
   rigid::Machine3D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
   r.coordinate_quantities = machine.model().coordinate_quantities();
-  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(), r.coordinates, study.fixed_coordinates);
+  // The modes in the state the response starts in: the blade cutting (Eq. 11.7).
+  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting), r.coordinates, study.fixed_coordinates);
+  r.static_contacts = static_contacts(machine);
+  if (study.modes) r.modes_by_state = modes_by_contact_state(machine, study.fixed_coordinates);
   if (!study.response) return r;
 
   const ResponseRequest& req = *study.response;

@@ -12,6 +12,7 @@
 
 #include "core/units.h"
 #include "coupling/contact_report.h"
+#include "coupling/static_report.h"
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
@@ -71,6 +72,8 @@ struct RigidResults3D {
   std::optional<FrameLoads3D> frame_loads;           // with a response
   std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
+  std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
+  std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
 };
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);

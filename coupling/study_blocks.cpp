@@ -71,6 +71,10 @@ void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed
       if (check.coordinate(f) < 0) throw root.map("analysis").error("fixed_coordinates", "coordinate names of this model", "'" + f + "'");
   } catch (const std::invalid_argument& e) {
     throw core::InputError({file, 0, "machine"}, "a consistent machine", e.what());
+  } catch (const rigid::StaticsError& e) {
+    // STUDY-84: no equilibrium on contacts that only push (rigid/contact_statics.h).
+    throw core::InputError({file, 0, "contacts"}, "a machine that rests under gravity on contacts that only push (docs/theory/rigid.md section 11)",
+                           "none: " + e.detail());
   } catch (const core::NumericalError& e) {
     // The machine's own check (rigid/multibody check_definiteness) names the
     // body or coordinate; at read time that is the study's fault, not the run's

@@ -198,34 +198,17 @@ Machine2D::Machine2D(const Machine2DParameters& p)
     const GroundInput* in = ground_input_of(static_cast<int>(e));
     inputs.push_back(in ? *in : GroundInput{});
   }
-  contacts_.configure(model_, contacts, static_element_forces(), inputs, p.contacts);
+  statics_ = solve_contact_statics(model_, gravity_force(model_, p.gravity), contacts, soil_elements_, p.contacts);
+  contacts_.configure(model_, contacts, statics_.element_forces, inputs, p.contacts);
 }
 
 Eigen::MatrixXd Machine2D::stiffness_matrix(ModalSoil soil) const {
-  switch (soil) {
-    case ModalSoil::cutting: return k_full_;
-    case ModalSoil::backing: return k_back_;
-    case ModalSoil::none: return k_no_soil_;
-  }
-  return k_full_;
+  Eigen::MatrixXd k = soil == ModalSoil::cutting ? k_cut_ : soil == ModalSoil::backing ? k_back_ : k_no_soil_;
+  remove_lifted_contacts(model_, statics_, k);  // Eq. 11.7
+  return k;
 }
 
 int Machine2D::coordinate(const std::string& name) const { return index_of(model_.coordinate_names(), name); }
-
-Eigen::VectorXd Machine2D::static_deflection() const {
-  // Gravity acts along -Z on every body: Q = sum m T^T (0, 0, -g).
-  Eigen::VectorXd q_gravity = Eigen::VectorXd::Zero(size());
-  for (const Body& b : model_.bodies()) q_gravity += b.translation.transpose() * Eigen::Vector3d(0, 0, -p_.gravity * b.mass);
-  return k_full_.ldlt().solve(q_gravity);
-}
-
-std::vector<double> Machine2D::static_element_forces() const {
-  const Eigen::VectorXd qs = static_deflection();
-  std::vector<double> f;
-  for (std::size_t e = 0; e < model_.elements().size(); ++e)
-    f.push_back(-model_.elements()[e].stiffness * model_.elongation_map(static_cast<int>(e)).dot(qs));
-  return f;
-}
 
 double Machine2D::soil_line_at(double t) const { return soil_.line_at(t); }
 
@@ -342,6 +325,7 @@ void Machine2D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
     const Eigen::Vector3d v_soil(p_.forward_speed * std::cos(p_.ground_slope), 0.0, -p_.forward_speed * std::sin(p_.ground_slope));
     f += model_.points()[static_cast<std::size_t>(blade_point_)].displacement.transpose() * (scale * p_.soil.damping * v_soil);
   }
+  f += statics_.preload;                     // Eq. 11.4: q = 0 is the contact-consistent rest state
   contacts_.add_lost_contacts(t, q, v, f);  // Eq. 4a.4
   a = m_solver_.solve(f);
 }

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/contact_statics.h"
 #include "rigid/ground_input.h"
 #include "rigid/multibody.h"
 #include "rigid/plow_linkage.h"
@@ -139,20 +140,24 @@ class Machine2D : public SwitchedSystem {
   // Index of a coordinate by name ("x", "psi", ...), -1 if absent.
   int coordinate(const std::string& name) const;
 
-  // K and C with the soil law at full value (the blade cutting): for modes.
+  // K and C with every element at full value (soil K5 included, every contact engaged).
   Eigen::MatrixXd stiffness_matrix() const { return k_full_; }
-  // Which soil stiffness a modal analysis sees: K5 at full value (the blade
-  // cutting), REK K5 (the blade in soil already cut), or no soil spring at all
-  // (the machine standing on its tires and bounce tire alone).
+  // The stiffness the response sees in a contact state (docs/theory/rigid.md
+  // section 11.3): the blade cutting (the soil law's cutting factor on K5: 1,
+  // or 0 in the cut-face reading), backing off (REK K5), or out of the soil
+  // (no soil spring); the tires and bounce tire lifted in the statics are left out.
   enum class ModalSoil { cutting, backing, none };
   Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const;
   Eigen::MatrixXd damping_matrix() const { return c_full_; }
   Eigen::MatrixXd mass_matrix() const { return m_; }
 
-  // Static equilibrium under gravity from the unloaded springs: q_static and
-  // the static force in every element (compression positive).
-  Eigen::VectorXd static_deflection() const;
-  std::vector<double> static_element_forces() const;
+  // Static equilibrium under gravity from the unloaded springs, with the
+  // contact law the response starts in (rigid/contact_statics.h): q_static and
+  // the static force in every element (compression positive). The response's
+  // q is measured from it.
+  Eigen::VectorXd static_deflection() const { return statics_.deflection; }
+  std::vector<double> static_element_forces() const { return statics_.element_forces; }
+  const ContactStatics& statics() const { return statics_; }  // which contacts are engaged, b of Eq. 11.4
 
   // SwitchedSystem
   int size() const override { return model_.size(); }
@@ -219,6 +224,7 @@ class Machine2D : public SwitchedSystem {
   SoilContact<Eigen::Vector2d> soil_;
   ToothCount teeth_;
   UnilateralContacts contacts_;  // one-sided tires (events after the soil's)
+  ContactStatics statics_;       // the equilibrium q is measured from (Eqs. 11.1-11.4)
   int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
   std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
   // The anchor at t: fixed in the machine, or carried rearward with the soil.

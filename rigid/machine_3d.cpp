@@ -256,11 +256,13 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
   c_full_ = model_.damping_matrix();
   k_cut_ = k_full_;
   k_back_ = k_full_;
+  k_no_soil_ = k_full_;
   c_back_ = c_full_;
   for (int e : soil_elements_) {
     const Eigen::RowVectorXd gmap = model_.elongation_map(e);
     const SpringDamper& el = model_.elements()[static_cast<std::size_t>(e)];
     if (p.soil.cut_face) k_cut_ -= el.stiffness * gmap.transpose() * gmap;
+    k_no_soil_ -= el.stiffness * gmap.transpose() * gmap;
     k_back_ -= (1.0 - p.soil.stiffness_reduction) * el.stiffness * gmap.transpose() * gmap;
     c_back_ -= (1.0 - p.soil.damping_reduction) * el.damping * gmap.transpose() * gmap;
   }
@@ -278,24 +280,18 @@ Machine3D::Machine3D(const Machine3DParameters& p) : p_(p), model_(coordinate_na
     const GroundInput* in = ground_input_of(static_cast<int>(e));
     inputs.push_back(in ? *in : GroundInput{});
   }
-  contacts_.configure(model_, contacts, static_element_forces(), inputs, p.contacts);
+  statics_ = solve_contact_statics(model_, gravity_force(model_, p.gravity), contacts, soil_elements_, p.contacts);
+  contacts_.configure(model_, contacts, statics_.element_forces, inputs, p.contacts);
 }
 
-std::vector<double> Machine3D::static_element_forces() const {
-  const Eigen::VectorXd qs = static_deflection();
-  std::vector<double> f;
-  for (std::size_t e = 0; e < model_.elements().size(); ++e)
-    f.push_back(-model_.elements()[e].stiffness * model_.elongation_map(static_cast<int>(e)).dot(qs));
-  return f;
+Eigen::MatrixXd Machine3D::stiffness_matrix(Machine2D::ModalSoil soil) const {
+  Eigen::MatrixXd k = soil == Machine2D::ModalSoil::cutting ? k_cut_ : soil == Machine2D::ModalSoil::backing ? k_back_ : k_no_soil_;
+  remove_lifted_contacts(model_, statics_, k);  // Eq. 11.7
+  return k;
 }
 
 int Machine3D::coordinate(const std::string& name) const { return index_of(model_.coordinate_names(), name); }
 
-Eigen::VectorXd Machine3D::static_deflection() const {
-  Eigen::VectorXd q_gravity = Eigen::VectorXd::Zero(size());
-  for (const Body& b : model_.bodies()) q_gravity += b.translation.transpose() * Eigen::Vector3d(0, 0, -p_.gravity * b.mass);
-  return k_full_.ldlt().solve(q_gravity);
-}
 
 Jacobian Machine3D::frame_point_jacobian(const Eigen::Vector3d& point) const {
   const Body& frame = model_.bodies()[static_cast<std::size_t>(frame_body_)];
@@ -442,6 +438,7 @@ void Machine3D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::Ve
     // Soil springs unstretched at the anchor; the soil streams past at VS (Eq. 2.23).
     f += model_.elongation_map(e).transpose() * (ks * el.direction.dot(soil_.anchor()) + cs * el.direction.dot(soil_flow_));
   }
+  f += statics_.preload;                     // Eq. 11.4: q = 0 is the contact-consistent rest state
   contacts_.add_lost_contacts(t, q, v, f);  // Eq. 4a.4
   a = m_solver_.solve(f);
 }

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/contact_statics.h"
 #include "rigid/ground_input.h"
 #include "rigid/machine_2d.h"
 #include "rigid/multibody.h"
@@ -174,9 +175,14 @@ class Machine3D : public SwitchedSystem {
   Eigen::MatrixXd stiffness_matrix() const { return k_full_; }  // soil at full value
   Eigen::MatrixXd damping_matrix() const { return c_full_; }
 
-  Eigen::VectorXd static_deflection() const;
-  // The static force SF_e = -k_e G_e q_s in every element (compression positive).
-  std::vector<double> static_element_forces() const;
+  // Static equilibrium under gravity with the contact law the response starts
+  // in (rigid/contact_statics.h, Eqs. 11.1-11.4); q is measured from it.
+  Eigen::VectorXd static_deflection() const { return statics_.deflection; }
+  // The static force SF_e = -k_e G_e q_s in every element (compression positive; 0 for the soil under unilateral contacts).
+  std::vector<double> static_element_forces() const { return statics_.element_forces; }
+  const ContactStatics& statics() const { return statics_; }
+  // The stiffness the response sees in a contact state (Eq. 11.7), as Machine2D::stiffness_matrix(ModalSoil).
+  Eigen::MatrixXd stiffness_matrix(Machine2D::ModalSoil soil) const;
   // The tires' and bounce tire's contacts (front_left_tire, ..., bounce_tire)
   // and their state: rigid/unilateral_contact.h.
   const UnilateralContacts& contacts() const { return contacts_; }
@@ -255,6 +261,8 @@ class Machine3D : public SwitchedSystem {
   SoilContact<Eigen::Vector3d> soil_;
   ToothCount teeth_;
   UnilateralContacts contacts_;         // one-sided tires (events after the soil's)
+  ContactStatics statics_;              // the equilibrium q is measured from (Eqs. 11.1-11.4)
+  Eigen::MatrixXd k_no_soil_;
   int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
   std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
   Eigen::VectorXd forcing(double t) const;

@@ -95,9 +95,19 @@ TEST(ContactOutputs, BilateralBounceTirePullsForTheReportedFractionAndIsWarnedAb
   EXPECT_NE(r.result.err.find("framedyn: warning [contact_in_tension]: bounce_tire"), std::string::npos) << r.result.err;
 }
 
+// The shipped plow, started from its own statics (docs/theory/rigid.md section 11),
+// keeps its bounce tire on the ground (least force 746 lbf of 2,794 at rest:
+// docs/validation.md 5.3); with twice the shaker force it lifts the plow off it.
+std::string with_shaker_force(std::string study, const std::string& force) {
+  const std::string key = "force: 26530,";
+  const auto at = study.find(key);
+  if (at == std::string::npos) throw std::runtime_error("no 'force: 26530,' in the shaker");
+  return study.replace(at, key.size(), "force: " + force + ",");
+}
+
 TEST(ContactOutputs, OneSidedContactsNeverPullAndTransmitNothingExactlyWhileLost) {
   TempDir dir;
-  const StudyRun r = run_study(dir, shipped("r100_plow_2d.yaml"));  // the default: unilateral
+  const StudyRun r = run_study(dir, with_shaker_force(shipped("r100_plow_2d.yaml"), "53060"));  // the default: unilateral
   for (const auto& [name, c] : r.summary["rigid"]["contacts"].items()) {
     EXPECT_GE(c["min_force"]["value"].get<double>(), 0.0) << name;
     EXPECT_EQ(c["tension_fraction"].get<double>(), 0.0) << name;
@@ -125,6 +135,31 @@ TEST(ContactOutputs, ThreeDSummaryReportsEveryTireAndTheBounceTireWithTheSameKey
     EXPECT_EQ(c["tension_fraction"].get<double>() > 0.0, c["min_force"]["value"].get<double>() < 0.0) << name;
   }
   EXPECT_FALSE(r.summary["warnings"].empty());  // the offset plow's bounce tire pulls too
+}
+
+// rigid.static: one force per contact {value, unit}, every engaged one pushing,
+// and the engaged/lifted lists naming every contact once; rigid.modes_by_state
+// with its three states: the same keys in 2-D and 3-D (the weight balance is
+// checked in tests/rigid/test_contact_statics.cpp).
+TEST(ContactOutputs, StaticContactForcesAndModesByStateHaveTheSameKeysIn2DAnd3D) {
+  for (const char* example : {"r100_plow_2d.yaml", "r100_plow_offset.yaml"}) {
+    TempDir dir;
+    const StudyRun r = run_study(dir, shipped(example));
+    const Json& s = r.summary["rigid"]["static"];
+    ASSERT_TRUE(s.contains("contact_forces")) << example;
+    const Json& contacts = r.summary["rigid"]["contacts"];
+    std::size_t listed = s["engaged"].size() + s["lifted"].size();
+    EXPECT_EQ(listed, contacts.size()) << example;
+    EXPECT_EQ(s["contact_forces"].size(), contacts.size()) << example;
+    for (const auto& [name, f] : s["contact_forces"].items()) {
+      EXPECT_TRUE(contacts.contains(name)) << example << " " << name;
+      EXPECT_EQ(f["unit"], "lbf") << example << " " << name;
+    }
+    for (const Json& name : s["engaged"]) EXPECT_GT(s["contact_forces"][name.get<std::string>()]["value"].get<double>(), 0.0) << example;
+    EXPECT_EQ(r.summary["rigid"]["modes_state"], "cutting") << example;
+    for (const char* state : {"cutting", "backing_off", "contact_lost"})
+      EXPECT_TRUE(r.summary["rigid"]["modes_by_state"].contains(state)) << example << " " << state;
+  }
 }
 
 }  // namespace

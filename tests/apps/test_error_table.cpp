@@ -366,6 +366,9 @@ std::vector<Row> rows() {
       study_row("STUDY-23", "model: rigid_2d", "model: rigid_4d", "model: rigid_4d", "model"),
       study_row("STUDY-24", "attachment: plow", "attachment: harrow", "attachment: harrow", "attachment"),
       study_row("STUDY-83", "attachment: plow", "attachment: plow\ncontacts: rigid", "contacts: rigid", "contacts"),
+      // No bounce tire: the plow behind the rear axle tips the machine backward off its front tire.
+      study_row("STUDY-84", "bounce_tire: {point: [130, -26], stiffness: 1500, damping: 5}", "bounce_tire: {point: [130, -26], stiffness: 0, damping: 5}", "",
+                "contacts"),
       study_row("STUDY-25", "attachment: plow", "attachment: chain", "  weight: 2800", "plow"),
       study_row("STUDY-26", "upper_joint: [112, 4]", "upper_joint: [130, -13]", "    upper_pivot", "plow.linkage"),
       study_row("STUDY-27", "arm_point: [96, 5]", "arm_point: [66, 24]", "arm_point: [66, 24]", "plow.lift_cylinder.arm_point"),
