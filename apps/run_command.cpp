@@ -86,6 +86,7 @@ int run_study(const RunOptions& opt) {
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
     rigid["contacts"] = contacts_json(r.contacts, u);
+    rigid["steady"] = steady_json(r.steady, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (const std::string& c : r.coordinates) h.push_back(core::column(c, coordinate_unit(c, u)));

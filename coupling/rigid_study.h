@@ -14,6 +14,7 @@
 #include "core/units.h"
 #include "coupling/contact_report.h"
 #include "coupling/frame_loads_2d.h"
+#include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
 #include "rigid/rigid_modes.h"
@@ -107,6 +108,7 @@ struct RigidResults {
   std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
   std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
+  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);

@@ -15,6 +15,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
+#include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_3d.h"
 #include "rigid/rigid_modes.h"
@@ -70,6 +71,7 @@ struct RigidResults3D {
   std::optional<FrameLoads3D> frame_loads;           // with a response
   std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
+  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);
