@@ -68,7 +68,7 @@ nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& fram
     const std::vector<double> stress(r.series_normal_stress.data(), r.series_normal_stress.data() + r.series_normal_stress.size());
     const std::vector<double> moment(r.series_bending_moment.data(), r.series_bending_moment.data() + r.series_bending_moment.size());
     rails[r.spec.name] = {
-        {"peak_normal_stress", split_json(rigid::split_peaks(t, stress, reached_at), 1.0 / units.to_si_factor(core::Quantity::stress),
+        {"peak_abs_normal_stress", split_json(rigid::split_peaks(t, stress, reached_at), 1.0 / units.to_si_factor(core::Quantity::stress),
                                           units.label(core::Quantity::stress))},
         {"peak_bending_moment", split_json(rigid::split_peaks(t, moment, reached_at), 1.0 / units.to_si_factor(core::Quantity::moment),
                                            units.label(core::Quantity::moment))}};

@@ -27,7 +27,8 @@ nlohmann::ordered_json contacts_json(const std::vector<coupling::ContactSummary>
 // peak over the start-up and over steady operation (study units).
 nlohmann::ordered_json steady_json(const coupling::SteadyReport& steady, const core::UnitSystem& units);
 
-// frame.steady (the pipeline): each rail's peak normal stress and bending
+// frame.steady (the pipeline): each rail's peak |normal stress| (its series
+// is the largest magnitude over the rail's stations) and resultant bending
 // moment over the start-up and over steady operation, split at `reached_at`.
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at,
                                          const core::UnitSystem& units);

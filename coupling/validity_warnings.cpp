@@ -31,23 +31,41 @@ std::string law_of(const std::string& part) {
 
 }  // namespace
 
+bool is_angle_coordinate(const std::string& name) {
+  return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha";
+}
+
 LargestRotation largest_body_rotation(const rigid::Multibody& model, const rigid::Trajectory& tr) {
+  // Candidates: the bodies' rotations |R_b q|, then the angle coordinates
+  // (psi turns the plow linkage's massless arms, which are no bodies).
   const std::vector<rigid::Body>& bodies = model.bodies();
-  std::vector<double> angle(bodies.size(), 0.0), when(bodies.size(), 0.0);
+  const std::vector<std::string>& names = model.coordinate_names();
+  std::vector<std::string> what;
+  std::vector<int> coordinate;  // -1 for a body
+  for (const rigid::Body& b : bodies) {
+    what.push_back("body " + b.name);
+    coordinate.push_back(-1);
+  }
+  for (std::size_t c = 0; c < names.size(); ++c)
+    if (is_angle_coordinate(names[c])) {
+      what.push_back("coordinate " + names[c]);
+      coordinate.push_back(static_cast<int>(c));
+    }
+  std::vector<double> angle(what.size(), 0.0), when(what.size(), 0.0);
   for (std::size_t i = 0; i < tr.time.size(); ++i)
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const double a = (bodies[b].rotation * tr.q[i]).norm();
-      if (a > angle[b]) {
-        angle[b] = a;
-        when[b] = tr.time[i];
+    for (std::size_t k = 0; k < what.size(); ++k) {
+      const double a = coordinate[k] < 0 ? (bodies[k].rotation * tr.q[i]).norm() : std::abs(tr.q[i](coordinate[k]));
+      if (a > angle[k]) {
+        angle[k] = a;
+        when[k] = tr.time[i];
       }
     }
   LargestRotation r;
-  if (bodies.empty()) return r;
+  if (what.empty()) return r;
   const double top = *std::max_element(angle.begin(), angle.end());
-  for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (angle[b] >= top * (1 - 1e-6)) {  // the lowest index among the near-equal largest
-      r = {angle[b], bodies[b].name, when[b]};
+  for (std::size_t k = 0; k < what.size(); ++k)
+    if (angle[k] >= top * (1 - 1e-6)) {  // the first among the near-equal largest
+      r = {angle[k], what[k], when[k]};
       break;
     }
   return r;

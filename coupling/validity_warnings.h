@@ -26,12 +26,13 @@
 
 namespace framedyn::coupling {
 
-// Eq. 8.1: the largest rotation magnitude |R_b q| of any body over the
-// samples, with the body (lowest index among those within 1e-6 relative of
-// the largest) and the time.
+// Eq. 8.1: the largest rotation over the samples: of any body (|R_b q|) or
+// angle coordinate (theta*, psi, eta, alpha: psi turns the plow linkage's
+// massless arms); named "body <name>" or "coordinate <name>", the first (bodies
+// in order, then coordinates) among those within 1e-6 relative of the largest.
 struct LargestRotation {
   double angle = 0.0;  // rad
-  std::string body;
+  std::string body;    // what rotates: "body plow", "coordinate psi"
   double time = 0.0;   // s
 };
 constexpr double kLinearisationErrorLimit = 0.01;  // x^2/2 at the largest rotation

@@ -49,7 +49,7 @@ TEST(ValidityWarnings, RotationBeyondOnePercentLinearisationErrorWarnsWithItsErr
   const double limit = std::sqrt(2 * kLinearisationErrorLimit);  // x^2/2 = 1 %: 0.1414 rad
   const rigid::Multibody mb = pitching_bodies(2.0);
   const LargestRotation inside = largest_body_rotation(mb, pitching(0.999 * limit / 2));
-  EXPECT_EQ(inside.body, "plow");
+  EXPECT_EQ(inside.body, "body plow");
   EXPECT_NEAR(inside.angle, 0.999 * limit, 1e-12);
   EXPECT_NEAR(inside.time, 0.025, 1e-12);
   EXPECT_FALSE(rotation_warning(inside).has_value());
@@ -60,13 +60,29 @@ TEST(ValidityWarnings, RotationBeyondOnePercentLinearisationErrorWarnsWithItsErr
   EXPECT_NEAR(figure(*w, "largest_rotation"), x, 1e-12);
   EXPECT_NEAR(figure(*w, "arm_error_x2_over_2"), x * x / 2, 1e-15);
   EXPECT_NEAR(figure(*w, "sin_error_1_minus_sinx_over_x"), 1 - std::sin(x) / x, 1e-15);  // ~ x^2/6
-  EXPECT_NE(w->message.find("plow rotates by"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("body plow rotates by"), std::string::npos) << w->message;
+}
+
+TEST(ValidityWarnings, AngleCoordinateOfAMasslessLinkageCountsAsARotation) {
+  // psi turns the plow linkage's arms, which are no bodies: its own angle is the rotation.
+  rigid::Multibody mb({"z", "psi"});
+  rigid::Body b;
+  b.name = "plow";
+  b.mass = 1.0;
+  b.translation = rigid::Jacobian::Zero(3, 2);
+  b.translation(2, 1) = 1.0;  // psi lifts the plow without turning it
+  b.rotation = rigid::Jacobian::Zero(3, 2);
+  mb.add_body(b);
+  const LargestRotation r = largest_body_rotation(mb, pitching(0.2));
+  EXPECT_EQ(r.body, "coordinate psi");
+  EXPECT_NEAR(r.angle, 0.2, 1e-12);
+  EXPECT_TRUE(rotation_warning(r).has_value());
 }
 
 TEST(ValidityWarnings, EqualRotationsNameTheFirstBodyWhateverTheRoundOff) {
   // Two bodies rotating alike to round-off: the first is named, not whichever wins by an ulp.
   const LargestRotation r = largest_body_rotation(pitching_bodies(1.0 + 1e-12), pitching(0.1));
-  EXPECT_EQ(r.body, "frame");
+  EXPECT_EQ(r.body, "body frame");
 }
 
 // `count` switches of the soil law inside one 0.05 s period, `interval` apart,
