@@ -153,6 +153,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
     rigid["contacts"] = contacts_json(r.contacts, u);
+    rigid["steady"] = steady_json(r.steady, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
@@ -200,6 +201,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     frame = coupling::run_frame_study(*study.frame_response, &loads);
     coupling::write_frame_outputs(*frame, *study.frame_response, folder);
     j["frame"] = coupling::frame_summary(*frame, *study.frame_response);
+    j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);

@@ -83,6 +83,7 @@ int run_study(const RunOptions& opt) {
       resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
     rigid["response"] = resp;
     rigid["contacts"] = contacts_json(r.contacts, u);
+    rigid["steady"] = steady_json(r.steady, u);
 
     std::vector<std::string> h = {"time [s]"};
     for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));

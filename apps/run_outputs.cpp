@@ -35,13 +35,75 @@ nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateMode
     for (const rigid::RigidMode& m : s.modes) f.push_back(m.frequency_hz);
     j[s.state] = {{"label", s.label}, {"frequencies_hz", f}};
   }
+namespace {
+
+// {unit, start_up: {value, time_s}, steady: {value, time_s}}, a part absent
+// when it holds no sample (steady: not reached; start_up: steady from t = 0).
+nlohmann::ordered_json split_json(const rigid::PeakSplit& s, double factor, const std::string& unit) {
+  nlohmann::ordered_json j = {{"unit", unit}};
+  if (s.start_up) j["start_up"] = {{"value", s.start_up->value * factor}, {"time_s", s.start_up->time}};
+  if (s.steady) j["steady"] = {{"value", s.steady->value * factor}, {"time_s", s.steady->time}};
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json steady_json(const coupling::SteadyReport& st, const core::UnitSystem& units) {
+  nlohmann::ordered_json j;
+  const rigid::SteadyOperation& op = st.operation;
+  j["reached_at"] = op.reached_at ? nlohmann::ordered_json{{"value", *op.reached_at}, {"unit", "s"}} : nlohmann::ordered_json(nullptr);
+  if (!st.assessed) {
+    j["assessed"] = false;
+    j["reason"] = st.not_assessed;
+    return j;
+  }
+  j["period_multiple"] = op.reached_at ? nlohmann::ordered_json(op.period_multiple) : nlohmann::ordered_json(nullptr);
+  j["shaker_period"] = {{"value", op.shaker_period}, {"unit", "s"}};
+  j["tolerance"] = st.criterion.tolerance;
+  j["window_periods"] = st.criterion.window_periods;
+  j["max_period_multiple"] = st.criterion.max_period_multiple;
+  j["remaining_change"] = {{"value", op.remaining_change}, {"period_multiple", op.remaining_period_multiple}, {"signal", op.leading_signal}};
+  j["watched"] = st.watched;
+  nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
+  for (const coupling::SteadyPeak& p : st.peaks) {
+    // A dimensionless history is an angle in degrees (plow_force_angle_deg) or a ratio.
+    const bool plain = p.quantity == core::Quantity::dimensionless;
+    const bool degrees = plain && p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, "_deg") == 0;
+    peaks[p.name] = split_json(p.split, plain ? 1.0 : 1.0 / units.to_si_factor(p.quantity),
+                               degrees ? std::string("deg") : plain ? std::string("1") : units.label(p.quantity));
+  }
+  j["peaks"] = peaks;
+  return j;
+}
+
+nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at, const core::UnitSystem& units) {
+  nlohmann::ordered_json j;
+  j["reached_at"] = reached_at ? nlohmann::ordered_json{{"value", *reached_at}, {"unit", "s"}} : nlohmann::ordered_json(nullptr);
+  const std::vector<double> t(frame.response.times.data(), frame.response.times.data() + frame.response.times.size());
+  nlohmann::ordered_json rails = nlohmann::ordered_json::object();
+  for (const coupling::RailRecovery& r : frame.rails) {
+    const std::vector<double> stress(r.series_normal_stress.data(), r.series_normal_stress.data() + r.series_normal_stress.size());
+    const std::vector<double> moment(r.series_bending_moment.data(), r.series_bending_moment.data() + r.series_bending_moment.size());
+    rails[r.spec.name] = {
+        {"peak_abs_normal_stress", split_json(rigid::split_peaks(t, stress, reached_at), 1.0 / units.to_si_factor(core::Quantity::stress),
+                                          units.label(core::Quantity::stress))},
+        {"peak_bending_moment", split_json(rigid::split_peaks(t, moment, reached_at), 1.0 / units.to_si_factor(core::Quantity::moment),
+                                           units.label(core::Quantity::moment))}};
+  }
+  j["rails"] = rails;
   return j;
 }
 
 void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings) {
   if (!summary.contains("warnings")) summary["warnings"] = nlohmann::ordered_json::array();
   for (const core::Warning& w : warnings) {
-    summary["warnings"].push_back({{"code", w.code}, {"message", w.message}});
+    nlohmann::ordered_json jw = {{"code", w.code}, {"message", w.message}};
+    if (!w.figures.empty()) {
+      nlohmann::ordered_json figures = nlohmann::ordered_json::object();
+      for (const core::WarningFigure& f : w.figures) figures[f.name] = {{"value", f.value}, {"unit", f.unit}};
+      jw["figures"] = figures;
+    }
+    summary["warnings"].push_back(jw);
     fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
   }
 }

@@ -1,18 +1,22 @@
 // Outputs every rigid-body run writes the same way in 2-D and 3-D:
 // summary.json's rigid.contacts.<name> {min_force, max_force (compression
 // positive) {value, unit}, tension_fraction, lift_off_fraction} and the
-// top-level `warnings` list of {code, message}, also printed on stderr.
+// top-level `warnings` list of {code, message, figures}, also printed on
+// stderr; rigid.steady (steady operation and the peaks before and in it).
 // docs/user-guide.md, "summary.json" and "Warnings".
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <vector>
 
 #include "core/units.h"
 #include "core/warnings.h"
 #include "coupling/contact_report.h"
 #include "coupling/static_report.h"
+#include "coupling/frame_study.h"
+#include "coupling/steady_report.h"
 
 namespace framedyn::apps {
 
@@ -27,6 +31,16 @@ nlohmann::ordered_json static_json(const std::vector<coupling::StaticContact>& c
 // rigid.modes_by_state: {<state>: {label, frequencies_hz}} for cutting,
 // backing_off and contact_lost (Eq. 11.7).
 nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateModes>& states);
+// rigid.steady: reached_at {value, unit} or null, the period multiple, the
+// criterion, the remaining change, the watched signals, and every history's
+// peak over the start-up and over steady operation (study units).
+nlohmann::ordered_json steady_json(const coupling::SteadyReport& steady, const core::UnitSystem& units);
+
+// frame.steady (the pipeline): each rail's peak |normal stress| (its series
+// is the largest magnitude over the rail's stations) and resultant bending
+// moment over the start-up and over steady operation, split at `reached_at`.
+nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at,
+                                         const core::UnitSystem& units);
 
 // Appends the warnings to summary["warnings"] (created if absent, so that any
 // stage of a run may add its own) and prints each on stderr as

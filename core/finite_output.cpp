@@ -177,13 +177,19 @@ std::string vtu_location(const std::string& text, const Hit& hit) {
   return fmt::format("DataArray \"{}\", entry {}, component {} (both counted from 0; line {})", name, entry, component, hit_line);
 }
 
+// Keys whose null is a finding, not a broken number: steady operation not
+// reached (rigid.steady.reached_at, period_multiple; docs/user-guide.md).
+bool nullable_key(const std::string& key) { return key == "reached_at" || key == "period_multiple"; }
+
 // The dotted key path of the first null in a JSON document, as in
-// "frame.modes[2].frequency_hz".
+// "frame.modes[2].frequency_hz" (a nullable key's null excepted).
 std::optional<std::string> first_null(const nlohmann::json& j, const std::string& path) {
   if (j.is_null()) return path.empty() ? std::string("(the whole document)") : path;
   if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it)
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (it.value().is_null() && nullable_key(it.key())) continue;
       if (auto p = first_null(it.value(), path.empty() ? it.key() : path + "." + it.key())) return p;
+    }
   } else if (j.is_array()) {
     for (std::size_t i = 0; i < j.size(); ++i)
       if (auto p = first_null(j[i], fmt::format("{}[{}]", path, i))) return p;

@@ -760,7 +760,8 @@ std::vector<core::Warning> frame_warnings(const FrameStudyResults& r, const Fram
                                  "moving machine does not have, whose reaction sets this stress; compare with supports: none "
                                  "(free_free_inertia_relief) before using it (docs/user-guide.md, \"Which support to believe\")",
                                  rail.spec.name, what, u.from_si(peak->value, qty), u.label(qty), peak->point.x() * lf, u.label(Quantity::length),
-                                 peak->element_id, peak->time, support, r.model.nodes[static_cast<std::size_t>(at)].id)});
+                                 peak->element_id, peak->time, support, r.model.nodes[static_cast<std::size_t>(at)].id),
+                     {}});
     }
   return out;
 }

@@ -355,6 +355,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
                                     0.5 * r.resultants->srmy[i][k] * fo.rail_top_fiber / fo.rail_second_moment;
     }
   }
+  assess_response(study, machine, r);  // steady operation, validity warnings (issue 15)
   return r;
 }
 

@@ -15,6 +15,7 @@
 #include "coupling/contact_report.h"
 #include "coupling/static_report.h"
 #include "coupling/frame_loads_2d.h"
+#include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
 #include "rigid/rigid_modes.h"
@@ -128,6 +129,7 @@ struct RigidResults {
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
   std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
   std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
+  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);

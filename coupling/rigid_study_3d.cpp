@@ -386,6 +386,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   }
   if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(machine, tr));
   r.frame_loads = frame_loads_3d(machine, tr);
+  assess_response(study, machine, r);  // steady operation, validity warnings (issue 15)
   return r;
 }
 

@@ -16,6 +16,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
+#include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_3d.h"
 #include "rigid/rigid_modes.h"
@@ -74,6 +75,7 @@ struct RigidResults3D {
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
   std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
   std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
+  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);

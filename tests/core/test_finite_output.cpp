@@ -107,6 +107,22 @@ TEST(FiniteOutput, JsonSummaryNullFromANaNNamesTheKeyPath) {
   expect_contains(refusal("summary.json", "{\n  \"a\": 1,\n  \"b\": nan\n}\n"), "summary.json: line 3 is NaN");
 }
 
+// Steady operation not reached is written as rigid.steady.reached_at: null
+// (and period_multiple: null): those two keys may be null, no other, and a
+// NaN under them is still refused.
+TEST(FiniteOutput, SteadyOperationNotReachedIsTheOnlyNullASummaryMayHold) {
+  nlohmann::json j;
+  j["rigid"]["steady"]["reached_at"] = nullptr;
+  j["rigid"]["steady"]["period_multiple"] = nullptr;
+  j["rigid"]["steady"]["tolerance"] = 0.01;
+  EXPECT_NO_THROW(framedyn::core::check_finite_output("summary.json", j.dump(2)));
+  j["rigid"]["steady"]["remaining_change"] = kNaN;
+  expect_contains(refusal("summary.json", j.dump(2)), "summary.json: key rigid.steady.remaining_change is null");
+  j["rigid"]["steady"]["remaining_change"] = 0.5;
+  j["rigid"]["steady"]["reached_at"] = {{"value", kNaN}, {"unit", "s"}};
+  expect_contains(refusal("summary.json", j.dump(2)), "summary.json: key rigid.steady.reached_at.value is null");
+}
+
 TEST(FiniteOutput, ResultsFolderWritesNothingAndLeavesEarlierResults) {
   testing::TempDir dir;
   const fs::path target = dir / "results";

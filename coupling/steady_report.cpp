@@ -1,0 +1,109 @@
+// Steady operation and validity warnings of a vehicle run: see steady_report.h.
+#include "coupling/steady_report.h"
+
+#include <fmt/format.h>
+
+#include "coupling/frame_loads_2d.h"
+#include "coupling/rigid_study.h"
+#include "coupling/rigid_study_3d.h"
+#include "coupling/validity_warnings.h"
+
+namespace framedyn::coupling {
+
+namespace {
+
+using core::Quantity;
+
+enum Group { motion = 0, force = 1, moment = 2 };
+
+struct History {
+  std::string name;
+  Quantity quantity;
+  std::vector<double> values;  // SI
+};
+
+bool is_blade_motion(const std::string& name) { return name == "blade_x" || name == "blade_y" || name == "blade_z"; }
+
+// The detector over the blade motion and the frame loads, and the peaks of
+// every history split at reached_at.
+SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, const std::vector<Series>& series,
+                           const std::vector<History>& frame_loads) {
+  SteadyReport rep;
+  if (!(shaker_hz > 0)) {
+    rep.not_assessed = "no shaker: steady operation is judged over shaker periods (a plow with plow.shaker)";
+    return rep;
+  }
+  rep.assessed = true;
+  std::vector<rigid::WatchedSignal> watched;
+  for (const Series& s : series)
+    if (is_blade_motion(s.name)) watched.push_back({s.name, &s.values, motion});
+  for (const History& h : frame_loads) watched.push_back({h.name, &h.values, h.quantity == Quantity::force ? force : moment});
+  for (const rigid::WatchedSignal& w : watched) rep.watched.push_back(w.name);
+  rep.operation = rigid::detect_steady_operation(time, watched, 1.0 / shaker_hz, rep.criterion);
+  for (const Series& s : series) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
+  for (const History& h : frame_loads) rep.peaks.push_back({h.name, h.quantity, rigid::split_peaks(time, h.values, rep.operation.reached_at)});
+  return rep;
+}
+
+template <class Study, class Results>
+void add_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
+  const ResponseRequest& req = *study.response;
+  if (auto w = rotation_warning(largest_body_rotation(model, r.trajectory))) r.warnings.push_back(*w);
+  const double window = switching_window(shaker_hz);
+  for (core::Warning& w : chattering_warnings(switching_activity(r.trajectory.events, window), window,
+                                              req.method == ResponseRequest::Method::event_located, req.rk4_step, shaker_hz > 0))
+    r.warnings.push_back(std::move(w));
+  for (core::Warning& w : resonance_warnings(shaker_hz, r.modes, modes_label)) r.warnings.push_back(std::move(w));
+  if (r.steady.assessed)
+    if (auto w = steady_warning(r.steady.operation, r.steady.criterion, req.duration)) r.warnings.push_back(*w);
+}
+
+double shaker_of(rigid::Attachment a, double frequency) { return a == rigid::Attachment::plow ? frequency : 0.0; }
+
+}  // namespace
+
+void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, RigidResults& r) {
+  if (!study.response) return;
+  const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
+  // The frame loads (computed here if the study did not ask for frame_output).
+  const std::vector<FrameLoad2D> computed = r.frame_loads.empty() ? frame_loads_2d(machine, r.trajectory) : std::vector<FrameLoad2D>{};
+  const std::vector<FrameLoad2D>& loads = r.frame_loads.empty() ? computed : r.frame_loads;
+  std::vector<History> frame;
+  for (const FrameLoad2D& l : loads) {
+    History fx{l.name + "_fx", Quantity::force, {}}, fz{l.name + "_fz", Quantity::force, {}}, my{l.name + "_my", Quantity::moment, l.moment};
+    for (const Eigen::Vector2d& f : l.force) {
+      fx.values.push_back(f.x());
+      fz.values.push_back(f.y());
+    }
+    for (History* h : {&fx, &fz, &my}) frame.push_back(std::move(*h));
+  }
+  r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
+  // The rail's top-fiber stress at the output points (frame_output.rail): peaks only.
+  if (r.steady.assessed && !r.rail_top_stress.empty())
+    for (std::size_t k = 0; k < r.rail_top_stress.front().size(); ++k) {
+      std::vector<double> s;
+      for (const std::vector<double>& row : r.rail_top_stress) s.push_back(row[k]);
+      r.steady.peaks.push_back({fmt::format("rail_top_stress_point_{}", k + 1), Quantity::stress,
+                                rigid::split_peaks(r.trajectory.time, s, r.steady.operation.reached_at)});
+    }
+  const char* soil = study.modal_soil == rigid::Machine2D::ModalSoil::cutting ? "cutting"
+                     : study.modal_soil == rigid::Machine2D::ModalSoil::backing ? "backing" : "none";
+  add_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
+}
+
+void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine, RigidResults3D& r) {
+  if (!study.response) return;
+  const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
+  std::vector<History> frame;
+  if (r.frame_loads)
+    for (const LoadPointHistory& p : all_frame_loads(*r.frame_loads).points)
+      for (int c = 0; c < 6; ++c) {
+        History h{p.name + "_" + kLoadComponents[c], c < 3 ? Quantity::force : Quantity::moment, {}};
+        for (Eigen::Index i = 0; i < p.values.rows(); ++i) h.values.push_back(p.values(i, c));
+        frame.push_back(std::move(h));
+      }
+  r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
+  add_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
+}
+
+}  // namespace framedyn::coupling
