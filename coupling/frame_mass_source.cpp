@@ -65,7 +65,9 @@ FrameMassSources frame_mass_from_mesh(const std::vector<StudyFramePart>& parts, 
       using core::Quantity;
       const double lf = 1.0 / u.to_si_factor(Quantity::length);
       const std::string L = u.label(Quantity::length);
-      const auto xyz = [&](const Eigen::Vector3d& x) { return fmt::format("[{:.4g}, {:.4g}, {:.4g}] {}", x.x() * lf, x.y() * lf, x.z() * lf, L); };
+      // Round-off (a centreline c.g. at 1e-15) printed as 0, so the message is the same on every CPU.
+      const auto clean = [&](double v) { return std::abs(v) < 1e-9 * extent ? 0.0 : v * lf; };
+      const auto xyz = [&](const Eigen::Vector3d& x) { return fmt::format("[{:.4g}, {:.4g}, {:.4g}] {}", clean(x.x()), clean(x.y()), clean(x.z()), L); };
       throw core::InputError(
           given.where,
           fmt::format("the frame structure's mass, c.g. and inertia as the frame mesh {} has them, within {:g} % (mass), {:.3g} {} (c.g.: {:g} % "
