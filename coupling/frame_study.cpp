@@ -266,17 +266,22 @@ FrameStudyRequest read_frame_study(const std::string& file) {
   return r;
 }
 
-FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given) {
-  const auto start = std::chrono::steady_clock::now();
-  FrameStudyResults out;
-  out.model = fem::read_inp(q.mesh);
-  fem::FrameModel& model = out.model;
+fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
+  fem::FrameModel model = fem::read_inp(q.mesh);
   // A mesh in other units than the study is most often the wrong file (a
   // metric copy of an inch frame): converted only when the study says so.
   if (!q.convert_units && model.units.name() != q.units.name())
     throw core::InputError(q.where("mesh"),
                            fmt::format("a mesh in the study's units, {} (or frame.convert_units: true to convert it)", q.units.name()),
                            fmt::format("{} in {} (its '** units:' line)", q.mesh.string(), model.units.name()));
+  return model;
+}
+
+FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameStudyResults out;
+  out.model = read_frame_mesh(q);
+  fem::FrameModel& model = out.model;
   const std::string mesh_name = q.mesh.string();
   if (q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped) {
     for (const std::string& name : q.support_sets) {
@@ -333,6 +338,11 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   for (const LoadPointHistory& p : out.loads.points) points.push_back({p.name, p.location});
   out.mapping = map_load_points(model, points);
   check_load_points_on_mesh(model, out.mapping, out.loads, q, loads_file);
+  // The frame assembly's parts, after the loads are mapped (a load point reaches frame nodes, never a part's c.g.
+  // node): their nodes are numbered after the mesh's, so the distribution gains zero rows for them.
+  out.parts = mount_frame_parts(model, q.parts);
+  out.mapping.distribution.conservativeResize(model.dof_count(), out.mapping.distribution.cols());
+  out.mass = frame_rigid_body_mass(model);
 
   fem::FrameDynamics frame(model);
   const int rigid_count = frame.rigid_count();  // free-free 6, supported 0, partially supported between
@@ -664,6 +674,13 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     j["free_rigid_motions"] = {{"count", r.free_rigid_motions},
                                {"meaning", "the supports leave these rigid motions free: the loads are relieved by their inertia and the "
                                            "displacements are the elastic part (as for supports: none)"}};
+  // The parts on the frame model, its total mass and where the frame structure's mass came from (Eqs. 9.3, 9.4).
+  {
+    FramePartsSummary parts = frame_parts_summary(r.model, r.parts, r.mass, q.structure_part, q.structure_source, q.parts_carried_by_mesh, u);
+    j["parts"] = std::move(parts.parts);
+    j["total_mass"] = std::move(parts.total_mass);
+    j["structure"] = std::move(parts.structure);
+  }
   ordered_json moments = ordered_json::object(), components = ordered_json::object();
   const RailRecovery* worst = nullptr;
   for (const RailRecovery& rail : r.rails) {

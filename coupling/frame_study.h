@@ -43,6 +43,8 @@
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "core/warnings.h"
+#include "coupling/frame_balance.h"
+#include "coupling/frame_parts.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
 #include "coupling/output_sets.h"
@@ -99,6 +101,13 @@ struct FrameStudyRequest {
   // name a line: the key's own line, or the block's when the key was left to
   // its default.
   std::map<std::string, core::InputLocation> key_locations;
+  // The frame assembly's parts the frame model carries as masses on rigid links
+  // (coupling/frame_parts.h, SI); a 3-D study sets them from its frame.parts less
+  // the frame structure the mesh models (coupling/frame_mass_source.h). Empty: the mesh alone.
+  std::vector<rigid::RigidPart3D> parts;
+  std::string structure_part;                  // the frame part the mesh models ("" without a vehicle model)
+  std::string structure_source;                // "mesh": the vehicle model took the structure's mass from the mesh
+  std::vector<std::string> parts_carried_by_mesh;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
   core::InputLocation where(const std::string& key) const;
@@ -111,7 +120,9 @@ FrameStudyRequest read_frame_block(const YamlMap& frame, const std::filesystem::
 FrameStudyRequest read_frame_study(const std::string& file);
 
 struct FrameStudyResults {
-  fem::FrameModel model;                     // the mesh with the study's supports
+  fem::FrameModel model;                     // the mesh with the study's supports and the mounted parts
+  std::vector<MountedPart> parts;            // request.parts as placed on the model
+  RigidBodyMass mass;                        // the model's rigid-body mass (tubes and parts; Eq. 9.3)
   LoadHistory loads;
   LoadMapping mapping;
   Eigen::VectorXd frequencies_hz;            // elastic modes (those used; the lowest 20 for `direct`)
@@ -126,6 +137,10 @@ struct FrameStudyResults {
   int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
   int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
 };
+
+// The study's mesh, refused (naming frame.mesh) when it is in other units than
+// the study and convert_units is not set.
+fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 
 // Runs the study. `loads` replaces the request's load-history file (e.g. the
 // loads the rigid-body run just recovered). Throws core::InputError for a

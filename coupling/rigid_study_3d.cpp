@@ -1,6 +1,8 @@
 // Reading and running 3-D rigid-body studies; see rigid_study_3d.h.
 #include "coupling/rigid_study_3d.h"
 
+#include "coupling/frame_mass_source.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -226,9 +228,31 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   if (frame.has("reference")) p.frame.reference = read_point3(frame, "reference");
   const std::vector<YamlMap> parts = frame.list_of_maps("parts");
   require_distinct_names(parts, "frame part");
+  // `from: frame_mesh`: the part the frame mesh models, its values from the mesh (coupling/frame_mass_source.h).
+  std::vector<StudyFramePart> study_parts;
   for (const YamlMap& a : parts) {
-    a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products"});
-    p.frame.parts.push_back(part(a, a.text("name")));
+    StudyFramePart sp;
+    sp.where = a.location("");
+    sp.where.key = a.path();
+    if (a.has("from")) {
+      const std::string from = a.text("from");
+      bool second = false;
+      for (const StudyFramePart& q : study_parts) second = second || q.from_mesh;
+      if (from != "frame_mesh" || second)
+        throw a.error("from", "from: frame_mesh on one part only (the frame structure the frame_response mesh models)",
+                      second ? "from: frame_mesh on a second part" : "from: " + from);
+      sp.from_mesh = true;
+      sp.has_values = a.has("mass") || a.has("weight");
+    }
+    if (sp.has_values) {
+      a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from"});
+      sp.part = part(a, a.text("name"));
+    } else {
+      a.allow_only({"name", "from"});
+      sp.part.name = a.text("name");
+    }
+    study_parts.push_back(sp);
+    p.frame.parts.push_back(sp.part);
   }
   if (p.frame.parts.empty()) throw frame.error("parts", "a list of the frame's parts", "none");
   const YamlMap reel = frame.map("reel_and_carrier");
@@ -317,7 +341,6 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
                                             calibratable_parameters_3d(), true);
-  check_machine(p, s.fixed_coordinates, root, file);
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
     if (block.has("loads"))
@@ -325,8 +348,21 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     if (!s.response) throw root.error("frame_response", "analysis.response as well (the frame loads come from the forced response)", "no response");
     FrameStudyRequest q = read_frame_block(block, std::filesystem::path(file).parent_path());
     q.name = s.name;
+    // One source of truth for the frame structure's mass: the mesh (Eq. 9.4); the other parts go onto the frame model.
+    const FrameMassSources sources =
+        frame_mass_from_mesh(study_parts, read_frame_mesh(q), q.mesh.string(), frame.location("parts"), s.units);
+    p.frame.parts = sources.vehicle_parts;
+    q.parts = sources.mounted;
+    q.structure_part = sources.structure_part;
+    q.structure_source = "mesh";
+    q.parts_carried_by_mesh = sources.carried_by_mesh;
     s.frame_response = q;
+  } else {
+    for (std::size_t i = 0; i < study_parts.size(); ++i)
+      if (study_parts[i].from_mesh)
+        throw parts[i].error("from", "a frame_response block with the frame mesh (the part's mass, c.g. and inertia come from it)", "no frame_response");
   }
+  check_machine(p, s.fixed_coordinates, root, file);
   return s;
 }
 

@@ -233,6 +233,14 @@ Row study_row(const std::string& id, const std::string& from, const std::string&
   return {id, {{"study.yaml", text}}, "run study.yaml --out results -q", marker.empty() ? "study.yaml: " + key : at("study.yaml", text, marker, key)};
 }
 
+// kStudy3D with a frame_response on the shipped frame (copied in as frame.inp) and a response, `from` edited to `to`.
+const std::string kStructurePart = "{name: frame_structure, weight: 565.6, position: [27.5, 0, 0], radii_of_gyration: [14, 30.3, 33.5]}";
+Row structure_row(const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key) {
+  const std::string text = edit(edit(kStudy3D, from, to), "analysis:\n",
+                                "frame_response: {mesh: frame.inp}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+  return {id, {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q", at("study.yaml", text, marker, key)};
+}
+
 Row frame_row(const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key) {
   const std::string text = edit(kFrameStudy, from, to);
   return {id,
@@ -464,6 +472,12 @@ std::vector<Row> rows() {
                 "radius_of_gyration: 18", "cab.radius_of_gyration"),
       frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
       frame_row("STUDY-90", "  stations: 3\n", "  stations: 3\n  mesh_loads: gravity\n", "mesh_loads:", "frame.mesh_loads"),
+      // ---- the frame structure's mass from the frame mesh (coupling/frame_mass_source.cpp)
+      study_row("STUDY-96", kStructurePart, "{name: frame_structure, from: frame_mesh}", "from: frame_mesh", "frame.parts[0].from", kStudy3D),
+      structure_row("STUDY-97", kStructurePart, "{name: tubes, weight: 565.6, position: [27.5, 0, 0], radii_of_gyration: [14, 30.3, 33.5]}",
+                    "name: tubes", "frame.parts"),
+      structure_row("STUDY-98", kStructurePart, kStructurePart, "name: frame_structure", "frame.parts[0]"),
+      study_row("STUDY-99", kStructurePart, "{name: frame_structure, from: mesh}", "from: mesh", "frame.parts[0].from", kStudy3D),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

@@ -48,8 +48,12 @@ std::string read_text(const std::string& p) {
 }
 
 // The main job's first 0.25 s, vehicle model only (the frame block is read, not run).
-const coupling::RigidResults3D& offset_plowing_start() {
-  static const coupling::RigidResults3D results = [] {
+struct Start {
+  coupling::RigidStudy3D study;
+  coupling::RigidResults3D results;
+};
+const Start& offset_plowing() {
+  static const Start start = [] {
     const framedyn::testing::TempDir dir("framedyn_test_frame_balance");
     std::string t = read_text(kSource + "/examples/offset_plowing.yaml");
     const auto swap = [&](const std::string& from, const std::string& to) {
@@ -59,10 +63,14 @@ const coupling::RigidResults3D& offset_plowing_start() {
     };
     swap("duration: 1.0", "duration: 0.25");
     swap("../meshes/r100_frame.inp", kSource + "/meshes/r100_frame.inp");
-    return coupling::run_rigid_study_3d(coupling::read_rigid_study_3d(dir.write("offset.yaml", t).string()));
+    Start out;
+    out.study = coupling::read_rigid_study_3d(dir.write("offset.yaml", t).string());
+    out.results = coupling::run_rigid_study_3d(out.study);
+    return out;
   }();
-  return results;
+  return start;
 }
+const coupling::RigidResults3D& offset_plowing_start() { return offset_plowing().results; }
 
 fem::FrameModel r100_mesh() { return fem::read_inp(kSource + "/meshes/r100_frame.inp"); }
 
@@ -208,6 +216,85 @@ TEST(InertiaRelief, AppliedLoadsMinusTheFreeFrameModelsInertiaForcesHaveNoResult
   // the dense eigensolution (about 1e-12 of the loads).
   EXPECT_LT(worst_f, 1e-8 * scale_f);
   EXPECT_LT(worst_m, 1e-8 * scale_m);
+}
+
+}  // namespace
+
+namespace {
+
+// Least-squares slope of y on x and their correlation.
+struct Fit {
+  double slope, correlation;
+};
+Fit fit(const std::vector<double>& x, const std::vector<double>& y) {
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxy += x[i] * y[i];
+    sxx += x[i] * x[i];
+    syy += y[i] * y[i];
+  }
+  return {sxy / sxx, sxy / std::sqrt(sxx * syy)};
+}
+
+// The shipped pipeline free-free (docs/theory/coupling.md, section 9): its frame
+// model carries the frame assembly's parts, so its rigid-body mass is the vehicle
+// model's frame assembly and inertia relief accelerates it as the vehicle model
+// accelerates its frame, sample by sample, in translation and rotation.
+TEST(FrameParts, ShippedPipelinesInertiaReliefAccelerationIsTheVehicleModelsFrameAcceleration) {
+  const Start& s = offset_plowing();
+  ASSERT_TRUE(s.study.frame_response);
+  coupling::FrameStudyRequest q = *s.study.frame_response;  // the pipeline's own request: its parts from the study
+  q.supports = coupling::FrameSupports::free_free_inertia_relief;
+  q.support_sets.clear();
+  q.pvd = false;
+  EXPECT_EQ(q.structure_part, "frame_structure");
+  EXPECT_EQ(q.parts.size(), 5u);
+  const coupling::LoadHistory loads = coupling::all_frame_loads(*s.results.frame_loads);
+  const coupling::FrameStudyResults f = coupling::run_frame_study(q, &loads);
+  // The frame model's rigid-body mass is the vehicle model's frame assembly (Eq. 9.3), to round-off.
+  const rigid::RigidPart3D vehicle = rigid::combine(s.results.machine.frame.parts, "frame");
+  const double iu = kMassUnit * kInch * kInch;
+  std::printf("[ measured ] frame model with parts: %.6f lbf s^2/in (%.2f lb), c.g. (%.4f, %.2e, %.4f) in; vehicle frame assembly %.6f lbf s^2/in, "
+              "c.g. (%.4f, %.2e, %.4f) in; inertia differs by %.1e relative\n",
+              f.mass.mass / kMassUnit, f.mass.mass / kMassUnit * 386.09, f.mass.cg.x() / kInch, f.mass.cg.y() / kInch, f.mass.cg.z() / kInch,
+              vehicle.mass / kMassUnit, vehicle.cg.x() / kInch, vehicle.cg.y() / kInch, vehicle.cg.z() / kInch,
+              (f.mass.inertia - vehicle.inertia).norm() / vehicle.inertia.norm());
+  EXPECT_NEAR(f.mass.mass, vehicle.mass, 1e-12 * vehicle.mass);
+  EXPECT_LT((f.mass.cg - vehicle.cg).norm(), 1e-12 * kInch * 100);
+  EXPECT_LT((f.mass.inertia - vehicle.inertia).norm(), 1e-11 * vehicle.inertia.norm());
+  EXPECT_NEAR(f.mass.inertia(0, 0) / iu, vehicle.inertia(0, 0) / iu, 1e-9 * vehicle.inertia(0, 0) / iu);
+
+  // Inertia relief's rigid-body acceleration at the assembly's c.g. against the vehicle model's, every sample.
+  const coupling::LoadResultants res = coupling::applied_load_resultants(f.model, f.mass, f.mapping, f.loads);
+  const rigid::Machine3D machine(s.results.machine);
+  std::vector<double> vehicle_a[6], relief_a[6];
+  double worst = 0, scale = 0, worst_rot = 0, scale_rot = 0;
+  for (std::size_t i = 0; i < s.results.trajectory.time.size(); ++i) {
+    const FrameAssemblyMotion motion = vehicle_frame(machine, s.results.trajectory, i, f.mass.cg);
+    const Eigen::Index j = static_cast<Eigen::Index>(i);
+    for (int k = 0; k < 3; ++k) {
+      vehicle_a[k].push_back(motion.acceleration_at(k));
+      relief_a[k].push_back(res.acceleration(k, j));
+      vehicle_a[3 + k].push_back(motion.angular_acceleration(k));
+      relief_a[3 + k].push_back(res.acceleration(3 + k, j));
+    }
+    worst = std::max(worst, (res.acceleration.col(j).head<3>() - motion.acceleration_at).norm());
+    scale = std::max(scale, motion.acceleration_at.norm());
+    worst_rot = std::max(worst_rot, (res.acceleration.col(j).tail<3>() - motion.angular_acceleration).norm());
+    scale_rot = std::max(scale_rot, motion.angular_acceleration.norm());
+  }
+  for (int k = 0; k < 6; ++k) {
+    const Fit v = fit(vehicle_a[k], relief_a[k]);
+    std::printf("[ measured ] inertia relief vs vehicle frame acceleration, %s: slope %.12f, correlation %.12f\n",
+                (k < 3 ? std::string(1, "XYZ"[k]) : std::string("rotation ") + "XYZ"[k - 3]).c_str(), v.slope, v.correlation);
+    EXPECT_NEAR(v.slope, 1.0, 1e-9);
+  }
+  std::printf("[ measured ] %zu samples: largest difference %.2e in/s^2 of %.4g in/s^2, %.2e rad/s^2 of %.4g rad/s^2\n",
+              s.results.trajectory.time.size(), worst / kInch, scale / kInch, worst_rot, scale_rot);
+  // The loads equal the vehicle model's frame-assembly inertia force to 1e-11 of their size (above) and
+  // the masses agree to round-off: the accelerations agree to the same order.
+  EXPECT_LT(worst, 1e-9 * scale);
+  EXPECT_LT(worst_rot, 1e-9 * scale_rot);
 }
 
 }  // namespace

@@ -1,0 +1,106 @@
+// The frame assembly's parts on the beam model; see frame_parts.h (Eqs. 9.1-9.3).
+#include "coupling/frame_parts.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace framedyn::coupling {
+
+int nearest_frame_node(const fem::FrameModel& model, const Eigen::Vector3d& x) {
+  std::vector<bool> on_beam(model.nodes.size(), false);
+  for (const fem::BeamElement& b : model.beams)
+    for (int n : {b.node_a, b.node_b, b.node_m})
+      if (n >= 0) on_beam[static_cast<std::size_t>(n)] = true;
+  double nearest = -1.0;
+  for (std::size_t i = 0; i < model.nodes.size(); ++i)
+    if (on_beam[i]) {
+      const double d = (model.nodes[i].position - x).norm();
+      if (nearest < 0.0 || d < nearest) nearest = d;
+    }
+  if (nearest < 0.0) throw std::invalid_argument("the frame model has no beam elements to mount a part on");
+  // Every node within 1e-9 relative (and 1e-12 m) of the nearest distance is a tie: the lowest node number wins.
+  const double within = nearest * (1.0 + 1e-9) + 1e-12;
+  int best = -1;
+  for (std::size_t i = 0; i < model.nodes.size(); ++i)
+    if (on_beam[i] && (model.nodes[i].position - x).norm() <= within && (best < 0 || model.nodes[i].id < model.nodes[static_cast<std::size_t>(best)].id))
+      best = static_cast<int>(i);
+  return best;
+}
+
+std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::vector<rigid::RigidPart3D>& parts) {
+  std::vector<MountedPart> out;
+  if (parts.empty()) return out;
+  // New node and element numbers above the mesh's.
+  int node_id = 0, element_id = 0;
+  for (const fem::Node& n : model.nodes) node_id = std::max(node_id, n.id);
+  for (const fem::BeamElement& b : model.beams) element_id = std::max(element_id, b.id);
+  for (const fem::PointMass& m : model.point_masses) element_id = std::max(element_id, m.element_id);
+  for (const fem::Spring& s : model.springs) element_id = std::max(element_id, s.element_id);
+  constexpr double kOnNode = 1e-6;  // m: a c.g. this close to the frame node is on it
+  for (const rigid::RigidPart3D& p : parts) {
+    if (!(p.mass > 0.0)) throw std::invalid_argument("frame part " + p.name + ": no mass");
+    MountedPart m;
+    m.part = p;
+    m.frame_node = nearest_frame_node(model, p.cg);
+    m.arm = (p.cg - model.nodes[static_cast<std::size_t>(m.frame_node)].position).norm();
+    m.linked = m.arm > kOnNode;
+    if (m.linked) {
+      model.nodes.push_back({++node_id, p.cg});
+      m.mass_node = static_cast<int>(model.nodes.size()) - 1;
+      fem::RigidLink link;
+      link.reference_node = m.frame_node;
+      link.slave_nodes = {m.mass_node};
+      link.source = "frame part " + p.name;
+      model.rigid_links.push_back(link);
+    } else {
+      m.mass_node = m.frame_node;
+    }
+    // The point mass at the c.g. with the part's rotary inertia about it (global axes, products included).
+    model.point_masses.push_back({++element_id, m.mass_node, p.mass, p.inertia});
+    out.push_back(m);
+  }
+  model.index();
+  return out;
+}
+
+FramePartsSummary frame_parts_summary(const fem::FrameModel& model, const std::vector<MountedPart>& parts, const RigidBodyMass& body,
+                                      const std::string& structure_part, const std::string& structure_source,
+                                      const std::vector<std::string>& carried_by_mesh, const core::UnitSystem& u) {
+  using nlohmann::ordered_json;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  const std::string L = u.label(Quantity::length), Mu = u.label(Quantity::mass), Iu = u.label(Quantity::rotary_inertia);
+  const auto point = [&](const Eigen::Vector3d& x) { return ordered_json{{"value", {x.x() * lf, x.y() * lf, x.z() * lf}}, {"unit", L}}; };
+  const auto tensor = [&](const Eigen::Matrix3d& j) {
+    ordered_json rows = ordered_json::array();
+    for (int r = 0; r < 3; ++r) rows.push_back({u.from_si(j(r, 0), Quantity::rotary_inertia), u.from_si(j(r, 1), Quantity::rotary_inertia),
+                                                u.from_si(j(r, 2), Quantity::rotary_inertia)});
+    return ordered_json{{"value", rows}, {"unit", Iu}};
+  };
+  FramePartsSummary s;
+  s.parts = ordered_json::array();
+  for (const MountedPart& m : parts) {
+    const int frame_id = model.nodes[static_cast<std::size_t>(m.frame_node)].id;
+    s.parts.push_back({{"name", m.part.name},
+                       {"mass", {{"value", u.from_si(m.part.mass, Quantity::mass)}, {"unit", Mu}}},
+                       {"cg", point(m.part.cg)},
+                       {"inertia_about_cg", tensor(m.part.inertia)},
+                       {"frame_node", frame_id},
+                       {"joined_by", m.linked ? fmt::format("rigid link from node {} to node {} at the c.g.", frame_id,
+                                                            model.nodes[static_cast<std::size_t>(m.mass_node)].id)
+                                              : fmt::format("point mass on node {} (the c.g. is on it)", frame_id)},
+                       {"arm", {{"value", m.arm * lf}, {"unit", L}}}});
+  }
+  s.total_mass = {{"value", u.from_si(body.mass, Quantity::mass)}, {"unit", Mu}, {"cg", point(body.cg)}, {"inertia_about_cg", tensor(body.inertia)}};
+  const char* meaning = structure_source == "mesh"
+                            ? "the vehicle model took the frame structure's mass, c.g. and inertia from the frame mesh"
+                        : structure_part.empty() ? "the frame mesh alone (no vehicle model)"
+                                                 : "the study's values";
+  s.structure = {{"part", structure_part}, {"source", structure_source.empty() ? "mesh" : structure_source}, {"meaning", meaning},
+                 {"parts_carried_by_mesh", carried_by_mesh}};
+  return s;
+}
+
+}  // namespace framedyn::coupling

@@ -1,0 +1,63 @@
+// The frame assembly's parts on the beam model of the frame (docs/theory/coupling.md,
+// section 9, Eqs. 9.1-9.4). The vehicle model holds its frame assembly rigid: the
+// frame structure (the mesh's tubes) and the parts bolted to it (engine, pumps,
+// ballast, fuel tank, hitch box, ...). For the frame model, inertia relief and the
+// frame's own dynamics to see the same mass in the same places, each part becomes:
+//   - a node at the part's c.g. carrying a point mass m with its rotary inertia
+//     tensor J_c about the c.g. (global axes, products included), and
+//   - a rigid link (*MPC BEAM) from the frame node nearest that c.g., which the
+//     c.g. node follows: u_c = u_n + theta_n x (c - x_n), theta_c = theta_n (Eq. 9.1).
+// The c.g. node is the link's slave, so a part adds mass and no stiffness, and a
+// clamp or a load on the frame node is untouched. Reduced by the link, the part is
+// the rigid body's mass matrix about the frame node (Eq. 9.2), and the model's
+// rigid-body mass T^T M T is the tubes' plus the parts' by the parallel-axis
+// theorem: the vehicle model's frame assembly (Eq. 9.3). A c.g. on a frame node
+// (within 1e-6 m) puts the mass on that node, without a link.
+//
+// The frame node is the nearest node that a beam element uses (never another
+// part's c.g. node); among nodes within 1e-9 relative of the nearest distance,
+// the lowest mesh node number (a stable rule, not a floating-point near-tie).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/units.h"
+#include "coupling/frame_balance.h"
+#include "fem/frame_model.h"
+#include "rigid/machine_3d.h"
+
+namespace framedyn::coupling {
+
+// A part as placed on the beam model.
+struct MountedPart {
+  rigid::RigidPart3D part;   // SI: mass, c.g., inertia about the c.g.
+  int mass_node = -1;        // index of the node that carries the point mass (the c.g. node or the frame node)
+  int frame_node = -1;       // index of the frame node it is joined to
+  bool linked = false;       // true: a rigid link from frame_node to a new c.g. node; false: the mass is on frame_node
+  double arm = 0.0;          // m, |c.g. - frame node|
+};
+
+// Index of the frame node nearest `x` (nodes that beam elements use; ties to the lowest node number).
+int nearest_frame_node(const fem::FrameModel& model, const Eigen::Vector3d& x);
+
+// Adds each part to `model` (new nodes after the mesh's, point masses and rigid
+// links with element numbers above the mesh's). Throws std::invalid_argument for
+// a part without mass or a model without beam elements.
+std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::vector<rigid::RigidPart3D>& parts);
+
+// The summary's frame.parts (each part: mass, c.g., the frame node and how it
+// is joined), frame.total_mass {value, unit, cg} and frame.structure (where the
+// frame structure's mass came from), in `units`.
+struct FramePartsSummary {
+  nlohmann::ordered_json parts, total_mass, structure;
+};
+FramePartsSummary frame_parts_summary(const fem::FrameModel& model, const std::vector<MountedPart>& parts, const RigidBodyMass& body,
+                                      const std::string& structure_part, const std::string& structure_source,
+                                      const std::vector<std::string>& carried_by_mesh, const core::UnitSystem& units);
+
+}  // namespace framedyn::coupling

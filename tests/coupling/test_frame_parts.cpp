@@ -1,0 +1,252 @@
+// The frame assembly's parts on the beam model (docs/theory/coupling.md,
+// section 9): on a small T-shaped frame (a rail along X and a cross member
+// along Y, steel RECT tubes, Euler-Bernoulli elements) with two parts, one off
+// the frame on a rigid link and one on a node,
+//  - the model's rigid-body mass (T^T M T of the assembled, link-reduced mass
+//    matrix, Eq. 9.3) equals a hand sum: each tube a slender rod (m L^2/12
+//    across it, rho A (a^2 + b^2)/12 L about its axis), each part its own
+//    tensor, moved to the common c.g. by the parallel-axis theorem; and equals
+//    the vehicle model's rigid::combine of the same bodies;
+//  - free-free, loads that are exactly the d'Alembert forces of a rigid-body
+//    acceleration (the tubes' M T a, each part's m a and J alpha + arm x m a
+//    applied at its frame node, computed without the model's parts) are
+//    relieved completely: inertia relief's rigid-body acceleration is the one
+//    imposed, and the elastic response and the stresses are zero. The bare
+//    model under the same loads is stressed (the parts' inertia is missing);
+//  - the frame node a part hangs from is the nearest beam node, a tie going to
+//    the lowest node number;
+//  - the mesh as the source of the frame structure's mass (Eq. 9.4): a study
+//    part that disagrees with the mesh is refused, one that agrees is replaced
+//    by the mesh's values, a part the mesh carries is not counted twice.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "coupling/frame_balance.h"
+#include "coupling/frame_mass_source.h"
+#include "coupling/frame_parts.h"
+#include "fem/assembly.h"
+#include "fem/beam_element.h"
+#include "fem/inp_reader.h"
+#include "fem/modal_transient.h"
+#include "fem/section_forces.h"
+#include "rigid/machine_3d.h"
+
+namespace {
+
+using namespace framedyn;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+constexpr double kRho = 7850.0, kA = 0.04, kB = 0.06;  // steel RECT 40 x 60 mm
+
+// Rail 1-2-3-4 along X (0 to 1.2 m), cross member 5-3-6 along Y at X = 0.8 (0.6 m).
+const std::string kFrame =
+    "** units: m-N-s\n"
+    "*NODE\n1, 0, 0, 0\n2, 0.4, 0, 0\n3, 0.8, 0, 0\n4, 1.2, 0, 0\n5, 0.8, -0.3, 0\n6, 0.8, 0.3, 0\n"
+    "*ELEMENT, TYPE=B33, ELSET=RAIL\n1, 1, 2\n2, 2, 3\n3, 3, 4\n"
+    "*ELEMENT, TYPE=B33, ELSET=CROSS\n4, 5, 3\n5, 3, 6\n"
+    "*BEAM SECTION, ELSET=RAIL, MATERIAL=STEEL, SECTION=RECT\n0.04, 0.06\n0, 0, -1\n"
+    "*BEAM SECTION, ELSET=CROSS, MATERIAL=STEEL, SECTION=RECT\n0.04, 0.06\n0, 0, -1\n"
+    "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n";
+
+fem::FrameModel small_frame() { return fem::read_inp_text(kFrame, "frame.inp", "."); }
+
+// The two parts: an engine-like body off the rail (products of inertia), a hitch-like body on node 4.
+std::vector<rigid::RigidPart3D> two_parts() {
+  return {{"engine", 40.0, Vector3d(0.5, 0.1, 0.25), rigid::inertia_tensor(1.2, 0.9, 0.7, 0.1, -0.05, 0.02)},
+          {"hitch", 15.0, Vector3d(1.2, 0.0, 0.0), rigid::inertia_tensor(0.3, 0.4, 0.5)}};
+}
+
+// A uniform slender rod from p to q with the RECT section: mass, c.g., inertia about the c.g.
+rigid::RigidPart3D rod(const std::string& name, const Vector3d& p, const Vector3d& q) {
+  const double length = (q - p).norm(), m = kRho * kA * kB * length;
+  const Vector3d e = (q - p) / length;
+  const Matrix3d axial = e * e.transpose();
+  return {name, m, 0.5 * (p + q),
+          m * length * length / 12.0 * (Matrix3d::Identity() - axial) + m * (kA * kA + kB * kB) / 12.0 * axial};
+}
+
+TEST(FrameParts, TwoPartsOnASmallFrameGiveTheHandSummedMassCentreOfGravityAndInertia) {
+  fem::FrameModel model = small_frame();
+  const std::vector<coupling::MountedPart> mounted = coupling::mount_frame_parts(model, two_parts());
+  ASSERT_EQ(mounted.size(), 2u);
+  // The engine hangs on a link from node 2 (0.4, 0, 0), the nearest; the hitch's c.g. is node 4.
+  EXPECT_TRUE(mounted[0].linked);
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(mounted[0].frame_node)].id, 2);
+  EXPECT_FALSE(mounted[1].linked);
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(mounted[1].mass_node)].id, 4);
+  EXPECT_EQ(model.rigid_links.size(), 1u);
+  const coupling::RigidBodyMass body = coupling::frame_rigid_body_mass(model);
+
+  // Hand sum: rail (1.2 m) and cross member (0.6 m) as rods, then the parts; parallel axes to the common c.g.
+  std::vector<rigid::RigidPart3D> bodies = {rod("rail", Vector3d(0, 0, 0), Vector3d(1.2, 0, 0)), rod("cross", Vector3d(0.8, -0.3, 0), Vector3d(0.8, 0.3, 0))};
+  for (const rigid::RigidPart3D& p : two_parts()) bodies.push_back(p);
+  double mass = 0.0;
+  Vector3d first = Vector3d::Zero();
+  for (const auto& b : bodies) {
+    mass += b.mass;
+    first += b.mass * b.cg;
+  }
+  const Vector3d cg = first / mass;
+  Matrix3d inertia = Matrix3d::Zero();
+  for (const auto& b : bodies) {
+    const Vector3d r = b.cg - cg;
+    inertia += b.inertia + b.mass * (r.dot(r) * Matrix3d::Identity() - r * r.transpose());
+  }
+  // 1.8 m of 2.4e-3 m^2 steel = 33.912 kg of tubes, 55 kg of parts.
+  EXPECT_NEAR(mass, 88.912, 1e-9);
+  EXPECT_NEAR(body.mass, mass, 1e-12 * mass);
+  EXPECT_LT((body.cg - cg).norm(), 1e-12);
+  EXPECT_LT((body.inertia - inertia).norm(), 1e-11 * inertia.norm());
+  // The vehicle model's way (rigid::combine) gives the same: the frame model and the vehicle model agree.
+  const rigid::RigidPart3D vehicle = rigid::combine(bodies, "frame assembly");
+  EXPECT_LT((body.inertia - vehicle.inertia).norm(), 1e-11 * inertia.norm());
+  std::printf("[ measured ] small frame with two parts: mass %.6f kg (hand %.6f), c.g. off by %.1e m, inertia off by %.1e relative\n", body.mass, mass,
+              (body.cg - cg).norm(), (body.inertia - inertia).norm() / inertia.norm());
+}
+
+// The largest |fiber stress| over the beams' ends for all-DOF displacements u.
+double peak_stress(const fem::FrameModel& model, const Eigen::VectorXd& u) {
+  double peak = 0.0;
+  for (const fem::BeamElement& b : model.beams) {
+    const fem::BeamGeometry g = fem::beam_geometry(model, b);
+    const fem::Vector12d f = fem::element_end_forces(g, b, u);
+    for (double x : {0.0, g.data.length})
+      for (double s : fem::fiber_stresses(g.data.section, fem::section_forces_at(f, x))) peak = std::max(peak, std::abs(s));
+  }
+  return peak;
+}
+
+// Inertia relief of an all-DOF load on a free-free model: rigid-body acceleration (6, about `about`), elastic u (all DOFs).
+struct Relieved {
+  coupling::Vector6d acceleration;
+  Eigen::VectorXd u;
+};
+Relieved relieve(const fem::FrameModel& model, const Eigen::VectorXd& f_all, const Vector3d& about) {
+  const fem::FrameDynamics frame(model);
+  EXPECT_TRUE(frame.free_free());
+  const fem::DofMap& dofs = frame.dofs();
+  fem::SparseMatrix b(model.dof_count(), 1);
+  for (Eigen::Index i = 0; i < f_all.size(); ++i)
+    if (f_all(i) != 0.0) b.insert(i, 0) = f_all(i);
+  const Eigen::VectorXd f_rel = frame.free_loads(b).col(0);
+  Relieved out;
+  out.u = frame.expand(frame.static_response(f_rel));
+  // a_r = M_r^-1 T^T f (Eq. C.11), through the load's resultant.
+  const coupling::RigidBodyMass body = coupling::frame_rigid_body_mass(model);
+  const Eigen::MatrixXd t = fem::rigid_body_vectors(model, body.cg);
+  const coupling::Vector6d a_cg = body.matrix.ldlt().solve(t.transpose() * f_all);
+  out.acceleration << a_cg.head<3>() + a_cg.tail<3>().cross(about - body.cg), a_cg.tail<3>();
+  (void)dofs;
+  return out;
+}
+
+TEST(FrameParts, FreeFrameUnderTheDAlembertForcesOfARigidAccelerationIsUnstressed) {
+  const fem::FrameModel bare = small_frame();
+  fem::FrameModel model = bare;
+  const std::vector<coupling::MountedPart> mounted = coupling::mount_frame_parts(model, two_parts());
+  // A rigid-body acceleration: a0 of the origin and alpha.
+  const Vector3d a0(1.5, -0.8, 9.81), alpha(0.4, -1.1, 0.6);
+  const auto accel_at = [&](const Vector3d& x) -> Vector3d { return a0 + alpha.cross(x); };
+  // Its d'Alembert forces, built without the model's parts: the tubes' M T a on the bare model ...
+  const fem::DofMap dofs = fem::make_dof_map(bare);
+  fem::AssemblyOptions options;
+  options.storage = fem::Storage::full;
+  const fem::SparseMatrix m = fem::assemble(bare, dofs, options).mass;
+  Eigen::VectorXd a_rigid(bare.dof_count());
+  for (std::size_t n = 0; n < bare.nodes.size(); ++n) a_rigid.segment<6>(6 * static_cast<Eigen::Index>(n)) << accel_at(bare.nodes[n].position), alpha;
+  Eigen::VectorXd a_free(dofs.free_count());
+  for (int i = 0; i < dofs.free_count(); ++i) a_free(i) = a_rigid(dofs.free_dofs[static_cast<std::size_t>(i)]);
+  const Eigen::VectorXd f_tubes = m * a_free;
+  Eigen::VectorXd f(model.dof_count());
+  f.setZero();
+  for (int i = 0; i < dofs.free_count(); ++i) f(dofs.free_dofs[static_cast<std::size_t>(i)]) = f_tubes(i);
+  // ... and each part's m a(c) and J alpha + (c - x_n) x m a(c) at its frame node (the rigid body has no angular velocity).
+  for (const coupling::MountedPart& p : mounted) {
+    const Vector3d xn = model.nodes[static_cast<std::size_t>(p.frame_node)].position;
+    const Vector3d force = p.part.mass * accel_at(p.part.cg);
+    f.segment<3>(6 * p.frame_node) += force;
+    f.segment<3>(6 * p.frame_node + 3) += p.part.inertia * alpha + (p.part.cg - xn).cross(force);
+  }
+  const Relieved with = relieve(model, f, Vector3d::Zero());
+  const Relieved without = relieve(bare, f.head(bare.dof_count()), Vector3d::Zero());
+  EXPECT_LT((with.acceleration.head<3>() - a0).norm(), 1e-10 * a0.norm());
+  EXPECT_LT((with.acceleration.tail<3>() - alpha).norm(), 1e-10 * alpha.norm());
+  const double s_with = peak_stress(model, with.u), s_without = peak_stress(bare, without.u);
+  std::printf("[ measured ] rigid acceleration field: relief acceleration off by %.1e m/s^2; peak stress %.2e Pa with the parts, %.4g Pa without\n",
+              (with.acceleration.head<3>() - a0).norm(), s_with, s_without);
+  // The bare model is loaded by inertia it does not have; with the parts the loads are exactly relieved.
+  EXPECT_GT(s_without, 1e4);
+  EXPECT_LT(s_with, 1e-9 * s_without);
+}
+
+TEST(FrameParts, APartEquallyFarFromTwoNodesHangsFromTheLowerNodeNumber) {
+  fem::FrameModel model = small_frame();
+  // (0.6, 0, 0.1): 0.2236 m from node 2 (0.4) and node 3 (0.8) alike.
+  const auto mounted = coupling::mount_frame_parts(model, {{"tank", 10.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(mounted[0].frame_node)].id, 2);
+  // Never another part's c.g. node: a second part at the first's c.g. hangs from a beam node too.
+  const auto second = coupling::mount_frame_parts(model, {{"tank2", 5.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  EXPECT_EQ(model.nodes[static_cast<std::size_t>(second[0].frame_node)].id, 2);
+}
+
+coupling::StudyFramePart study_part(const rigid::RigidPart3D& p, bool values = true) {
+  coupling::StudyFramePart s;
+  s.part = p;
+  s.has_values = values;
+  s.where = {"study.yaml", 7, "frame.parts[0]"};
+  return s;
+}
+
+TEST(FrameMassSource, TheMeshGivesTheStructuresMassAndADisagreeingStudyValueIsRefused) {
+  const fem::FrameModel mesh = small_frame();
+  const coupling::RigidBodyMass tubes = coupling::frame_rigid_body_mass(mesh);
+  const core::UnitSystem si = core::UnitSystem::si();
+  // The structure as the study wrote it, 0.5 % heavy: within tolerance, replaced by the mesh's values.
+  rigid::RigidPart3D close{"frame_structure", 1.005 * tubes.mass, tubes.cg, tubes.inertia};
+  const coupling::FrameMassSources ok = coupling::frame_mass_from_mesh({study_part(close), study_part(two_parts()[0])}, mesh, "frame.inp",
+                                                                       {"study.yaml", 5, "frame.parts"}, si);
+  ASSERT_EQ(ok.vehicle_parts.size(), 2u);
+  EXPECT_EQ(ok.vehicle_parts[0].mass, tubes.mass);
+  EXPECT_EQ(ok.mounted.size(), 1u);
+  EXPECT_EQ(ok.mounted[0].name, "engine");
+  // Its c.g. 5 cm off (more than 1 % of the 1.2 m extent): refused, naming the part's entry.
+  rigid::RigidPart3D off = close;
+  off.mass = tubes.mass;
+  off.cg.x() += 0.05;
+  try {
+    coupling::frame_mass_from_mesh({study_part(off)}, mesh, "frame.inp", {"study.yaml", 5, "frame.parts"}, si);
+    ADD_FAILURE() << "a structure 5 cm off the mesh's c.g. was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().line, 7);
+  }
+  // No structure part: refused.
+  EXPECT_THROW(coupling::frame_mass_from_mesh({study_part(two_parts()[0])}, mesh, "frame.inp", {"study.yaml", 5, "frame.parts"}, si), core::InputError);
+}
+
+TEST(FrameMassSource, APartTheMeshAlreadyCarriesIsNotCountedTwice) {
+  // The mesh carries the hitch as a *MASS at node 4 in element set HITCH.
+  const fem::FrameModel mesh = fem::read_inp_text(kFrame + "*ELEMENT, TYPE=MASS, ELSET=HITCH\n9, 4\n*MASS, ELSET=HITCH\n15\n", "frame.inp", ".");
+  coupling::StudyFramePart structure = study_part({"frame_structure", 0, Vector3d::Zero(), Matrix3d::Zero()}, false);
+  structure.from_mesh = true;
+  const coupling::FrameMassSources s = coupling::frame_mass_from_mesh({structure, study_part(two_parts()[0]), study_part(two_parts()[1])}, mesh,
+                                                                      "frame.inp", {"study.yaml", 5, "frame.parts"}, core::UnitSystem::si());
+  ASSERT_EQ(s.carried_by_mesh.size(), 1u);
+  EXPECT_EQ(s.carried_by_mesh[0], "hitch");
+  EXPECT_EQ(s.mounted.size(), 1u);
+  ASSERT_EQ(s.vehicle_parts.size(), 2u);
+  // The structure holds the tubes' 33.912 kg and the hitch's 15 kg.
+  EXPECT_NEAR(s.vehicle_parts[0].mass, 48.912, 1e-9);
+  // Frame model (mesh + mounted) and vehicle model (its parts combined) carry the same mass, c.g. and inertia.
+  fem::FrameModel model = mesh;
+  coupling::mount_frame_parts(model, s.mounted);
+  const coupling::RigidBodyMass body = coupling::frame_rigid_body_mass(model);
+  const rigid::RigidPart3D vehicle = rigid::combine(s.vehicle_parts, "frame");
+  EXPECT_NEAR(body.mass, vehicle.mass, 1e-12 * vehicle.mass);
+  EXPECT_LT((body.cg - vehicle.cg).norm(), 1e-12);
+  EXPECT_LT((body.inertia - vehicle.inertia).norm(), 1e-11 * vehicle.inertia.norm());
+}
+
+}  // namespace
