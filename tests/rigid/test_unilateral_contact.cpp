@@ -38,7 +38,7 @@ constexpr double kPi = 3.14159265358979323846;
 // A mass on a one-sided spring-damper, as the vehicle models build their tires.
 class Bouncer : public rigid::SwitchedSystem {
  public:
-  Bouncer(double m, double k, double c, double g, rigid::GroundInput base = {}) : mass_(m), model_({"z"}) {
+  Bouncer(double m, double k, double c, double g, rigid::GroundInput base = {}) : mass_(m), model_({"z"}, {core::Quantity::length}) {
     rigid::Body b;
     b.name = "mass";
     b.mass = m;
