@@ -667,9 +667,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
                            {"resultant_force", {{"value", {total.x() * ff + 0.0, total.y() * ff + 0.0, total.z() * ff + 0.0}}, {"unit", u.label(Quantity::force)}}},
                            {"meaning", "the mesh's *CLOAD and *DLOAD act at every time, added to the load history; the response starts from the "
                                        "static equilibrium under them and the history's first row"}};
-  } else {
-    j["constant_loads"] = nullptr;
-  }
+  }  // absent: no constant load acted (a null would read as a broken-down number)
   if (r.free_rigid_motions > 0 && q.supports != FrameSupports::free_free_inertia_relief)
     j["free_rigid_motions"] = {{"count", r.free_rigid_motions},
                                {"meaning", "the supports leave these rigid motions free: the loads are relieved by their inertia and the "
