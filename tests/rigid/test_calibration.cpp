@@ -309,7 +309,7 @@ TEST(ModalSoil, CuttingBackingAndNoneDifferByTheSoilSpringsShare) {
   coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
   study.machine.soil.stiffness_reduction = 0.3;
   {
-    ASSERT_TRUE(study.machine.soil.cut_face);
+    ASSERT_TRUE(study.machine.soil.cut_face);  // the shipped reading
     const rigid::Machine2D cut(study.machine);
     const double scale = cut.stiffness_matrix().norm();
     EXPECT_LT((cut.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting) - cut.stiffness_matrix(rigid::Machine2D::ModalSoil::none)).norm(),
