@@ -10,9 +10,8 @@
 // equilibrium position"; the cut-face reading has none while cutting), so
 // they are left out of K_A. The equations of motion, written about q_s, get
 // the constant generalised force
-//     b = Q_g + sum_{e not soil} G_e^T SF_e = sum_{e of released contacts} G_e^T SF_e    (11.4)
-// (by 11.1; summed in the second form, so that it is exactly zero when every
-// contact is engaged) which balances the lost-contact
+//     b = Q_g + sum_{e not soil} G_e^T SF_e = sum_{e of released contacts} G_e^T SF_e (by 11.1)   (11.4)
+// (summed in the second form: exactly zero with every contact engaged), which balances the lost-contact
 // correction (4a.4) of the released ones, so that q = 0, v = 0 is a rest
 // state of the response. Under `linear` (the thesis's bilateral springs) the
 // statics is the thesis's: every element, soil included, in K; b = 0.

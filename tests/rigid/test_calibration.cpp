@@ -418,11 +418,22 @@ TEST(ThesisCase6, CalibrationFitOfTableVCase6KeepsItsBoundsAndReportsItsResidual
 }
 
 // analysis.modal_soil: the three stiffness matrices differ by the soil's
-// share alone, K5 sum G^T G over the blade's X and Z springs, scaled by 1,
-// REK or 0.
+// share alone, K5 sum G^T G over the blade's X and Z springs, scaled by 1
+// (in Eq. 2.37's printed reading; 0 in the cut-face one, where a cutting
+// blade has no spring: docs/theory/rigid.md section 11), REK or 0.
 TEST(ModalSoil, CuttingBackingAndNoneDifferByTheSoilSpringsShare) {
   coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
   study.machine.soil.stiffness_reduction = 0.3;
+  {
+    ASSERT_TRUE(study.machine.soil.cut_face);  // the shipped reading
+    const rigid::Machine2D cut(study.machine);
+    const double scale = cut.stiffness_matrix().norm();
+    EXPECT_LT((cut.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting) - cut.stiffness_matrix(rigid::Machine2D::ModalSoil::none)).norm(),
+              1e-14 * scale);
+  }
+  study.machine.soil.cut_face = false;
+  study.machine.soil.spring_from_contact = false;
+  study.machine.soil.contact_moves_with_soil = false;
   const rigid::Machine2D m(study.machine);
   Eigen::MatrixXd soil = Eigen::MatrixXd::Zero(m.size(), m.size());
   for (int e : m.soil_elements()) {

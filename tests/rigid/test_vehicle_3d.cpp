@@ -669,9 +669,10 @@ struct PlanarRun {
   std::vector<rigid::Trajectory::Event> events_2d_log, events_3d_log;
 };
 PlanarRun planar_run(bool law_active, double duration, double forward_speed,
-                     rigid::ContactLaw contacts = rigid::ContactLaw::linear) {
+                     rigid::ContactLaw contacts = rigid::ContactLaw::linear, double shaker_scale = 1.0) {
   rigid::Machine2DParameters p2 = shipped_2d();
   p2.forward_speed = forward_speed;
+  p2.plow.shaker_amplitude *= shaker_scale;
   p2.contacts = contacts;
   if (!law_active) {
     // The printed reading with REK = REC = 1: the switches change nothing. (The shipped
@@ -729,11 +730,12 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithSoilSwitchingAgrees) {
 }
 
 TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
-  // One-sided contacts (Eq. 4a.3): the shipped plow's bounce tire lifts off
-  // under the shaker; in 3-D it is the same element, and the 2-D axle's two
-  // tires are the 3-D axle's left and right tires, which lift off together
-  // or not at all in the symmetric model.
-  const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::unilateral);
+  // One-sided contacts (Eq. 4a.3): with twice its shaker force the shipped
+  // plow's bounce tire lifts off (with the shipped force it carries 2,794 lbf
+  // at rest and never less than 746: docs/validation.md 5.3); in 3-D it is
+  // the same element, and the 2-D axle's two tires are the 3-D axle's left
+  // and right tires, which lift off together or not at all in the symmetric model.
+  const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::unilateral, 2.0);
   auto contact_events = [](const std::vector<rigid::Trajectory::Event>& log) {
     std::vector<double> t;
     for (const auto& e : log)
@@ -860,6 +862,14 @@ void check_frame_balance(rigid::Machine3DParameters p, const char* label) {
 }
 
 TEST(FrameLoads3D, FrameFreeBodyBalancesAtEveryInstantOffsetPlow) { check_frame_balance(offset_plow(), "offset plow"); }
-TEST(FrameLoads3D, FrameFreeBodyBalancesAtEveryInstantOffsetChain) { check_frame_balance(offset_chain(), "offset chain"); }
+TEST(FrameLoads3D, FrameFreeBodyBalancesAtEveryInstantOffsetChain) {
+  // The thesis's bilateral contacts: with one-sided ones, started from their own statics
+  // (docs/theory/rigid.md section 11), this chain machine at 6 in/s enters a sliding
+  // regime of its soil law at 0.14 s that CVODE cannot pass in 1e6 steps (not handled
+  // yet: the chattering warning of issue 15). The balance checked here holds for either law.
+  rigid::Machine3DParameters p = offset_chain();
+  p.contacts = rigid::ContactLaw::linear;
+  check_frame_balance(p, "offset chain");
+}
 
 }  // namespace
