@@ -46,7 +46,7 @@ SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, co
 }
 
 template <class Study, class Results>
-void add_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
+void add_validity_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
   const ResponseRequest& req = *study.response;
   if (auto w = rotation_warning(largest_body_rotation(model, r.trajectory))) r.warnings.push_back(*w);
   const double window = switching_window(shaker_hz);
@@ -88,7 +88,7 @@ void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, R
     }
   const char* soil = study.modal_soil == rigid::Machine2D::ModalSoil::cutting ? "cutting"
                      : study.modal_soil == rigid::Machine2D::ModalSoil::backing ? "backing" : "none";
-  add_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
+  add_validity_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
 }
 
 void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine, RigidResults3D& r) {
@@ -103,7 +103,7 @@ void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine,
         frame.push_back(std::move(h));
       }
   r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
-  add_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
+  add_validity_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
 }
 
 }  // namespace framedyn::coupling
