@@ -40,7 +40,9 @@ SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, co
   for (const History& h : frame_loads) watched.push_back({h.name, &h.values, h.quantity == Quantity::force ? force : moment});
   for (const rigid::WatchedSignal& w : watched) rep.watched.push_back(w.name);
   rep.operation = rigid::detect_steady_operation(time, watched, 1.0 / shaker_hz, rep.criterion);
-  for (const Series& s : series) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
+  // Peaks of loads and motions; the plow force's direction (an angle) has none worth reporting.
+  for (const Series& s : series)
+    if (s.quantity != Quantity::dimensionless) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
   for (const History& h : frame_loads) rep.peaks.push_back({h.name, h.quantity, rigid::split_peaks(time, h.values, rep.operation.reached_at)});
   return rep;
 }
