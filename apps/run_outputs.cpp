@@ -37,12 +37,12 @@ nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateMode
   }
 namespace {
 
-// {unit, start_up: {value, time_s}, steady: {value, time_s}}, a part absent
-// when it holds no sample (steady: not reached; start_up: steady from t = 0).
+// {start_up: {value, unit, time_s}, steady: {value, unit, time_s}}, a part
+// absent when it holds no sample (steady: not reached; start_up: steady from t = 0).
 nlohmann::ordered_json split_json(const rigid::PeakSplit& s, double factor, const std::string& unit) {
-  nlohmann::ordered_json j = {{"unit", unit}};
-  if (s.start_up) j["start_up"] = {{"value", s.start_up->value * factor}, {"time_s", s.start_up->time}};
-  if (s.steady) j["steady"] = {{"value", s.steady->value * factor}, {"time_s", s.steady->time}};
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  if (s.start_up) j["start_up"] = {{"value", s.start_up->value * factor}, {"unit", unit}, {"time_s", s.start_up->time}};
+  if (s.steady) j["steady"] = {{"value", s.steady->value * factor}, {"unit", unit}, {"time_s", s.steady->time}};
   return j;
 }
 
@@ -66,11 +66,7 @@ nlohmann::ordered_json steady_json(const coupling::SteadyReport& st, const core:
   j["watched"] = st.watched;
   nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
   for (const coupling::SteadyPeak& p : st.peaks) {
-    // A dimensionless history is an angle in degrees (plow_force_angle_deg) or a ratio.
-    const bool plain = p.quantity == core::Quantity::dimensionless;
-    const bool degrees = plain && p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, "_deg") == 0;
-    peaks[p.name] = split_json(p.split, plain ? 1.0 : 1.0 / units.to_si_factor(p.quantity),
-                               degrees ? std::string("deg") : plain ? std::string("1") : units.label(p.quantity));
+    peaks[p.name] = split_json(p.split, 1.0 / units.to_si_factor(p.quantity), units.label(p.quantity));
   }
   j["peaks"] = peaks;
   return j;

@@ -40,13 +40,15 @@ SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, co
   for (const History& h : frame_loads) watched.push_back({h.name, &h.values, h.quantity == Quantity::force ? force : moment});
   for (const rigid::WatchedSignal& w : watched) rep.watched.push_back(w.name);
   rep.operation = rigid::detect_steady_operation(time, watched, 1.0 / shaker_hz, rep.criterion);
-  for (const Series& s : series) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
+  // Peaks of loads and motions; the plow force's direction (an angle) has none worth reporting.
+  for (const Series& s : series)
+    if (s.quantity != Quantity::dimensionless) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
   for (const History& h : frame_loads) rep.peaks.push_back({h.name, h.quantity, rigid::split_peaks(time, h.values, rep.operation.reached_at)});
   return rep;
 }
 
 template <class Study, class Results>
-void add_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
+void add_validity_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
   const ResponseRequest& req = *study.response;
   if (auto w = rotation_warning(largest_body_rotation(model, r.trajectory))) r.warnings.push_back(*w);
   const double window = switching_window(shaker_hz);
@@ -88,7 +90,7 @@ void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, R
     }
   const char* soil = study.modal_soil == rigid::Machine2D::ModalSoil::cutting ? "cutting"
                      : study.modal_soil == rigid::Machine2D::ModalSoil::backing ? "backing" : "none";
-  add_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
+  add_validity_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
 }
 
 void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine, RigidResults3D& r) {
@@ -103,7 +105,7 @@ void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine,
         frame.push_back(std::move(h));
       }
   r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
-  add_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
+  add_validity_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
 }
 
 }  // namespace framedyn::coupling
