@@ -111,9 +111,12 @@ TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned)
 
 TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) {
   ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
-  // The frame_response block of examples/offset_plowing.yaml, as a frame study on the written loads.
+  // The frame_response block of examples/offset_plowing.yaml, as a frame study on the written loads; its mesh the
+  // shipped one with the frame assembly's parts the run wrote (frame_parts.inp).
+  const fs::path mesh = dir_->write("frame_with_parts.inp", "*INCLUDE, INPUT=" + (kSource / "meshes" / "r100_frame.inp").string() +
+                                                                "\n*INCLUDE, INPUT=" + (*dir_ / "out" / "frame_parts.inp").string() + "\n");
   const fs::path study = dir_->write("frame.yaml", "framedyn_study: 1\nname: read back\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n"
-                                                   "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string() +
+                                                   "  mesh: " + mesh.string() +
                                                    "\n  loads: out/frame_loads.csv\n  supports: fixed_rear_end\n  modes: all\n"
                                                    "  method: mode_acceleration\n  damping: {modal_ratio: 0.02}\n  output_interval: 0.001\n"
                                                    "  stations: 5\n  outputs:\n    left_rail: {element_set: LEFT_RAIL}\n"
