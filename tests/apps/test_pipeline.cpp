@@ -125,8 +125,11 @@ TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) 
   const nlohmann::json again = nlohmann::json::parse(slurp(*dir_ / "again" / "summary.json"))["frame"];
   const nlohmann::json& frame = summary_["frame"];
   ASSERT_EQ(again["modes"].size(), frame["modes"].size());
+  // The parts come back through frame_parts.inp (17 digits, MASS and ROTARYI as separate elements): the same model
+  // assembled in another order, so the dense eigensolution agrees to its round-off (eps times the largest of
+  // ~300 eigenvalues, 5e-11 of the lowest), the tolerance of the peaks below.
   for (std::size_t i = 0; i < again["modes"].size(); ++i)
-    EXPECT_DOUBLE_EQ(again["modes"][i]["frequency_hz"].get<double>(), frame["modes"][i]["frequency_hz"].get<double>());
+    EXPECT_NEAR(again["modes"][i]["frequency_hz"].get<double>() / frame["modes"][i]["frequency_hz"].get<double>(), 1.0, 1e-8);
   for (const char* rail : {"left_rail", "right_rail"}) {
     const double in_memory = frame["peak_bending_moment"][rail]["value"], from_file = again["peak_bending_moment"][rail]["value"];
     EXPECT_NEAR(from_file / in_memory, 1.0, 1e-8) << rail;
