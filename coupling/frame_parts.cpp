@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 namespace framedyn::coupling {
@@ -62,6 +63,37 @@ std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::ve
     out.push_back(m);
   }
   model.index();
+  return out;
+}
+
+std::string frame_parts_inp(const fem::FrameModel& model, const std::vector<MountedPart>& parts) {
+  using core::Quantity;
+  const core::UnitSystem& u = model.units;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
+  std::string out = fmt::format(
+      "** The frame assembly's parts as framedyn's frame model carried them (coupling/frame_parts.h), in {}:\n"
+      "** *INCLUDE this file after the mesh for the same frame model.\n",
+      u.name());
+  int element_id = 0;
+  for (const fem::BeamElement& b : model.beams) element_id = std::max(element_id, b.id);
+  for (const fem::PointMass& m : model.point_masses) element_id = std::max(element_id, m.element_id);
+  for (const fem::Spring& s : model.springs) element_id = std::max(element_id, s.element_id);
+  for (const MountedPart& m : parts) {
+    const fem::Node& at = model.nodes[static_cast<std::size_t>(m.mass_node)];
+    const std::string set = [&] {
+      std::string n;
+      for (char c : m.part.name) n += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      return n;
+    }();
+    out += fmt::format("** {}\n", m.part.name);
+    if (m.linked) out += fmt::format("*NODE\n{}, {:.17g}, {:.17g}, {:.17g}\n", at.id, at.position.x() * lf, at.position.y() * lf, at.position.z() * lf);
+    const Eigen::Matrix3d j = m.part.inertia / u.to_si_factor(Quantity::rotary_inertia);
+    out += fmt::format("*ELEMENT, TYPE=MASS, ELSET={}\n{}, {}\n*MASS, ELSET={}\n{:.17g}\n", set, ++element_id, at.id, set,
+                       u.from_si(m.part.mass, Quantity::mass));
+    out += fmt::format("*ELEMENT, TYPE=ROTARYI, ELSET={}_INERTIA\n{}, {}\n*ROTARY INERTIA, ELSET={}_INERTIA\n{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}\n",
+                       set, ++element_id, at.id, set, j(0, 0), j(1, 1), j(2, 2), j(0, 1), j(0, 2), j(1, 2));
+    if (m.linked) out += fmt::format("*MPC\nBEAM, {}, {}\n", at.id, model.nodes[static_cast<std::size_t>(m.frame_node)].id);
+  }
   return out;
 }
 

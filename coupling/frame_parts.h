@@ -50,6 +50,13 @@ int nearest_frame_node(const fem::FrameModel& model, const Eigen::Vector3d& x);
 // a part without mass or a model without beam elements.
 std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::vector<rigid::RigidPart3D>& parts);
 
+// The parts as an .inp fragment in the mesh's units (*NODE for the c.g. nodes,
+// MASS and ROTARYI elements in element sets named after the parts, *MPC BEAM
+// links): *INCLUDE it after the mesh for the frame model the run used, e.g. in
+// a `framedyn frame-response` study on the run's frame_loads.csv. A 3-D study
+// whose mesh includes it counts those parts as carried by the mesh.
+std::string frame_parts_inp(const fem::FrameModel& model, const std::vector<MountedPart>& parts);
+
 // The summary's frame.parts (each part: mass, c.g., the frame node and how it
 // is joined), frame.total_mass {value, unit, cg} and frame.structure (where the
 // frame structure's mass came from), in `units`.

@@ -435,6 +435,8 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     }
     folder.write_text("frame_modes.csv", t.str());
   }
+  // The parts the frame model carried, as an .inp fragment to include after the mesh (coupling/frame_parts.h).
+  if (!r.parts.empty()) folder.write_text("frame_parts.inp", frame_parts_inp(r.model, r.parts));
   if (!r.rails.empty()) {
     core::CsvTable t({"rail", "element", "station", core::column("X", u.label(Quantity::length)), core::column("Y", u.label(Quantity::length)),
                       core::column("Z", u.label(Quantity::length)), core::column("max_bending_moment", u.label(Quantity::moment)),
