@@ -18,6 +18,7 @@
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 
 namespace framedyn::apps {
 
@@ -41,12 +42,12 @@ int run_frame_response(const FrameResponseOptions& opt) {
   core::check_results_target(out_dir, inputs);
   const coupling::FrameStudyResults r = coupling::run_frame_study(q);
   core::ResultsFolder folder(out_dir, inputs);
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder);
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
-  j["frame"] = coupling::frame_summary(r, q);
+  j["frame"] = report::frame_summary(r, q);
   add_warnings(j, coupling::frame_warnings(r, q));
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();

@@ -11,10 +11,10 @@
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 #include "core/results_folder.h"
 #include "fem/modal_analysis.h"
-#include "fem/vtu_writer.h"
+#include "report/vtu_writer.h"
 
 namespace framedyn::apps {
 
@@ -113,11 +113,11 @@ int run_modes(const ModesOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
 
   // modes.csv
-  std::vector<std::string> headers = {"mode", core::column("frequency", "Hz"), "rigid_body"};
+  std::vector<std::string> headers = {"mode", report::column("frequency", "Hz"), "rigid_body"};
   for (int d = 0; d < 6; ++d)
-    headers.push_back(core::column(std::string("effective_mass_") + kDirections[d], d < 3 ? u.label(Quantity::mass) : u.label(Quantity::rotary_inertia)));
+    headers.push_back(report::column(std::string("effective_mass_") + kDirections[d], d < 3 ? u.label(Quantity::mass) : u.label(Quantity::rotary_inertia)));
   for (int d = 0; d < 6; ++d) headers.push_back(std::string("effective_mass_fraction_") + kDirections[d]);
-  core::CsvTable table(headers);
+  report::CsvTable table(headers);
   for (std::size_t i = 0; i < r.modes.size(); ++i) {
     const fem::Mode& m = r.modes[i];
     table.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(std::string(m.rigid_body ? "yes" : "no"));
@@ -131,14 +131,14 @@ int run_modes(const ModesOptions& opt) {
   const double tr_f = sqrt_m / u.to_si_factor(Quantity::length);
   const std::string tr_unit = u.label(Quantity::length) + "/sqrt(" + u.label(Quantity::mass) + ")";
   const std::string rot_unit = "rad/sqrt(" + u.label(Quantity::mass) + ")";
-  core::CsvTable shapes({"mode", "node", core::column("ux", tr_unit), core::column("uy", tr_unit), core::column("uz", tr_unit),
-                         core::column("rx", rot_unit), core::column("ry", rot_unit), core::column("rz", rot_unit)});
-  std::vector<fem::VtuField> fields;
+  report::CsvTable shapes({"mode", "node", report::column("ux", tr_unit), report::column("uy", tr_unit), report::column("uz", tr_unit),
+                         report::column("rx", rot_unit), report::column("ry", rot_unit), report::column("rz", rot_unit)});
+  std::vector<report::VtuField> fields;
   for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) {
     double max_translation = 0.0;
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
       max_translation = std::max(max_translation, r.shapes.col(i).segment<3>(static_cast<Eigen::Index>(6 * n)).norm());
-    fem::VtuField f{fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz), 3, {}};
+    report::VtuField f{fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz), 3, {}};
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
       const auto s = r.shapes.col(i).segment<6>(static_cast<Eigen::Index>(6 * n));
       shapes.row().add(static_cast<int>(i + 1)).add(model.nodes[n].id);
@@ -148,7 +148,7 @@ int run_modes(const ModesOptions& opt) {
     fields.push_back(std::move(f));
   }
   folder.write_text("mode_shapes.csv", shapes.str());
-  folder.write_text("modes.vtu", fem::vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), fields, {}));
+  folder.write_text("modes.vtu", report::vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), fields, {}));
   folder.commit();
   progress.done();
 

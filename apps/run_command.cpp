@@ -10,12 +10,12 @@
 
 #include "apps/commands.h"
 #include "apps/progress.h"
-#include "apps/response_figures.h"
-#include "apps/calibration_output.h"
-#include "apps/rigid_modes_output.h"
+#include "report/response_figures.h"
+#include "report/calibration_output.h"
+#include "report/rigid_modes_output.h"
 #include "apps/run_outputs.h"
-#include "core/csv_writer.h"
-#include "apps/event_log.h"
+#include "report/csv_writer.h"
+#include "report/event_log.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -44,7 +44,7 @@ double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
 int run_study(const RunOptions& opt) {
   if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
   Progress progress(opt.progress);
-  if (opt.figures) require_gnuplot();
+  if (opt.figures) report::require_gnuplot();
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
   core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.study);
@@ -63,10 +63,10 @@ int run_study(const RunOptions& opt) {
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
-  rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
+  rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
 
   if (r.calibration && study.calibration)
-    rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u,
+    rigid["calibration"] = report::write_calibration(*study.calibration, *r.calibration, u,
                                              [&](const std::string& name) { return coupling::parameter_quantity(study.machine, name); }, folder);
 
   if (study.response) {
@@ -88,10 +88,10 @@ int run_study(const RunOptions& opt) {
     rigid["contacts"] = contacts_json(r.contacts, u);
 
     std::vector<std::string> h = {"time [s]"};
-    for (const std::string& c : r.coordinates) h.push_back(core::column(c, coordinate_unit(c, u)));
+    for (const std::string& c : r.coordinates) h.push_back(report::column(c, coordinate_unit(c, u)));
     for (const coupling::Series& s : r.series)
-      h.push_back(s.quantity == Quantity::dimensionless ? s.name : core::column(s.name, u.label(s.quantity)));
-    core::CsvTable csv(h);
+      h.push_back(s.quantity == Quantity::dimensionless ? s.name : report::column(s.name, u.label(s.quantity)));
+    report::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
       csv.row().add(tr.time[i]);
       for (std::size_t c = 0; c < r.coordinates.size(); ++c)
@@ -99,8 +99,8 @@ int run_study(const RunOptions& opt) {
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());
-    core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
+    report::CsvTable ev({"time [s]", "event"});
+    for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.resultants) {
@@ -109,8 +109,8 @@ int run_study(const RunOptions& opt) {
       const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
       std::vector<std::string> lh = {"time [s]"};
       for (const coupling::FrameLoad2D& l : r.frame_loads)
-        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(core::column(l.name + c, std::string(c) == "_my" ? M : F));
-      core::CsvTable lcsv(lh);
+        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
+      report::CsvTable lcsv(lh);
       for (std::size_t i = 0; i < tr.time.size(); ++i) {
         lcsv.row().add(tr.time[i]);
         for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
@@ -118,9 +118,9 @@ int run_study(const RunOptions& opt) {
       folder.write_text("frame_loads.csv", lcsv.str());
       const coupling::StressResultants& sr = *r.resultants;
       const bool stress = !r.rail_top_stress.empty();
-      std::vector<std::string> rh = {"time [s]", core::column("X", L), core::column("SRX", F), core::column("SRZ", F), core::column("SRMY", M)};
-      if (stress) rh.push_back(core::column("rail_top_stress", u.label(Quantity::stress)));
-      core::CsvTable rcsv(rh);
+      std::vector<std::string> rh = {"time [s]", report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
+      if (stress) rh.push_back(report::column("rail_top_stress", u.label(Quantity::stress)));
+      report::CsvTable rcsv(rh);
       nlohmann::ordered_json points = nlohmann::ordered_json::array();
       for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
         double px = 0, pz = 0, pm = 0, ps = 0, ps_time = 0;
@@ -162,7 +162,7 @@ int run_study(const RunOptions& opt) {
   std::vector<std::string> figures;
   if (opt.figures) {
     progress.stage("figures");
-    figures = write_response_figures(study, r, folder);
+    figures = report::write_response_figures(study, r, folder);
   }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
@@ -173,7 +173,7 @@ int run_study(const RunOptions& opt) {
     fmt::print("\n mode  frequency [Hz]  dominant\n");
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
-  if (r.calibration && study.calibration) print_calibration(*study.calibration, *r.calibration);
+  if (r.calibration && study.calibration) report::print_calibration(*study.calibration, *r.calibration);
   if (r.plow_vertical_peak_to_peak) {
     const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
     fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/csv_writer.h"
+#include "core/number_text.h"
 #include "core/error.h"
 
 namespace framedyn::coupling {

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -137,7 +138,7 @@ TEST_F(CantileverStudy, StepTipLoadOscillatesAboutStaticDeflectionWithTwiceItsPe
   EXPECT_LE(peak, 2.0 * kStatic * (1.0 + 1e-4));
   EXPECT_GE(peak, (1.0 + share(1) * sinc - (1.0 - share(1))) * kStatic);
   // The summary names the peak's node, DOF and time.
-  const nlohmann::ordered_json summary = coupling::frame_summary(r, q);
+  const nlohmann::ordered_json summary = report::frame_summary(r, q);
   const nlohmann::ordered_json& out = summary["outputs"]["tip"];
   EXPECT_EQ(out["kind"], "node_set");
   EXPECT_EQ(out["set"], "TIP");
@@ -207,7 +208,7 @@ TEST_F(CantileverStudy, RootSectionForcesOfAStaticTipLoadArePAndPTimesL) {
   EXPECT_EQ(r.rails[0].peak_bending_moment.station, 0);
   // Written as frame_sections_root.csv, one row per time and station.
   core::ResultsFolder folder(dir / "out");
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder);
   folder.commit();
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "frame_sections_root.csv"));
 }
@@ -232,13 +233,13 @@ TEST_F(CantileverStudy, DirectMethodGivesTheTipDisplacementHistoryWithoutRates) 
   EXPECT_EQ(r.nodal[0].velocity.size(), 0);
   EXPECT_GT(r.nodal[0].peak_displacement.value, kStatic);  // a step response overshoots the static deflection
   core::ResultsFolder folder(dir / "out");
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder);
   folder.commit();
   std::ifstream in(dir / "out" / "frame_nodes_tip.csv");
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header, "time [s],node,UX [m],UY [m],UZ [m],URX [rad],URY [rad],URZ [rad]");
-  EXPECT_EQ(coupling::frame_summary_json(r, q).find("peak_velocity"), std::string::npos);
+  EXPECT_EQ(report::frame_summary_json(r, q).find("peak_velocity"), std::string::npos);
 }
 
 TEST_F(CantileverStudy, FreeFreeBeamHasTheClosedFormFirstElasticFrequency) {
