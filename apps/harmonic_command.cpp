@@ -75,10 +75,10 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   core::ResultsFolder folder(out_dir);
 
   // frf.csv: per output node and frequency, amplitude and phase of each DOF; u_d(t) = |u_d| cos(omega t + phase_d).
-  std::vector<std::string> headers = {"node", report::column("frequency", "Hz")};
+  std::vector<std::string> headers = {"node", report::column("frequency", u.label(Quantity::frequency))};
   for (int d = 0; d < fem::kDofsPerNode; ++d) {
-    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_amplitude", d < 3 ? L : "rad"));
-    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_phase", "deg"));
+    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_amplitude", d < 3 ? L : u.label(Quantity::angle)));
+    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_phase", u.label(Quantity::angle_degrees)));
   }
   report::CsvTable frf(headers);
   // The phase of an amplitude at round-off level (below 1e-12 of the largest of its kind, translations
@@ -109,7 +109,7 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
     plot.title = fmt::format("Frequency response: largest amplitude at node {} ({}), {} modes, zeta = {}", peak_node, peak_dof, r.modes_used,
                              opt.common.damping_ratio);
     plot.x_label = "frequency";
-    plot.x_unit = "Hz";
+    plot.x_unit = u.label(Quantity::frequency);
     plot.y_label = "displacement amplitude";
     plot.y_unit = L;
     report::PlotSeries ps{fmt::format("node {} {}", peak_node, peak_dof), r.frequencies_hz, {}};
@@ -122,7 +122,7 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
       report::LinePlot sp;
       sp.title = fmt::format("Fiber stress amplitude at the peak point of element {}", r.max_fiber_stress_point.element_id);
       sp.x_label = "frequency";
-      sp.x_unit = "Hz";
+      sp.x_unit = u.label(Quantity::frequency);
       sp.y_label = "fiber stress amplitude";
       sp.y_unit = S;
       report::PlotSeries ss{fmt::format("element {}, end {}, stress point {}", r.max_fiber_stress_point.element_id, r.max_fiber_stress_point.end + 1,
@@ -159,6 +159,10 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn harmonic: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(),
              model.beams.size(), f.modes.free_dofs, u.name());

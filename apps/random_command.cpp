@@ -35,7 +35,7 @@ report::LinePlot spectrum_plot(const std::string& title, const std::string& y_la
   report::LinePlot p;
   p.title = title;
   p.x_label = "frequency";
-  p.x_unit = "Hz";
+  p.x_unit = core::UnitSystem::si().label(core::Quantity::frequency);  // the same in every system
   p.y_label = y_label;
   p.y_unit = y_unit;
   report::PlotSeries s{name, f, {}};
@@ -67,12 +67,12 @@ int run_random(const RandomCommandOptions& opt) {
   progress.stage("writing results");
   const double lf = 1.0 / u.to_si_factor(Quantity::length), sf = 1.0 / u.to_si_factor(Quantity::stress);
   const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress);
-  const std::string L2 = L + "^2/Hz", S2 = S + "^2/Hz";
+  const std::string L2 = u.label(Quantity::translation_psd), S2 = u.label(Quantity::stress_psd);
   const std::string out_dir = opt.common.out_dir();
   core::ResultsFolder folder(out_dir);
 
-  std::vector<std::string> headers = {"node", report::column("frequency", "Hz"), report::column("load_psd", "1/Hz")};
-  for (int d = 0; d < fem::kDofsPerNode; ++d) headers.push_back(report::column(std::string(fem::dof_name(d)) + "_psd", d < 3 ? L2 : "rad^2/Hz"));
+  std::vector<std::string> headers = {"node", report::column("frequency", u.label(Quantity::frequency)), report::column("load_psd", u.label(Quantity::per_frequency))};
+  for (int d = 0; d < fem::kDofsPerNode; ++d) headers.push_back(report::column(std::string(fem::dof_name(d)) + "_psd", d < 3 ? L2 : u.label(Quantity::rotation_psd)));
   report::CsvTable table(headers);
   for (std::size_t i = 0; i < f.output_nodes.size(); ++i)
     for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k) {
@@ -84,7 +84,7 @@ int run_random(const RandomCommandOptions& opt) {
   folder.write_text("response_psd.csv", table.str());
 
   std::vector<std::string> rms_headers = {"node"};
-  for (int d = 0; d < fem::kDofsPerNode; ++d) rms_headers.push_back(report::column(std::string(fem::dof_name(d)) + "_rms", d < 3 ? L : "rad"));
+  for (int d = 0; d < fem::kDofsPerNode; ++d) rms_headers.push_back(report::column(std::string(fem::dof_name(d)) + "_rms", d < 3 ? L : u.label(Quantity::angle)));
   report::CsvTable rms(rms_headers);
   for (int n : f.output_nodes) {
     rms.row().add(model.nodes[static_cast<std::size_t>(n)].id);
@@ -146,6 +146,10 @@ int run_random(const RandomCommandOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn random: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(), model.beams.size(),
              f.modes.free_dofs, u.name());

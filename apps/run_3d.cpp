@@ -85,10 +85,10 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
     plot.title = f.title + "; " + run_name;  // "Figure N" is the thesis's
     plot.width = 1200;
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = "force on the frame";
     plot.y_unit = u.label(Quantity::force);
-    std::vector<std::string> header = {"time [s]"};
+    std::vector<std::string> header = {report::column("time", u.label(Quantity::time))};
     for (const auto& [point, c] : f.series) {
       const auto it = std::find_if(h.points.begin(), h.points.end(), [&](const coupling::LoadPointHistory& p) { return p.name == point; });
       if (it == h.points.end()) throw std::logic_error("the frame loads have no load point " + point);
@@ -112,13 +112,17 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
 bool is_angle(const std::string& name) { return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha"; }
 }  // namespace
 
-int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
+int run_study_3d(const std::string& study_file, const std::string& out, bool figures, const ProgressFlags& flags) {
+  Progress progress(flags);
   if (figures) report::require_gnuplot();
   const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
   core::check_results_target(out_dir, {study_file});  // before the run: a refusal costs no time
+  progress.stage("reading " + study_file);
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(study_file);
   const core::UnitSystem& u = study.units;
+  progress.stage(study.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)");
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {study_file});
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
 
@@ -140,7 +144,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     const rigid::Trajectory& tr = r.trajectory;
     nlohmann::ordered_json resp;
     resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", "s"}};
+    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
     resp["events"] = tr.events.size();
     resp["steps"] = tr.steps;
     if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
@@ -153,8 +157,8 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     rigid["response"] = resp;
     rigid["contacts"] = contacts_json(r.contacts, u);
 
-    std::vector<std::string> h = {"time [s]"};
-    for (const std::string& c : r.coordinates) h.push_back(report::column(c, is_angle(c) ? std::string("rad") : u.label(Quantity::length)));
+    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
+    for (const std::string& c : r.coordinates) h.push_back(report::column(c, u.label(is_angle(c) ? Quantity::angle : Quantity::length)));
     for (const coupling::Series& s : r.series) h.push_back(report::column(s.name, u.label(s.quantity)));
     report::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
@@ -163,7 +167,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());
-    report::CsvTable ev({"time [s]", "event"});
+    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
     for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
@@ -196,8 +200,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   if (study.frame_response) {
     // Every load on the frame (points 24-31 and the attachment's at point 19).
     const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+    progress.stage("frame transient (pipeline)");
     frame = coupling::run_frame_study(*study.frame_response, &loads);
-    report::write_frame_outputs(*frame, *study.frame_response, folder);
+    progress.stage("writing results (frame)");
+    report::write_frame_outputs(*frame, *study.frame_response, folder, progress.step_callback());
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
     if (figures) {
@@ -207,6 +213,11 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
+  progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn run: {} ({}, 3-D, {} coordinates, units {})\n", study_file, study.name, r.coordinates.size(), u.name());
   if (!r.modes.empty()) {

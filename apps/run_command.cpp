@@ -35,14 +35,14 @@ struct RunOptions {
 };
 
 std::string coordinate_unit(const std::string& name, const core::UnitSystem& u) {
-  return name.rfind("theta", 0) == 0 || name == "psi" ? std::string("rad") : u.label(Quantity::length);
+  return name.rfind("theta", 0) == 0 || name == "psi" ? u.label(Quantity::angle) : u.label(Quantity::length);
 }
 double coordinate_factor(const std::string& name, const core::UnitSystem& u) {
   return name.rfind("theta", 0) == 0 || name == "psi" ? 1.0 : 1.0 / u.to_si_factor(Quantity::length);
 }
 
 int run_study(const RunOptions& opt) {
-  if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
+  if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures, opt.progress);  // issue 4
   Progress progress(opt.progress);
   if (opt.figures) report::require_gnuplot();
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
@@ -53,6 +53,7 @@ int run_study(const RunOptions& opt) {
   progress.stage(study.response ? "modes and forced response" : "modes");
   const coupling::RigidResults r = coupling::run_rigid_study(study);
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
 
   nlohmann::ordered_json j;
@@ -73,7 +74,7 @@ int run_study(const RunOptions& opt) {
     const rigid::Trajectory& tr = r.trajectory;
     nlohmann::ordered_json resp;
     resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", "s"}};
+    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
     resp["events"] = tr.events.size();
     resp["steps"] = tr.steps;
     const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
@@ -87,7 +88,7 @@ int run_study(const RunOptions& opt) {
     rigid["response"] = resp;
     rigid["contacts"] = contacts_json(r.contacts, u);
 
-    std::vector<std::string> h = {"time [s]"};
+    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
     for (const std::string& c : r.coordinates) h.push_back(report::column(c, coordinate_unit(c, u)));
     for (const coupling::Series& s : r.series)
       h.push_back(s.quantity == Quantity::dimensionless ? s.name : report::column(s.name, u.label(s.quantity)));
@@ -99,7 +100,7 @@ int run_study(const RunOptions& opt) {
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());
-    report::CsvTable ev({"time [s]", "event"});
+    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
     for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
@@ -107,7 +108,7 @@ int run_study(const RunOptions& opt) {
       // Frame loads (forces on the frame) and the stress resultants of Eq. 2.47.
       const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment), L = u.label(Quantity::length);
       const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
-      std::vector<std::string> lh = {"time [s]"};
+      std::vector<std::string> lh = {report::column("time", u.label(Quantity::time))};
       for (const coupling::FrameLoad2D& l : r.frame_loads)
         for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
       report::CsvTable lcsv(lh);
@@ -118,7 +119,7 @@ int run_study(const RunOptions& opt) {
       folder.write_text("frame_loads.csv", lcsv.str());
       const coupling::StressResultants& sr = *r.resultants;
       const bool stress = !r.rail_top_stress.empty();
-      std::vector<std::string> rh = {"time [s]", report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
+      std::vector<std::string> rh = {report::column("time", u.label(Quantity::time)), report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
       if (stress) rh.push_back(report::column("rail_top_stress", u.label(Quantity::stress)));
       report::CsvTable rcsv(rh);
       nlohmann::ordered_json points = nlohmann::ordered_json::array();
@@ -167,6 +168,10 @@ int run_study(const RunOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn run: {} ({}, {} coordinates, units {})\n", opt.study, study.name, r.coordinates.size(), u.name());
   if (!r.modes.empty()) {

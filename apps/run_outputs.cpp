@@ -1,6 +1,8 @@
 // rigid.contacts and the warnings list of summary.json: see run_outputs.h.
 #include "apps/run_outputs.h"
 
+#include "apps/progress.h"
+
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -22,7 +24,7 @@ void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warni
   if (!summary.contains("warnings")) summary["warnings"] = nlohmann::ordered_json::array();
   for (const core::Warning& w : warnings) {
     summary["warnings"].push_back({{"code", w.code}, {"message", w.message}});
-    fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
+    if (!quiet_console()) fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
   }
 }
 

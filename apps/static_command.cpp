@@ -48,6 +48,7 @@ int run_static(const StaticOptions& opt) {
   const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
   const std::string L = u.label(Quantity::length), F = u.label(Quantity::force), M = u.label(Quantity::moment), S = u.label(Quantity::stress);
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
   report::CsvTable disp({"node", report::column("ux", L), report::column("uy", L), report::column("uz", L), "rx [rad]", "ry [rad]", "rz [rad]"});
@@ -142,6 +143,10 @@ int run_static(const StaticOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn static: {} ({} nodes, {} beam elements, units {})\n", opt.mesh.path, model.nodes.size(), model.beams.size(), u.name());
   fmt::print("max displacement {:.6g} {} at node {}\n", max_disp * lf, L, max_disp_node);

@@ -120,10 +120,10 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
   forces.series.push_back(series_of(f[4], false));
   write(forces, "peak_forces.png");
   const double ref = u.from_si(s.reference.value, s.quantity);
-  report::LinePlot change = base(fmt::format("Change against the run at {} = {:g} {}", s.parameter, ref, x_unit), "relative change", "%");
+  report::LinePlot change = base(fmt::format("Change against the run at {} = {:g} {}", s.parameter, ref, x_unit), "relative change", u.label(Quantity::percent));
   for (const Figure& fig : f) change.series.push_back(series_of(fig, true));
   write(change, "relative_change.png");
-  report::LinePlot freq = base("Natural frequencies vs " + s.parameter, "natural frequency", "Hz");
+  report::LinePlot freq = base("Natural frequencies vs " + s.parameter, "natural frequency", u.label(Quantity::frequency));
   const std::size_t modes = s.points.empty() ? 0 : s.points.front().frequencies_hz.size();
   for (std::size_t m = 0; m < modes; ++m) {
     report::PlotSeries ps{fmt::format("mode {} ({})", m + 1, s.points.front().dominant[m]), {}, {}};
@@ -159,6 +159,7 @@ int run_sweep(const SweepOptions& opt) {
   for (double v : opt.values) values_si.push_back(u.to_si(v, q));
   const coupling::SweepResult s = coupling::run_parameter_sweep(study, opt.parameter, values_si, opt.jobs, progress.callback());
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
   const std::string unit = u.label(q);
   // The values as given on the command line (the study's units), for the CSV, JSON and figures.
@@ -167,10 +168,10 @@ int run_sweep(const SweepOptions& opt) {
 
   std::vector<std::string> h = {report::column(opt.parameter, unit)};
   for (const Figure& f : figures()) h.push_back(report::column(f.key, u.label(f.quantity)));
-  for (const Figure& f : figures()) h.push_back(report::column(f.key + "_change", "%"));
+  for (const Figure& f : figures()) h.push_back(report::column(f.key + "_change", u.label(Quantity::percent)));
   const std::size_t modes = s.points.front().frequencies_hz.size();
   for (std::size_t m = 0; m < modes; ++m) {
-    h.push_back(report::column(fmt::format("frequency_{}", m + 1), "Hz"));
+    h.push_back(report::column(fmt::format("frequency_{}", m + 1), u.label(Quantity::frequency)));
     h.push_back(fmt::format("dominant_{}", m + 1));
   }
   report::CsvTable csv(h);
@@ -236,6 +237,10 @@ int run_sweep(const SweepOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn sweep: {} ({}), {} over {} values, units {}\n", opt.study, study.name, opt.parameter, x.size(), u.name());
   fmt::print("reference: {} = {:g} {} (the study file's value{})\n\n", opt.parameter, reference, unit,

@@ -34,8 +34,9 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   using core::Quantity;
   const double lf = 1.0 / u.to_si_factor(Quantity::length), mf = 1.0 / u.to_si_factor(Quantity::moment),
                sf = 1.0 / u.to_si_factor(Quantity::stress);
+  const std::string T = report::column("time", u.label(Quantity::time));
   {
-    report::CsvTable t({"mode", report::column("frequency", "Hz"), "damping_ratio"});
+    report::CsvTable t({"mode", report::column("frequency", u.label(Quantity::frequency)), "damping_ratio"});
     for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
       t.row().add(static_cast<int>(i + 1)).add(r.frequencies_hz(i));
       if (i < r.response.damping_ratios.size()) t.add(r.response.damping_ratios(i));
@@ -59,7 +60,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     folder.write_text("frame_rails_envelope.csv", t.str());
   }
   if (!r.rails.empty()) {
-    std::vector<std::string> h = {"time [s]"};
+    std::vector<std::string> h = {T};
     for (const RailRecovery& rail : r.rails) {
       h.push_back(report::column(rail.spec.name + ".max_bending_moment", u.label(Quantity::moment)));
       h.push_back(report::column(rail.spec.name + ".max_abs_normal_stress", u.label(Quantity::stress)));
@@ -77,7 +78,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     const SectionHistory& h = r.sections[k];
     if (!q.rails[k].history) continue;
     const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment);
-    report::CsvTable t({"time [s]", "element", "station", report::column("x", u.label(Quantity::length)), report::column("N", F), report::column("Vy", F),
+    report::CsvTable t({T, "element", "station", report::column("x", u.label(Quantity::length)), report::column("N", F), report::column("Vy", F),
                       report::column("Vz", F), report::column("T", M), report::column("My", M), report::column("Mz", M),
                       report::column("max_abs_normal_stress", u.label(Quantity::stress))});
     const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
@@ -93,13 +94,13 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   // Nodal histories, one row per output time and node: displacement, velocity, acceleration per DOF.
   for (const NodalHistory& h : r.nodal) {
     const std::string L = u.label(Quantity::length);
-    std::vector<std::string> head = {"time [s]", "node"};
+    std::vector<std::string> head = {T, "node"};
     const char* names[6] = {"X", "Y", "Z", "RX", "RY", "RZ"};
     const bool rates = h.velocity.size() > 0;
-    for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("U") + names[d], d < 3 ? L : "rad"));
+    for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("U") + names[d], d < 3 ? L : u.label(Quantity::angle)));
     if (rates) {
-      for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("V") + names[d], d < 3 ? L + "/s" : "rad/s"));
-      for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("A") + names[d], d < 3 ? L + "/s^2" : "rad/s^2"));
+      for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("V") + names[d], u.label(d < 3 ? Quantity::velocity : Quantity::angular_velocity)));
+      for (int d = 0; d < 6; ++d) head.push_back(report::column(std::string("A") + names[d], u.label(d < 3 ? Quantity::acceleration : Quantity::angular_acceleration)));
     }
     report::CsvTable t(head);
     for (Eigen::Index j = 0; j < r.response.times.size(); ++j)
@@ -125,7 +126,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   const auto write_frame = [&](Eigen::Index j) {
     const Eigen::VectorXd uj = r.response.displacement.col(j);
     report::VtuField disp{fmt::format("displacement [{}]", u.label(Quantity::length)), 3, {}};
-    report::VtuField rot{"rotation [rad]", 3, {}};
+    report::VtuField rot{fmt::format("rotation [{}]", u.label(Quantity::angle)), 3, {}};
     for (std::size_t n = 0; n < m.nodes.size(); ++n)
       for (int d = 0; d < 3; ++d) {
         disp.values.push_back(uj(fem::kDofsPerNode * static_cast<Eigen::Index>(n) + d) * lf);
@@ -160,16 +161,25 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     folder.write_text(fmt::format("frame_response_{:05d}.vtu", j), report::vtu_document(m, lf, {disp, rot}, {stress, moment, axial}));
   };
   const Eigen::Index frames = r.response.times.size();
+  // Progress: the writing thread below counts, this one reports (the callback need not be thread-safe).
+  std::atomic<int> done{0};
+  const auto write_counted = [&](Eigen::Index j) {
+    write_frame(j);
+    ++done;
+  };
   std::exception_ptr failure;
   std::thread second([&] {
     try {
-      for (Eigen::Index j = 1; j < frames; j += 2) write_frame(j);
+      for (Eigen::Index j = 1; j < frames; j += 2) write_counted(j);
     } catch (...) {
       failure = std::current_exception();
     }
   });
   try {
-    for (Eigen::Index j = 0; j < frames; j += 2) write_frame(j);
+    for (Eigen::Index j = 0; j < frames; j += 2) {
+      write_counted(j);
+      if (written) written(done.load(), static_cast<int>(frames));
+    }
   } catch (...) {
     second.join();
     throw;
@@ -197,7 +207,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     j["element"] = p.element_id;
     j["station"] = p.station;
     j["x"] = quantity(p.point.x() * lf, u.label(Quantity::length));
-    j["time"] = quantity(p.time, "s");
+    j["time"] = quantity(p.time, u.label(Quantity::time));
     return j;
   };
   ordered_json j;
@@ -256,9 +266,9 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
       }
       if (v.rows() > 0) {
         jp["peak_force"] = {{"value", u.from_si(v.row(kf).head<3>().norm(), Quantity::force)}, {"unit", u.label(Quantity::force)},
-                            {"time", quantity(r.loads.times(kf), "s")}};
+                            {"time", quantity(r.loads.times(kf), u.label(Quantity::time))}};
         jp["peak_moment"] = {{"value", u.from_si(v.row(km).tail<3>().norm(), Quantity::moment)}, {"unit", u.label(Quantity::moment)},
-                             {"time", quantity(r.loads.times(km), "s")}};
+                             {"time", quantity(r.loads.times(km), u.label(Quantity::time))}};
       }
     }
     points.push_back(jp);
@@ -288,10 +298,10 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
   // Every output set by its name: where and when each quantity peaks.
   auto set_peak = [&](const RailPeak& p, Quantity qty) {
     return ordered_json{{"value", u.from_si(p.value, qty)}, {"unit", u.label(qty)}, {"element", p.element_id}, {"station", p.station},
-                        {"time", quantity(p.time, "s")}};
+                        {"time", quantity(p.time, u.label(Quantity::time))}};
   };
   auto nodal_peak = [&](const NodalPeak& p, double factor, const std::string& unit) {
-    return ordered_json{{"value", p.value * factor}, {"unit", unit}, {"node", p.node_id}, {"dof", fem::dof_name(p.dof)}, {"time", quantity(p.time, "s")}};
+    return ordered_json{{"value", p.value * factor}, {"unit", unit}, {"node", p.node_id}, {"dof", fem::dof_name(p.dof)}, {"time", quantity(p.time, u.label(Quantity::time))}};
   };
   ordered_json outputs = ordered_json::object();
   for (const RailRecovery& rail : r.rails) {
@@ -312,8 +322,8 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     ordered_json o = {{"kind", "node_set"}, {"set", h.spec.node_set}, {"nodes", h.node_ids}};
     o["peak_displacement"] = nodal_peak(h.peak_displacement, lf, L);
     if (h.velocity.size() > 0) {
-      o["peak_velocity"] = nodal_peak(h.peak_velocity, lf, L + "/s");
-      o["peak_acceleration"] = nodal_peak(h.peak_acceleration, lf, L + "/s^2");
+      o["peak_velocity"] = nodal_peak(h.peak_velocity, lf, u.label(Quantity::velocity));
+      o["peak_acceleration"] = nodal_peak(h.peak_acceleration, lf, u.label(Quantity::acceleration));
     }
     outputs[h.spec.name] = o;
   }

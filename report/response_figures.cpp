@@ -78,7 +78,7 @@ void add_frame_figures(const coupling::RigidStudy& study, const coupling::RigidR
     plot.title = std::string("Rail top-fiber stress at X = ") + std::to_string(u.from_si(sr.output_x[k], Quantity::length)).substr(0, 5) + " " +
                  u.label(Quantity::length) + " (thesis Figure " + (plow ? "16" : "21") + ")";
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = "normal stress at the top of one rail";
     plot.y_unit = u.label(Quantity::stress);
     report::PlotSeries ps{"top fiber, tension positive", time, {}};
@@ -115,10 +115,10 @@ std::vector<std::string> write_response_figures(const coupling::RigidStudy& stud
     report::LinePlot plot;
     plot.title = f.title + ": " + study.name;
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = f.y_label;
     // The angle series is in degrees already (dimensionless in the results).
-    plot.y_unit = s->quantity == Quantity::dimensionless ? "deg" : u.label(s->quantity);
+    plot.y_unit = u.label(s->quantity == Quantity::dimensionless ? Quantity::angle_degrees : s->quantity);
     report::PlotSeries ps{f.legend, time, {}};
     ps.y.reserve(s->values.size());
     for (double v : s->values) ps.y.push_back(u.from_si(v, s->quantity));

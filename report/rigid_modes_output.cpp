@@ -1,6 +1,7 @@
 // rigid.modes and rigid_modes.csv for every rigid-body study (report/rigid_modes_output.h).
 #include "report/rigid_modes_output.h"
 
+#include "core/units.h"
 #include "report/csv_writer.h"
 
 namespace framedyn::report {
@@ -8,7 +9,7 @@ namespace framedyn::report {
 nlohmann::ordered_json write_rigid_modes(const std::vector<std::string>& coordinates, const std::vector<rigid::RigidMode>& modes,
                                          const core::ResultsFolder& folder) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  std::vector<std::string> header = {"mode", report::column("frequency", "Hz"), "dominant"};
+  std::vector<std::string> header = {"mode", report::column("frequency", core::UnitSystem::si().label(core::Quantity::frequency)), "dominant"};
   for (const std::string& c : coordinates) header.push_back("energy_share_" + c);
   report::CsvTable csv(header);
   for (std::size_t i = 0; i < modes.size(); ++i) {

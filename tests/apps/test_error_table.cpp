@@ -547,6 +547,8 @@ std::vector<Row> rows() {
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
       {"CLI-33", {{"frame.inp", edit(kMesh, "*BOUNDARY\n", "*DLOAD\nFRAME, PZ, 100.\n*BOUNDARY\n")}},
        "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results", "frame.inp: *DLOAD", true},
+      // ---- progress and verbosity (apps/progress.cpp, apps/command_line.cpp)
+      cli_row("CLI-38", "static frame.inp --out results -v -q", "command line: --quiet"),
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");
