@@ -32,10 +32,10 @@ void Progress::line(const std::string& text) {
   last_line_ = elapsed();
 }
 
-void Progress::stage(const std::string& what, double starts_at) {
+void Progress::stage(const std::string& what) {
   if (quiet_) return;
   stages_.push_back({what, elapsed()});
-  if (verbose_ || elapsed() > 1.0) line(starts_at >= 0.0 ? fmt::format("[{:3.0f} %] {}", 100.0 * starts_at, what) : what);
+  if (verbose_ || elapsed() > 1.0) line(what);
 }
 
 void Progress::step(long long done, long long total) {
@@ -52,7 +52,8 @@ void Progress::done() {
     fmt::print(stderr, "framedyn stages:\n");
     for (std::size_t i = 0; i < stages_.size(); ++i) {
       const double until = i + 1 < stages_.size() ? stages_[i + 1].started : end;
-      fmt::print(stderr, "  {:<60} {:8.3f} s\n", stages_[i].what, until - stages_[i].started);
+      fmt::print(stderr, "  {:<60} {:8.3f} s {:5.1f} %\n", stages_[i].what, until - stages_[i].started,
+                 end > 0.0 ? 100.0 * (until - stages_[i].started) / end : 0.0);
     }
   }
   if (announced_ || verbose_) fmt::print(stderr, "framedyn [{:7.2f} s] done\n", end);

@@ -1,11 +1,11 @@
 // Progress and verbosity, the same on every command (docs/user-guide.md,
 // "Progress and verbosity"):
 //   default  a progress line on stderr for work over a second: a stage is
-//            announced once the run has been going for a second, with the
-//            share of the run it starts at when the command knows the shares,
-//            and a percentage at most once a second where a stage is a loop
-//            (e.g. "writing results 45 %");
-//   -v       every stage at once, and at the end each stage with its time;
+//            announced once the run has been going for a second, and a
+//            percentage at most once a second where a stage is a loop
+//            (e.g. "writing results (frame) 45 %");
+//   -v       every stage at once, and at the end each stage with its time and
+//            its share of the run;
 //   -q       errors only: nothing on stderr for a successful run, and on
 //            stdout only the line naming the results folder (no tables).
 #pragma once
@@ -34,8 +34,7 @@ class Progress {
  public:
   explicit Progress(bool verbose = false, bool quiet = false);
   explicit Progress(const ProgressFlags& f) : Progress(f.verbose, f.quiet) {}
-  // A new stage; `starts_at` is the share of the run done when it starts (0..1, < 0: unknown).
-  void stage(const std::string& what, double starts_at = -1.0);
+  void stage(const std::string& what);
   // `done` of `total` steps of the current stage's loop: a percentage line at most once a second.
   void step(long long done, long long total);
   void done();

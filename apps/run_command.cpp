@@ -2,7 +2,7 @@
 // (model: rigid_2d) — natural frequencies with their dominant coordinates and
 // a forced response with recovered forces. Writes DIR/summary.json,
 // DIR/rigid_modes.csv and, with a response, DIR/response.csv and DIR/events.csv.
-// With --figures, PNG time histories too (apps/response_figures.cpp).
+// With --figures, PNG time histories too (report/response_figures.cpp).
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -30,7 +30,7 @@ using core::Quantity;
 struct RunOptions {
   std::string study;
   std::string out;
-  bool figures = false;  // --figures: PNG time histories (apps/response_figures.cpp)
+  bool figures = false;  // --figures: PNG time histories (report/response_figures.cpp)
   ProgressFlags progress;
 };
 

@@ -38,10 +38,11 @@ std::string cantilever() {
 // A shipped example with its mesh and load paths made absolute and its forced response cut to 0.05 s.
 std::string shipped(const std::string& name) {
   std::string s = read_file(kSource / "examples" / name);
-  for (const std::string& rel : {std::string("../meshes/"), std::string("portal_frame_sway_loads.csv")}) {
+  // The keys' values, not the comments' mentions of the same files.
+  for (const std::string& rel : {std::string("mesh: ../meshes/"), std::string("loads: portal_frame_sway_loads.csv")}) {
     const std::size_t at = s.find(rel);
     if (at == std::string::npos) continue;
-    s.replace(at, rel.size(), rel[0] == '.' ? (kSource / "meshes").string() + "/" : (kSource / "examples" / rel).string());
+    s.replace(at, rel.size(), rel[0] == 'm' ? "mesh: " + (kSource / "meshes").string() + "/" : "loads: " + (kSource / "examples" / rel.substr(7)).string());
   }
   const std::regex duration(R"(duration: [0-9.]+)");
   return std::regex_replace(s, duration, "duration: 0.05", std::regex_constants::format_first_only);
@@ -77,9 +78,9 @@ TEST_P(EveryCommand, VerboseListsTheStagesWithTheirTimes) {
   const std::size_t list = r.err.find("framedyn stages:\n");
   ASSERT_NE(list, std::string::npos) << r.err;
   const std::string stages = r.err.substr(list);
-  // "  writing results            0.012 s": every stage with its time, the writing among them.
-  EXPECT_TRUE(std::regex_search(stages, std::regex(R"(\n  writing results[^\n]* +[0-9]+\.[0-9]{3} s\n)"))) << stages;
-  EXPECT_TRUE(std::regex_search(stages, std::regex(R"(\n  reading [^\n]* +[0-9]+\.[0-9]{3} s\n)"))) << stages;
+  // "  writing results            0.012 s  12.5 %": every stage with its time and share, the writing among them.
+  EXPECT_TRUE(std::regex_search(stages, std::regex(R"(\n  writing results[^\n]* +[0-9]+\.[0-9]{3} s +[0-9]+\.[0-9] %\n)"))) << stages;
+  EXPECT_TRUE(std::regex_search(stages, std::regex(R"(\n  reading [^\n]* +[0-9]+\.[0-9]{3} s +[0-9]+\.[0-9] %\n)"))) << stages;
   // The console's tables stay (only -q drops them).
   EXPECT_NE(r.out.find("results in verbose/"), std::string::npos);
 }

@@ -149,7 +149,7 @@ TEST(FrameResponseCommand, EveryUnitOfTheSiPortalFrameIsALabelOfSi) {
   TempDir dir("unit_labels_portal");
   std::string study = read_file(fs::path(FRAMEDYN_SOURCE_DIR) / "examples" / "portal_frame_sway.yaml");
   study.replace(study.find("../meshes/portal_frame.inp"), 26, std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/portal_frame.inp");
-  study.replace(study.find("portal_frame_sway_loads.csv"), 27, std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway_loads.csv");
+  study.replace(study.find("loads: portal_frame_sway_loads.csv"), 34, "loads: " + std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway_loads.csv");
   study += "  pvd: true\n";
   write(dir / "study.yaml", study);
   const RunResult r = framedyn(dir, "frame-response study.yaml --out results -q");

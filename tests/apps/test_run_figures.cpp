@@ -1,5 +1,5 @@
 // `framedyn run --figures`: the response's time histories as PNG images next
-// to response.csv (apps/response_figures.cpp), the plow's forces (thesis
+// to response.csv (report/response_figures.cpp), the plow's forces (thesis
 // Figures 11 and 12) and blade motion; a machine without a chain draws no
 // chain force. Skipped only when gnuplot is absent (install-deps.sh installs it).
 #include <gtest/gtest.h>
