@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 namespace framedyn::apps {
 
@@ -68,6 +69,15 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
     // "--modes: expected ..., found '0'" from number_check: the option, then the message.
     const std::size_t colon = text.find(": ");
     if (colon != std::string::npos) return core::InputError(command_line(text.substr(0, colon)), text.substr(colon + 2)).what();
+  }
+  if (kind == "ExcludesError") {
+    // "--verbose excludes --quiet" (or the other way round, by the order given): named the same either way.
+    const std::size_t at = text.find(" excludes ");
+    if (at != std::string::npos) {
+      std::string a = text.substr(0, at), b = text.substr(at + 10);
+      if (b < a) std::swap(a, b);
+      return located(a, fmt::format("at most one of {} and {} ({})", a, b, help_of(command)), "both");
+    }
   }
   if (kind == "ArgumentMismatch") {
     // "--modes: 1 required INT missing": the option is the text before the colon.

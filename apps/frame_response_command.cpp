@@ -14,10 +14,12 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/progress.h"
 #include "apps/run_outputs.h"
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 
 namespace framedyn::apps {
 
@@ -27,29 +29,39 @@ struct FrameResponseOptions {
   std::string study;
   std::string loads;  // overrides frame.loads
   std::string out;
+  ProgressFlags progress;
 };
 
 int run_frame_response(const FrameResponseOptions& opt) {
+  Progress progress(opt.progress);
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
   std::vector<std::filesystem::path> inputs = {opt.study};
   if (!opt.loads.empty()) inputs.emplace_back(opt.loads);
   core::check_results_target(out_dir, inputs);  // before the run: a refusal costs no time
+  progress.stage("reading " + opt.study);
   coupling::FrameStudyRequest q = coupling::read_frame_study(opt.study);
   if (!opt.loads.empty()) q.loads = std::filesystem::path(opt.loads);
   inputs.push_back(q.mesh);
   if (q.loads) inputs.push_back(*q.loads);
   core::check_results_target(out_dir, inputs);
+  progress.stage("frame transient");
   const coupling::FrameStudyResults r = coupling::run_frame_study(q);
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, inputs);
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder, progress.step_callback());
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
-  j["frame"] = coupling::frame_summary(r, q);
+  j["frame"] = report::frame_summary(r, q);
   add_warnings(j, coupling::frame_warnings(r, q));
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
+  progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   using core::Quantity;
   const core::UnitSystem& u = q.units;
@@ -86,6 +98,7 @@ void add_frame_response_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("study", opt->study, "Study file (.yaml) with model: frame_transient")->required();
   cmd->add_option("--loads", opt->loads, "Load-history file (overrides frame.loads)");
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");
+  opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_frame_response(*opt); }; });
 }
 

@@ -12,6 +12,7 @@
 
 #include "apps/command_line.h"
 #include "apps/commands.h"
+#include "apps/progress.h"
 #include "core/error.h"
 #include "core/results_folder.h"
 
@@ -45,7 +46,8 @@ int main(int argc, char** argv) {
     // Every run ends with what it cost: wall time and peak resident memory.
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    fmt::print("run time {:.2f} s, peak memory {:.0f} MiB\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+    if (!framedyn::apps::quiet_console())
+      fmt::print("run time {:.2f} s, peak memory {:.0f} MiB\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                usage.ru_maxrss / 1024.0);
     return status;
   } catch (const framedyn::core::InputError& e) {

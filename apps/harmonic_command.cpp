@@ -11,10 +11,10 @@
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/frequency_domain_input.h"
-#include "apps/response_figures.h"
-#include "core/csv_writer.h"
+#include "report/response_figures.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
-#include "core/plot.h"
+#include "report/plot.h"
 #include "core/results_folder.h"
 #include "fem/harmonic_response.h"
 
@@ -54,7 +54,7 @@ std::string parse_frequencies(const std::string& text, std::vector<double>* out)
 }
 
 int run_harmonic(const HarmonicCommandOptions& opt) {
-  if (opt.common.figures) require_gnuplot();
+  if (opt.common.figures) report::require_gnuplot();
   Progress progress(opt.common.progress);
   const FrequencyDomainFrame f = prepare_frequency_domain(opt.common, "harmonic", progress);
   const fem::FrameModel& model = *f.model;
@@ -75,12 +75,12 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   core::ResultsFolder folder(out_dir);
 
   // frf.csv: per output node and frequency, amplitude and phase of each DOF; u_d(t) = |u_d| cos(omega t + phase_d).
-  std::vector<std::string> headers = {"node", core::column("frequency", "Hz")};
+  std::vector<std::string> headers = {"node", report::column("frequency", u.label(Quantity::frequency))};
   for (int d = 0; d < fem::kDofsPerNode; ++d) {
-    headers.push_back(core::column(std::string(fem::dof_name(d)) + "_amplitude", d < 3 ? L : "rad"));
-    headers.push_back(core::column(std::string(fem::dof_name(d)) + "_phase", "deg"));
+    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_amplitude", d < 3 ? L : u.label(Quantity::angle)));
+    headers.push_back(report::column(std::string(fem::dof_name(d)) + "_phase", u.label(Quantity::angle_degrees)));
   }
-  core::CsvTable frf(headers);
+  report::CsvTable frf(headers);
   // The phase of an amplitude at round-off level (below 1e-12 of the largest of its kind, translations
   // or rotations: a DOF the load does not excite) is noise: written as 0.
   double largest[2] = {0.0, 0.0};
@@ -105,33 +105,33 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   std::vector<std::string> figures;
   if (opt.common.figures) {
     progress.stage("figures");
-    core::LinePlot plot;
+    report::LinePlot plot;
     plot.title = fmt::format("Frequency response: largest amplitude at node {} ({}), {} modes, zeta = {}", peak_node, peak_dof, r.modes_used,
                              opt.common.damping_ratio);
     plot.x_label = "frequency";
-    plot.x_unit = "Hz";
+    plot.x_unit = u.label(Quantity::frequency);
     plot.y_label = "displacement amplitude";
     plot.y_unit = L;
-    core::PlotSeries ps{fmt::format("node {} {}", peak_node, peak_dof), r.frequencies_hz, {}};
+    report::PlotSeries ps{fmt::format("node {} {}", peak_node, peak_dof), r.frequencies_hz, {}};
     for (Eigen::Index k = 0; k < r.max_displacement_frf.size(); ++k) ps.y.push_back(std::abs(r.max_displacement_frf(k)) * lf);
     plot.log_y = *std::min_element(ps.y.begin(), ps.y.end()) > 0.0;
     plot.series.push_back(std::move(ps));
-    core::write_png(plot, folder.path_of("frf.png"));
+    report::write_png(plot, folder.path_of("frf.png"));
     figures.push_back("frf.png");
     if (has_stress) {
-      core::LinePlot sp;
+      report::LinePlot sp;
       sp.title = fmt::format("Fiber stress amplitude at the peak point of element {}", r.max_fiber_stress_point.element_id);
       sp.x_label = "frequency";
-      sp.x_unit = "Hz";
+      sp.x_unit = u.label(Quantity::frequency);
       sp.y_label = "fiber stress amplitude";
       sp.y_unit = S;
-      core::PlotSeries ss{fmt::format("element {}, {}, stress point {}", r.max_fiber_stress_point.element_id, fem::describe_station(r.max_fiber_stress_point),
+      report::PlotSeries ss{fmt::format("element {}, {}, stress point {}", r.max_fiber_stress_point.element_id, fem::describe_station(r.max_fiber_stress_point),
                                       r.max_fiber_stress_point.stress_point + 1),
                           r.frequencies_hz, {}};
       for (Eigen::Index k = 0; k < r.max_fiber_stress_spectrum.size(); ++k) ss.y.push_back(r.max_fiber_stress_spectrum(k) * sf);
       sp.log_y = *std::min_element(ss.y.begin(), ss.y.end()) > 0.0;
       sp.series.push_back(std::move(ss));
-      core::write_png(sp, folder.path_of("fiber_stress.png"));
+      report::write_png(sp, folder.path_of("fiber_stress.png"));
       figures.push_back("fiber_stress.png");
     }
   }
@@ -159,6 +159,10 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn harmonic: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(),
              model.beams.size(), f.modes.free_dofs, u.name());

@@ -12,10 +12,10 @@
 
 #include "apps/commands.h"
 #include "apps/frequency_domain_input.h"
-#include "apps/response_figures.h"
-#include "core/csv_writer.h"
+#include "report/response_figures.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
-#include "core/plot.h"
+#include "report/plot.h"
 #include "core/results_folder.h"
 #include "fem/random_response.h"
 
@@ -30,15 +30,15 @@ struct RandomCommandOptions {
   std::string psd;
 };
 
-core::LinePlot spectrum_plot(const std::string& title, const std::string& y_label, const std::string& y_unit, const std::string& name,
+report::LinePlot spectrum_plot(const std::string& title, const std::string& y_label, const std::string& y_unit, const std::string& name,
                              const std::vector<double>& f, const Eigen::VectorXd& values, double factor) {
-  core::LinePlot p;
+  report::LinePlot p;
   p.title = title;
   p.x_label = "frequency";
-  p.x_unit = "Hz";
+  p.x_unit = core::UnitSystem::si().label(core::Quantity::frequency);  // the same in every system
   p.y_label = y_label;
   p.y_unit = y_unit;
-  core::PlotSeries s{name, f, {}};
+  report::PlotSeries s{name, f, {}};
   for (Eigen::Index k = 0; k < values.size(); ++k) s.y.push_back(values(k) * factor);
   p.log_x = true;
   p.log_y = *std::min_element(s.y.begin(), s.y.end()) > 0.0;
@@ -47,7 +47,7 @@ core::LinePlot spectrum_plot(const std::string& title, const std::string& y_labe
 }
 
 int run_random(const RandomCommandOptions& opt) {
-  if (opt.common.figures) require_gnuplot();
+  if (opt.common.figures) report::require_gnuplot();
   Progress progress(opt.common.progress);
   const fem::LoadPsd psd = fem::read_load_psd(opt.psd);  // before the modes: a bad file fails at once
   const FrequencyDomainFrame f = prepare_frequency_domain(opt.common, "random", progress);
@@ -67,13 +67,13 @@ int run_random(const RandomCommandOptions& opt) {
   progress.stage("writing results");
   const double lf = 1.0 / u.to_si_factor(Quantity::length), sf = 1.0 / u.to_si_factor(Quantity::stress);
   const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress);
-  const std::string L2 = L + "^2/Hz", S2 = S + "^2/Hz";
+  const std::string L2 = u.label(Quantity::translation_psd), S2 = u.label(Quantity::stress_psd);
   const std::string out_dir = opt.common.out_dir();
   core::ResultsFolder folder(out_dir);
 
-  std::vector<std::string> headers = {"node", core::column("frequency", "Hz"), core::column("load_psd", "1/Hz")};
-  for (int d = 0; d < fem::kDofsPerNode; ++d) headers.push_back(core::column(std::string(fem::dof_name(d)) + "_psd", d < 3 ? L2 : "rad^2/Hz"));
-  core::CsvTable table(headers);
+  std::vector<std::string> headers = {"node", report::column("frequency", u.label(Quantity::frequency)), report::column("load_psd", u.label(Quantity::per_frequency))};
+  for (int d = 0; d < fem::kDofsPerNode; ++d) headers.push_back(report::column(std::string(fem::dof_name(d)) + "_psd", d < 3 ? L2 : u.label(Quantity::rotation_psd)));
+  report::CsvTable table(headers);
   for (std::size_t i = 0; i < f.output_nodes.size(); ++i)
     for (std::size_t k = 0; k < r.frequencies_hz.size(); ++k) {
       table.row().add(model.nodes[static_cast<std::size_t>(f.output_nodes[i])].id).add(r.frequencies_hz[k]).add(r.load_psd[k]);
@@ -84,8 +84,8 @@ int run_random(const RandomCommandOptions& opt) {
   folder.write_text("response_psd.csv", table.str());
 
   std::vector<std::string> rms_headers = {"node"};
-  for (int d = 0; d < fem::kDofsPerNode; ++d) rms_headers.push_back(core::column(std::string(fem::dof_name(d)) + "_rms", d < 3 ? L : "rad"));
-  core::CsvTable rms(rms_headers);
+  for (int d = 0; d < fem::kDofsPerNode; ++d) rms_headers.push_back(report::column(std::string(fem::dof_name(d)) + "_rms", d < 3 ? L : u.label(Quantity::angle)));
+  report::CsvTable rms(rms_headers);
   for (int n : f.output_nodes) {
     rms.row().add(model.nodes[static_cast<std::size_t>(n)].id);
     for (int d = 0; d < fem::kDofsPerNode; ++d) rms.add(r.rms(fem::kDofsPerNode * n + d) * (d < 3 ? lf : 1.0));
@@ -106,14 +106,14 @@ int run_random(const RandomCommandOptions& opt) {
   std::vector<std::string> figures;
   if (opt.common.figures) {
     progress.stage("figures");
-    core::write_png(spectrum_plot(fmt::format("Response PSD at node {} ({}), the largest; RMS {:.4g} {}", psd_node, psd_dof,
+    report::write_png(spectrum_plot(fmt::format("Response PSD at node {} ({}), the largest; RMS {:.4g} {}", psd_node, psd_dof,
                                               r.rms(r.max_displacement_psd_dof) * lf, L),
                                   "displacement PSD", L2, fmt::format("node {} {}", psd_node, psd_dof), r.frequencies_hz,
                                   r.max_displacement_psd_spectrum, lf * lf),
                     folder.path_of("response_psd.png"));
     figures.push_back("response_psd.png");
     if (has_stress) {
-      core::write_png(spectrum_plot(fmt::format("Fiber stress PSD in element {}, the largest", r.max_stress_psd_point.element_id), "fiber stress PSD", S2,
+      report::write_png(spectrum_plot(fmt::format("Fiber stress PSD in element {}, the largest", r.max_stress_psd_point.element_id), "fiber stress PSD", S2,
                                     fmt::format("element {}, {}, stress point {}", r.max_stress_psd_point.element_id, fem::describe_station(r.max_stress_psd_point),
                                                 r.max_stress_psd_point.stress_point + 1),
                                     r.frequencies_hz, r.max_stress_psd_spectrum, sf * sf),
@@ -146,6 +146,10 @@ int run_random(const RandomCommandOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn random: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(), model.beams.size(),
              f.modes.free_dofs, u.name());

@@ -19,16 +19,17 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include "apps/calibration_output.h"
-#include "apps/rigid_modes_output.h"
+#include "report/calibration_output.h"
+#include "report/rigid_modes_output.h"
 #include "apps/run_outputs.h"
-#include "core/csv_writer.h"
-#include "apps/event_log.h"
+#include "report/csv_writer.h"
+#include "report/event_log.h"
 #include "core/results_folder.h"
-#include "apps/response_figures.h"
-#include "core/plot.h"
+#include "report/response_figures.h"
+#include "report/plot.h"
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
 
@@ -40,14 +41,14 @@ using core::Quantity;
 // Thesis Figure 25: the envelope of the bending moment along the left and
 // right rails over the run (largest resultant |M| at each station).
 void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
-  core::LinePlot plot;
+  report::LinePlot plot;
   plot.title = "Bending moment along the rails (envelope over the run; thesis Figure 25)";
   plot.x_label = "X along the frame";
   plot.x_unit = u.label(Quantity::length);
   plot.y_label = "peak bending moment";
   plot.y_unit = u.label(Quantity::moment);
   for (const coupling::RailRecovery& rail : f.rails) {
-    core::PlotSeries series;
+    report::PlotSeries series;
     series.name = rail.spec.name;
     for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
       series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
@@ -55,7 +56,7 @@ void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::
     }
     plot.series.push_back(series);
   }
-  core::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
+  report::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
 }
 // Thesis Figures 22-24: forces at load points over time, one figure per
 // group. `file` names both the PNG and the CSV of the plotted values.
@@ -80,29 +81,29 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
   std::vector<std::string> written;
   std::vector<double> time(h.times.data(), h.times.data() + h.times.size());
   for (const LoadPointFigure& f : load_point_figures(attachment)) {
-    core::LinePlot plot;
+    report::LinePlot plot;
     plot.title = f.title + "; " + run_name;  // "Figure N" is the thesis's
     plot.width = 1200;
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = "force on the frame";
     plot.y_unit = u.label(Quantity::force);
-    std::vector<std::string> header = {"time [s]"};
+    std::vector<std::string> header = {report::column("time", u.label(Quantity::time))};
     for (const auto& [point, c] : f.series) {
       const auto it = std::find_if(h.points.begin(), h.points.end(), [&](const coupling::LoadPointHistory& p) { return p.name == point; });
       if (it == h.points.end()) throw std::logic_error("the frame loads have no load point " + point);
-      core::PlotSeries ps{point + " " + coupling::kLoadComponents[c], time, {}};
+      report::PlotSeries ps{point + " " + coupling::kLoadComponents[c], time, {}};
       for (Eigen::Index i = 0; i < it->values.rows(); ++i) ps.y.push_back(u.from_si(it->values(i, c), Quantity::force));
-      header.push_back(core::column(point + "." + coupling::kLoadComponents[c], u.label(Quantity::force)));
+      header.push_back(report::column(point + "." + coupling::kLoadComponents[c], u.label(Quantity::force)));
       plot.series.push_back(std::move(ps));
     }
-    core::CsvTable csv(header);
+    report::CsvTable csv(header);
     for (std::size_t i = 0; i < time.size(); ++i) {
       csv.row().add(time[i]);
-      for (const core::PlotSeries& ps : plot.series) csv.add(ps.y[i]);
+      for (const report::PlotSeries& ps : plot.series) csv.add(ps.y[i]);
     }
     folder.write_text(f.file + ".csv", csv.str());
-    core::write_png(plot, folder.path_of(f.file + ".png"));
+    report::write_png(plot, folder.path_of(f.file + ".png"));
     written.push_back(f.file + ".png");
   }
   return written;
@@ -110,13 +111,17 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
 
 }  // namespace
 
-int run_study_3d(const std::string& study_file, const std::string& out, bool figures) {
-  if (figures) require_gnuplot();
+int run_study_3d(const std::string& study_file, const std::string& out, bool figures, const ProgressFlags& flags) {
+  Progress progress(flags);
+  if (figures) report::require_gnuplot();
   const std::string out_dir = out.empty() ? std::filesystem::path(study_file).stem().string() + "_results" : out;
   core::check_results_target(out_dir, {study_file});  // before the run: a refusal costs no time
+  progress.stage("reading " + study_file);
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(study_file);
   const core::UnitSystem& u = study.units;
+  progress.stage(study.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)");
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {study_file});
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
 
@@ -129,19 +134,19 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
-  rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
+  rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
   rigid["modes_state"] = coupling::contact_state_name(rigid::Machine2D::ModalSoil::cutting);  // the contact state rigid.modes is in
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
   rigid["static"] = static_json(r.static_contacts, u);
 
   if (r.calibration && study.calibration)
-    rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u, coupling::parameter_quantity_3d, folder);
+    rigid["calibration"] = report::write_calibration(*study.calibration, *r.calibration, u, coupling::parameter_quantity_3d, folder);
 
   if (study.response) {
     const rigid::Trajectory& tr = r.trajectory;
     nlohmann::ordered_json resp;
     resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", "s"}};
+    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
     resp["events"] = tr.events.size();
     resp["steps"] = tr.steps;
     if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
@@ -155,18 +160,18 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     rigid["contacts"] = contacts_json(r.contacts, u);
     rigid["steady"] = steady_json(r.steady, u);
 
-    std::vector<std::string> h = {"time [s]"};
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
-    for (const coupling::Series& s : r.series) h.push_back(core::column(s.name, u.label(s.quantity)));
-    core::CsvTable csv(h);
+    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(report::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
+    for (const coupling::Series& s : r.series) h.push_back(report::column(s.name, u.label(s.quantity)));
+    report::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
       csv.row().add(tr.time[i]);
       for (std::size_t c = 0; c < r.coordinates.size(); ++c) csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());
-    core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
+    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
+    for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.frame_loads) {
@@ -198,9 +203,11 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   if (study.frame_response) {
     // Every load on the frame (points 24-31 and the attachment's at point 19).
     const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+    progress.stage("frame transient (pipeline)");
     frame = coupling::run_frame_study(*study.frame_response, &loads);
-    coupling::write_frame_outputs(*frame, *study.frame_response, folder);
-    j["frame"] = coupling::frame_summary(*frame, *study.frame_response);
+    progress.stage("writing results (frame)");
+    report::write_frame_outputs(*frame, *study.frame_response, folder, progress.step_callback());
+    j["frame"] = report::frame_summary(*frame, *study.frame_response);
     j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
     if (figures) {
@@ -210,13 +217,18 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
+  progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn run: {} ({}, 3-D, {} coordinates, units {})\n", study_file, study.name, r.coordinates.size(), u.name());
   if (!r.modes.empty()) {
     fmt::print("\n mode  frequency [Hz]  dominant\n");
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
-  if (r.calibration && study.calibration) print_calibration(*study.calibration, *r.calibration);
+  if (r.calibration && study.calibration) report::print_calibration(*study.calibration, *r.calibration);
   if (frame) {
     const coupling::FrameStudyResults& f = *frame;
     fmt::print("\nframe ({}): {} nodes, {} beam elements, {} elastic modes used, lowest {:.2f} Hz; {} output times in {:.3f} s\n",

@@ -2,7 +2,7 @@
 // (model: rigid_2d) — natural frequencies with their dominant coordinates and
 // a forced response with recovered forces. Writes DIR/summary.json,
 // DIR/rigid_modes.csv and, with a response, DIR/response.csv and DIR/events.csv.
-// With --figures, PNG time histories too (apps/response_figures.cpp).
+// With --figures, PNG time histories too (report/response_figures.cpp).
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -10,12 +10,12 @@
 
 #include "apps/commands.h"
 #include "apps/progress.h"
-#include "apps/response_figures.h"
-#include "apps/calibration_output.h"
-#include "apps/rigid_modes_output.h"
+#include "report/response_figures.h"
+#include "report/calibration_output.h"
+#include "report/rigid_modes_output.h"
 #include "apps/run_outputs.h"
-#include "core/csv_writer.h"
-#include "apps/event_log.h"
+#include "report/csv_writer.h"
+#include "report/event_log.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -30,15 +30,15 @@ using core::Quantity;
 struct RunOptions {
   std::string study;
   std::string out;
-  bool figures = false;  // --figures: PNG time histories (apps/response_figures.cpp)
+  bool figures = false;  // --figures: PNG time histories (report/response_figures.cpp)
   ProgressFlags progress;
 };
 
 
 int run_study(const RunOptions& opt) {
-  if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures);  // issue 4
+  if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures, opt.progress);  // issue 4
   Progress progress(opt.progress);
-  if (opt.figures) require_gnuplot();
+  if (opt.figures) report::require_gnuplot();
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;
   core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.study);
@@ -47,6 +47,7 @@ int run_study(const RunOptions& opt) {
   progress.stage(study.response ? "modes and forced response" : "modes");
   const coupling::RigidResults r = coupling::run_rigid_study(study);
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
 
   nlohmann::ordered_json j;
@@ -57,20 +58,20 @@ int run_study(const RunOptions& opt) {
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
-  rigid["modes"] = write_rigid_modes(r.coordinates, r.modes, folder);
+  rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
   rigid["modes_state"] = coupling::contact_state_name(study.modal_soil);  // the contact state rigid.modes is in
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
   rigid["static"] = static_json(r.static_contacts, u);
 
   if (r.calibration && study.calibration)
-    rigid["calibration"] = write_calibration(*study.calibration, *r.calibration, u,
+    rigid["calibration"] = report::write_calibration(*study.calibration, *r.calibration, u,
                                              [&](const std::string& name) { return coupling::parameter_quantity(study.machine, name); }, folder);
 
   if (study.response) {
     const rigid::Trajectory& tr = r.trajectory;
     nlohmann::ordered_json resp;
     resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", "s"}};
+    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
     resp["events"] = tr.events.size();
     resp["steps"] = tr.steps;
     const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
@@ -85,11 +86,11 @@ int run_study(const RunOptions& opt) {
     rigid["contacts"] = contacts_json(r.contacts, u);
     rigid["steady"] = steady_json(r.steady, u);
 
-    std::vector<std::string> h = {"time [s]"};
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(core::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
+    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(report::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
     for (const coupling::Series& s : r.series)
-      h.push_back(s.quantity == Quantity::dimensionless ? s.name : core::column(s.name, u.label(s.quantity)));
-    core::CsvTable csv(h);
+      h.push_back(s.quantity == Quantity::dimensionless ? s.name : report::column(s.name, u.label(s.quantity)));
+    report::CsvTable csv(h);
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
       csv.row().add(tr.time[i]);
       for (std::size_t c = 0; c < r.coordinates.size(); ++c)
@@ -97,18 +98,18 @@ int run_study(const RunOptions& opt) {
       for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
     }
     folder.write_text("response.csv", csv.str());
-    core::CsvTable ev({"time [s]", "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(event_text(e, u));
+    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
+    for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
     folder.write_text("events.csv", ev.str());
 
     if (r.resultants) {
       // Frame loads (forces on the frame) and the stress resultants of Eq. 2.47.
       const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment), L = u.label(Quantity::length);
       const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
-      std::vector<std::string> lh = {"time [s]"};
+      std::vector<std::string> lh = {report::column("time", u.label(Quantity::time))};
       for (const coupling::FrameLoad2D& l : r.frame_loads)
-        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(core::column(l.name + c, std::string(c) == "_my" ? M : F));
-      core::CsvTable lcsv(lh);
+        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
+      report::CsvTable lcsv(lh);
       for (std::size_t i = 0; i < tr.time.size(); ++i) {
         lcsv.row().add(tr.time[i]);
         for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
@@ -116,9 +117,9 @@ int run_study(const RunOptions& opt) {
       folder.write_text("frame_loads.csv", lcsv.str());
       const coupling::StressResultants& sr = *r.resultants;
       const bool stress = !r.rail_top_stress.empty();
-      std::vector<std::string> rh = {"time [s]", core::column("X", L), core::column("SRX", F), core::column("SRZ", F), core::column("SRMY", M)};
-      if (stress) rh.push_back(core::column("rail_top_stress", u.label(Quantity::stress)));
-      core::CsvTable rcsv(rh);
+      std::vector<std::string> rh = {report::column("time", u.label(Quantity::time)), report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
+      if (stress) rh.push_back(report::column("rail_top_stress", u.label(Quantity::stress)));
+      report::CsvTable rcsv(rh);
       nlohmann::ordered_json points = nlohmann::ordered_json::array();
       for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
         double px = 0, pz = 0, pm = 0, ps = 0, ps_time = 0;
@@ -160,18 +161,22 @@ int run_study(const RunOptions& opt) {
   std::vector<std::string> figures;
   if (opt.figures) {
     progress.stage("figures");
-    figures = write_response_figures(study, r, folder);
+    figures = report::write_response_figures(study, r, folder);
   }
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn run: {} ({}, {} coordinates, units {})\n", opt.study, study.name, r.coordinates.size(), u.name());
   if (!r.modes.empty()) {
     fmt::print("\n mode  frequency [Hz]  dominant\n");
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
-  if (r.calibration && study.calibration) print_calibration(*study.calibration, *r.calibration);
+  if (r.calibration && study.calibration) report::print_calibration(*study.calibration, *r.calibration);
   if (r.plow_vertical_peak_to_peak) {
     const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
     fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));

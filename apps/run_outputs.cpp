@@ -1,6 +1,8 @@
 // rigid.contacts and the warnings list of summary.json: see run_outputs.h.
 #include "apps/run_outputs.h"
 
+#include "apps/progress.h"
+
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -100,7 +102,7 @@ void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warni
       jw["figures"] = figures;
     }
     summary["warnings"].push_back(jw);
-    fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
+    if (!quiet_console()) fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
   }
 }
 

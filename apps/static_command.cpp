@@ -11,13 +11,13 @@
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "fem/partial_supports.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
-#include "fem/vtu_writer.h"
+#include "report/vtu_writer.h"
 
 namespace framedyn::apps {
 
@@ -66,9 +66,10 @@ int run_static(const StaticOptions& opt) {
   const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
   const std::string L = u.label(Quantity::length), F = u.label(Quantity::force), M = u.label(Quantity::moment), S = u.label(Quantity::stress);
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
-  core::CsvTable disp({"node", core::column("ux", L), core::column("uy", L), core::column("uz", L), "rx [rad]", "ry [rad]", "rz [rad]"});
+  report::CsvTable disp({"node", report::column("ux", L), report::column("uy", L), report::column("uz", L), "rx [rad]", "ry [rad]", "rz [rad]"});
   double max_disp = 0.0;
   int max_disp_node = 0;
   for (std::size_t n = 0; n < model.nodes.size(); ++n) {
@@ -82,8 +83,8 @@ int run_static(const StaticOptions& opt) {
   }
   folder.write_text("displacements.csv", disp.str());
 
-  core::CsvTable reac({"node", core::column("fx", F), core::column("fy", F), core::column("fz", F), core::column("mx", M),
-                       core::column("my", M), core::column("mz", M)});
+  report::CsvTable reac({"node", report::column("fx", F), report::column("fy", F), report::column("fz", F), report::column("mx", M),
+                       report::column("my", M), report::column("mz", M)});
   Eigen::Matrix<double, 6, 1> total = Eigen::Matrix<double, 6, 1>::Zero();
   for (std::size_t n = 0; n < model.nodes.size(); ++n) {
     const auto rn = r.reaction.segment<6>(static_cast<Eigen::Index>(6 * n));
@@ -96,9 +97,9 @@ int run_static(const StaticOptions& opt) {
   }
   folder.write_text("reactions.csv", reac.str());
 
-  core::CsvTable sec({"element", "station", core::column("x", L), core::column("X", L), core::column("Y", L), core::column("Z", L),
-                      core::column("N", F), core::column("Vy", F), core::column("Vz", F), core::column("T", M), core::column("My", M),
-                      core::column("Mz", M), core::column("fiber_stress_max", S), core::column("fiber_stress_min", S)});
+  report::CsvTable sec({"element", "station", report::column("x", L), report::column("X", L), report::column("Y", L), report::column("Z", L),
+                      report::column("N", F), report::column("Vy", F), report::column("Vz", F), report::column("T", M), report::column("My", M),
+                      report::column("Mz", M), report::column("fiber_stress_max", S), report::column("fiber_stress_min", S)});
   double peak_stress = 0.0;
   int peak_element = 0;
   std::vector<double> cell_max(model.beams.size(), 0.0);
@@ -123,18 +124,18 @@ int run_static(const StaticOptions& opt) {
   }
   folder.write_text("section_forces.csv", sec.str());
 
-  fem::VtuField dfield{"displacement [" + L + "]", 3, {}}, rfield{"rotation [rad]", 3, {}};
+  report::VtuField dfield{"displacement [" + L + "]", 3, {}}, rfield{"rotation [rad]", 3, {}};
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
     for (int k = 0; k < 3; ++k) {
       dfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + static_cast<std::size_t>(k))) * lf);
       rfield.values.push_back(r.displacement(static_cast<Eigen::Index>(6 * n + 3 + static_cast<std::size_t>(k))));
     }
   // Section forces at both ends of every element, as cell data.
-  std::vector<fem::VtuField> cells{{"max_abs_fiber_stress [" + S + "]", 1, cell_max}};
+  std::vector<report::VtuField> cells{{"max_abs_fiber_stress [" + S + "]", 1, cell_max}};
   const char* names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
   for (int end = 0; end < 2; ++end)
     for (int k = 0; k < 6; ++k) {
-      fem::VtuField f{fmt::format("{}_end{} [{}]", names[k], end + 1, k < 3 ? F : M), 1, {}};
+      report::VtuField f{fmt::format("{}_end{} [{}]", names[k], end + 1, k < 3 ? F : M), 1, {}};
       for (std::size_t i = 0; i < model.beams.size(); ++i) {
         const fem::SectionForces& sf = stations[i * static_cast<std::size_t>(opt.stations) + (end == 0 ? 0 : static_cast<std::size_t>(opt.stations) - 1)].forces;
         const double v[6] = {sf.n, sf.vy, sf.vz, sf.t, sf.my, sf.mz};
@@ -142,7 +143,7 @@ int run_static(const StaticOptions& opt) {
       }
       cells.push_back(std::move(f));
     }
-  folder.write_text("static.vtu", fem::vtu_document(model, lf, {dfield, rfield}, cells));
+  folder.write_text("static.vtu", report::vtu_document(model, lf, {dfield, rfield}, cells));
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "static"}};
@@ -179,6 +180,10 @@ int run_static(const StaticOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn static: {} ({} nodes, {} beam elements, units {})\n", opt.mesh.path, model.nodes.size(), model.beams.size(), u.name());
   fmt::print("max displacement {:.6g} {} at node {}\n", max_disp * lf, L, max_disp_node);

@@ -15,9 +15,9 @@
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/progress.h"
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
-#include "core/plot.h"
+#include "report/plot.h"
 #include "core/results_folder.h"
 #include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
@@ -83,7 +83,7 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
   const core::UnitSystem& u = study.units;
   std::vector<std::string> written;
   const auto series_of = [&](const Figure& f, bool relative) {
-    core::PlotSeries ps{f.label, {}, {}};
+    report::PlotSeries ps{f.label, {}, {}};
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       const std::optional<double>& v = s.points[i].*f.member;
       const std::optional<double> value = relative ? coupling::relative_change(v, s.reference.*f.member) : v;
@@ -94,7 +94,7 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
     return ps;
   };
   const auto base = [&](const std::string& title, const std::string& y_label, const std::string& y_unit) {
-    core::LinePlot p;
+    report::LinePlot p;
     p.title = title + ": " + study.name;
     p.x_label = s.parameter;
     p.x_unit = x_unit;
@@ -103,30 +103,30 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
     p.mark_points = true;
     return p;
   };
-  const auto write = [&](core::LinePlot& p, const std::string& file) {
-    p.series.erase(std::remove_if(p.series.begin(), p.series.end(), [](const core::PlotSeries& ps) { return ps.x.empty(); }), p.series.end());
+  const auto write = [&](report::LinePlot& p, const std::string& file) {
+    p.series.erase(std::remove_if(p.series.begin(), p.series.end(), [](const report::PlotSeries& ps) { return ps.x.empty(); }), p.series.end());
     if (p.series.empty()) return;
-    core::write_png(p, folder.path_of(file));
+    report::write_png(p, folder.path_of(file));
     written.push_back(file);
   };
   const std::vector<Figure>& f = figures();
-  core::LinePlot amplitude = base("Plow blade amplitude vs " + s.parameter + " (thesis Figure 9)", "blade vertical motion, average peak to peak", u.label(Quantity::length));
+  report::LinePlot amplitude = base("Plow blade amplitude vs " + s.parameter + " (thesis Figure 9)", "blade vertical motion, average peak to peak", u.label(Quantity::length));
   amplitude.series.push_back(series_of(f[0], false));
   write(amplitude, "amplitude.png");
-  core::LinePlot forces = base("Peak plow forces vs " + s.parameter + " (thesis Figure 10)", "peak plow force", u.label(Quantity::force));
+  report::LinePlot forces = base("Peak plow forces vs " + s.parameter + " (thesis Figure 10)", "peak plow force", u.label(Quantity::force));
   forces.series.push_back(series_of(f[1], false));
   forces.series.push_back(series_of(f[2], false));
   forces.series.push_back(series_of(f[3], false));
   forces.series.push_back(series_of(f[4], false));
   write(forces, "peak_forces.png");
   const double ref = u.from_si(s.reference.value, s.quantity);
-  core::LinePlot change = base(fmt::format("Change against the run at {} = {:g} {}", s.parameter, ref, x_unit), "relative change", "%");
+  report::LinePlot change = base(fmt::format("Change against the run at {} = {:g} {}", s.parameter, ref, x_unit), "relative change", u.label(Quantity::percent));
   for (const Figure& fig : f) change.series.push_back(series_of(fig, true));
   write(change, "relative_change.png");
-  core::LinePlot freq = base("Natural frequencies vs " + s.parameter, "natural frequency", "Hz");
+  report::LinePlot freq = base("Natural frequencies vs " + s.parameter, "natural frequency", u.label(Quantity::frequency));
   const std::size_t modes = s.points.empty() ? 0 : s.points.front().frequencies_hz.size();
   for (std::size_t m = 0; m < modes; ++m) {
-    core::PlotSeries ps{fmt::format("mode {} ({})", m + 1, s.points.front().dominant[m]), {}, {}};
+    report::PlotSeries ps{fmt::format("mode {} ({})", m + 1, s.points.front().dominant[m]), {}, {}};
     for (std::size_t i = 0; i < s.points.size(); ++i)
       if (m < s.points[i].frequencies_hz.size()) ps.x.push_back(x[i]), ps.y.push_back(s.points[i].frequencies_hz[m]);
     freq.series.push_back(std::move(ps));
@@ -137,8 +137,8 @@ std::vector<std::string> write_figures(const coupling::RigidStudy& study, const 
 
 int run_sweep(const SweepOptions& opt) {
   Progress progress(opt.progress);
-  if (opt.figures && !core::gnuplot_available())
-    throw core::PlotError("framedyn sweep draws figures with gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run; "
+  if (opt.figures && !report::gnuplot_available())
+    throw report::PlotError("framedyn sweep draws figures with gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run; "
                           "install it or give --no-figures");
   if (opt.jobs < 1) throw core::InputError(command_line("--jobs"), "at least 1 run at a time", fmt::format("{}", opt.jobs));
   const std::string out_dir =
@@ -159,21 +159,22 @@ int run_sweep(const SweepOptions& opt) {
   for (double v : opt.values) values_si.push_back(u.to_si(v, q));
   const coupling::SweepResult s = coupling::run_parameter_sweep(study, opt.parameter, values_si, opt.jobs, progress.callback());
 
+  progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
   const std::string unit = u.label(q);
   // The values as given on the command line (the study's units), for the CSV, JSON and figures.
   const std::vector<double>& x = opt.values;
   const double reference = u.from_si(s.reference.value, q);
 
-  std::vector<std::string> h = {core::column(opt.parameter, unit)};
-  for (const Figure& f : figures()) h.push_back(core::column(f.key, u.label(f.quantity)));
-  for (const Figure& f : figures()) h.push_back(core::column(f.key + "_change", "%"));
+  std::vector<std::string> h = {report::column(opt.parameter, unit)};
+  for (const Figure& f : figures()) h.push_back(report::column(f.key, u.label(f.quantity)));
+  for (const Figure& f : figures()) h.push_back(report::column(f.key + "_change", u.label(Quantity::percent)));
   const std::size_t modes = s.points.front().frequencies_hz.size();
   for (std::size_t m = 0; m < modes; ++m) {
-    h.push_back(core::column(fmt::format("frequency_{}", m + 1), "Hz"));
+    h.push_back(report::column(fmt::format("frequency_{}", m + 1), u.label(Quantity::frequency)));
     h.push_back(fmt::format("dominant_{}", m + 1));
   }
-  core::CsvTable csv(h);
+  report::CsvTable csv(h);
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const coupling::SweepPoint& p = s.points[i];
@@ -236,6 +237,10 @@ int run_sweep(const SweepOptions& opt) {
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
+  if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
+    fmt::print("results in {}/\n", out_dir);
+    return 0;
+  }
 
   fmt::print("framedyn sweep: {} ({}), {} over {} values, units {}\n", opt.study, study.name, opt.parameter, x.size(), u.name());
   fmt::print("reference: {} = {:g} {} (the study file's value{})\n\n", opt.parameter, reference, unit,

@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "core/csv_writer.h"
-#include "core/plot.h"
+#include "report/csv_writer.h"
+#include "report/plot.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
 #include "coupling/rail_stress.h"
@@ -143,10 +143,10 @@ int main(int argc, char** argv) {
   fmt::print("Rayleigh damping alpha = {:.6g} 1/s, beta = {:.6g} s (modal and direct)\n\n", alpha, beta);
 
   std::vector<Row> rows;
-  core::CsvTable newmark_csv({"supports", "substeps", "step [s]", "rail", "peak_bending_moment [N*m]", "peak_normal_stress [Pa]",
+  report::CsvTable newmark_csv({"supports", "substeps", "step [s]", "rail", "peak_bending_moment [N*m]", "peak_normal_stress [Pa]",
                               "wall [s]"});
-  core::CsvTable part_csv({"supports", "rail", "quantity", "mode", "frequency [Hz]", "contribution", "share"});
-  std::vector<core::PlotSeries> series;
+  report::CsvTable part_csv({"supports", "rail", "quantity", "mode", "frequency [Hz]", "contribution", "share"});
+  std::vector<report::PlotSeries> series;
 
   for (SupportCase& sc : cases) {
     const coupling::LoadMapping mapping = coupling::map_load_points(sc.model, points);
@@ -221,8 +221,8 @@ int main(int argc, char** argv) {
     fem::TransientResult all_md;
     for (const auto method : {fem::ResponseMethod::mode_displacement, fem::ResponseMethod::mode_acceleration}) {
       const std::string mname = method == fem::ResponseMethod::mode_displacement ? "mode_displacement" : "mode_acceleration";
-      core::PlotSeries sm{fmt::format("{}, {}, bending moment", sc.name, mname), {}, {}};
-      core::PlotSeries ss{fmt::format("{}, {}, normal stress", sc.name, mname), {}, {}};
+      report::PlotSeries sm{fmt::format("{}, {}, bending moment", sc.name, mname), {}, {}};
+      report::PlotSeries ss{fmt::format("{}, {}, normal stress", sc.name, mname), {}, {}};
       for (int n : counts) {
         fem::ModalTransientOptions mo;
         mo.method = method;
@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  core::CsvTable csv({"supports", "method", "modes", "rail", "peak_bending_moment_at_critical_point [N*m]", "relative_error_moment",
+  report::CsvTable csv({"supports", "method", "modes", "rail", "peak_bending_moment_at_critical_point [N*m]", "relative_error_moment",
                       "peak_normal_stress_at_critical_point [Pa]", "relative_error_stress"});
   for (const Row& r : rows)
     csv.row().add(r.supports).add(r.method).add(r.modes).add(r.rail).add(r.moment).add(r.moment_error).add(r.stress).add(r.stress_error);
@@ -331,7 +331,7 @@ int main(int argc, char** argv) {
   std::ofstream(fs::path(out_dir) / "mode_truncation_newmark.csv") << newmark_csv.str();
   std::ofstream(fs::path(out_dir) / "mode_truncation_participation.csv") << part_csv.str();
 
-  core::LinePlot plot;
+  report::LinePlot plot;
   plot.title = "Mode truncation, R-100-like frame, offset plowing: worse rail's error at the critical point";
   plot.x_label = "elastic modes used";
   plot.x_unit = "1";
@@ -340,7 +340,7 @@ int main(int argc, char** argv) {
   plot.series = series;
   plot.mark_points = true;
   try {
-    core::write_png(plot, png_path);
+    report::write_png(plot, png_path);
     fmt::print("figure: {}\n", png_path);
   } catch (const std::exception& e) {
     fmt::print(stderr, "no figure: {}\n", e.what());

@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "core/plot.h"
+#include "report/plot.h"
 #include "coupling/frame_loads_2d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
@@ -215,8 +215,8 @@ FrameRun run_frame(const c::FrameStudyRequest& q0, const c::LoadHistory& loads, 
 }
 
 void plot(const std::filesystem::path& png, const std::string& title, const std::string& xl, const std::string& xu, const std::string& yl,
-          const std::string& yu, std::vector<core::PlotSeries> series) {
-  core::LinePlot p;
+          const std::string& yu, std::vector<report::PlotSeries> series) {
+  report::LinePlot p;
   p.title = title;
   p.x_label = xl;
   p.x_unit = xu;
@@ -224,7 +224,7 @@ void plot(const std::filesystem::path& png, const std::string& title, const std:
   p.y_unit = yu;
   p.series = std::move(series);
   try {
-    core::write_png(p, png);
+    report::write_png(p, png);
   } catch (const std::exception& e) {
     fmt::print("(figure {} not drawn: {})\n", png.string(), e.what());
   }
@@ -362,9 +362,9 @@ int main(int argc, char** argv) {
       f << fmt::format("{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", t2[i], s["SRMY.2d_full"][i],
                        s["SRMY.2d_fe_carried"][i], s["SRMY.3d_cut"][i], s["SRMY.fe_static"][i], s["SRMY.fe_dynamic"][i], s["SRMY.fe_free_free"][i],
                        s["SRX.2d_full"][i], s["SRX.3d_cut"][i], s["SRX.fe_dynamic"][i], s["stress.fe_dynamic"][i]);
-    std::vector<core::PlotSeries> ps;
+    std::vector<report::PlotSeries> ps;
     auto add = [&](const std::string& name, const std::string& key) {
-      core::PlotSeries p{name, {}, {}};
+      report::PlotSeries p{name, {}, {}};
       for (std::size_t i = 0; i < t2.size(); ++i)
         if (t2[i] >= 0.6 - 1e-12 && t2[i] <= 0.8 + 1e-12) {
           p.x.push_back(t2[i]);
@@ -381,7 +381,7 @@ int main(int argc, char** argv) {
          "time", "s", "SRMY (both rails)", "lbf*in", ps);
   }
   {  // Amplitude along the frame.
-    std::vector<core::PlotSeries> ps(5);
+    std::vector<report::PlotSeries> ps(5);
     const char* names[] = {"2-D Eq. 2.47 (all parts, tube inertia)", "2-D, only the loads the beam frame gets", "static cut of the 3-D loads 24-31",
                            "beam frame, fixed rear end, dynamic", "beam frame, free-free inertia relief, dynamic"};
     const char* keys[] = {"SRMY.2d_full", "SRMY.2d_fe_carried", "SRMY.3d_cut", "SRMY.fe_dynamic", "SRMY.fe_free_free"};
@@ -643,7 +643,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < tc.size(); ++i)
       f << fmt::format("{:.5f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", tc[i], cf[i] / kLbf, i < m2c.size() ? m2c[i] : std::nan(""), m3c[i],
                        mc[i], scf[i], i < sc2.size() ? sc2[i] : std::nan(""));
-    std::vector<core::PlotSeries> ps(3);
+    std::vector<report::PlotSeries> ps(3);
     ps[0].name = "2-D Eq. 2.47 SRMY";
     ps[1].name = "static cut of the 3-D loads 24-31";
     ps[2].name = "beam frame, fixed rear end, dynamic";
@@ -661,7 +661,7 @@ int main(int argc, char** argv) {
          "lbf*in", ps);
   }
   {  // Result 5 figure: stress at X = 36, plow and chain.
-    std::vector<core::PlotSeries> ps(4);
+    std::vector<report::PlotSeries> ps(4);
     ps[0].name = "plow, 2-D Eq. 2.47d";
     ps[1].name = "plow, beam frame";
     ps[2].name = "chain, 2-D Eq. 2.47d";

@@ -38,7 +38,7 @@ class ResultsFolder {
 
   // Path of a file inside the (still partial) folder, for writers that open
   // files themselves: they must hold the output gate while they create it
-  // (core::write_png does; its gnuplot child is registered for the clean-up).
+  // (report::write_png does; its gnuplot child is registered for the clean-up).
   std::filesystem::path path_of(const std::string& file_name) const;
   // Throws NumericalError, writing nothing, if the content holds a NaN or an
   // infinity (check_finite_output, core/finite_output.h).

@@ -2,6 +2,7 @@
 #include "core/units.h"
 
 #include <cctype>
+#include <cmath>
 
 #include <stdexcept>
 
@@ -10,6 +11,7 @@ namespace framedyn::core {
 namespace {
 constexpr double kInch = 0.0254;                 // m, exact
 constexpr double kPoundForce = 4.4482216152605;  // N, exact by definition of lbf
+constexpr double kDegree = 3.14159265358979323846 / 180.0;  // rad
 }  // namespace
 
 std::vector<std::string> UnitSystem::known_names() { return {"in-lbf-s", "m-N-s", "SI", "mm-N-s"}; }
@@ -70,6 +72,19 @@ double UnitSystem::to_si_factor(Quantity q) const {
     case Quantity::angle: return 1.0;
     case Quantity::frequency: return 1.0;
     case Quantity::time: return 1.0;
+    case Quantity::angle_degrees: return kDegree;
+    case Quantity::acceleration: return L;
+    case Quantity::angular_velocity: return 1.0;
+    case Quantity::angular_acceleration: return 1.0;
+    case Quantity::mass_normalised_translation: return L / std::sqrt(M);
+    case Quantity::mass_normalised_rotation: return 1.0 / std::sqrt(M);
+    case Quantity::participation_translation: return std::sqrt(M);
+    case Quantity::participation_rotation: return std::sqrt(M) * L;
+    case Quantity::per_frequency: return 1.0;
+    case Quantity::translation_psd: return L * L;
+    case Quantity::rotation_psd: return 1.0;
+    case Quantity::stress_psd: return (F / (L * L)) * (F / (L * L));
+    case Quantity::percent: return 0.01;
   }
   return 1.0;
 }
@@ -97,8 +112,36 @@ std::string UnitSystem::label(Quantity q) const {
     case Quantity::angle: return "rad";
     case Quantity::frequency: return "Hz";
     case Quantity::time: return "s";
+    case Quantity::angle_degrees: return "deg";
+    case Quantity::acceleration: return L + "/s^2";
+    case Quantity::angular_velocity: return "rad/s";
+    case Quantity::angular_acceleration: return "rad/s^2";
+    case Quantity::mass_normalised_translation: return L + "/sqrt(" + mass_label_ + ")";
+    case Quantity::mass_normalised_rotation: return "rad/sqrt(" + mass_label_ + ")";
+    case Quantity::participation_translation: return "sqrt(" + mass_label_ + ")";
+    case Quantity::participation_rotation: return "sqrt(" + mass_label_ + "*" + L + "^2)";
+    case Quantity::per_frequency: return "1/Hz";
+    case Quantity::translation_psd: return L + "^2/Hz";
+    case Quantity::rotation_psd: return "rad^2/Hz";
+    case Quantity::stress_psd: return stress_label_ + "^2/Hz";
+    case Quantity::percent: return "%";
   }
   return "?";
+}
+
+const std::vector<Quantity>& all_quantities() {
+  static const std::vector<Quantity> all = [] {
+    std::vector<Quantity> q;
+    for (int i = 0; i <= static_cast<int>(Quantity::percent); ++i) q.push_back(static_cast<Quantity>(i));
+    return q;
+  }();
+  return all;
+}
+
+std::vector<std::string> UnitSystem::labels() const {
+  std::vector<std::string> out;
+  for (Quantity q : all_quantities()) out.push_back(label(q));
+  return out;
 }
 
 }  // namespace framedyn::core

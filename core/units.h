@@ -30,7 +30,24 @@ enum class Quantity {
   angle,                   // radian, same in every system
   frequency,               // hertz, same in every system
   time,
+  // Outputs' quantities (kept after the inputs' so that their numbering stays).
+  angle_degrees,           // degree (phases, plotted angles), same in every system
+  acceleration,            // length / time^2
+  angular_velocity,        // radian / time
+  angular_acceleration,    // radian / time^2
+  mass_normalised_translation,  // length / sqrt(mass): a mass-normalised mode shape's translation
+  mass_normalised_rotation,     // radian / sqrt(mass)
+  participation_translation,    // sqrt(mass): a modal participation factor in translation
+  participation_rotation,       // sqrt(mass) * length: in rotation (sqrt of rotary inertia)
+  per_frequency,                // 1/Hz: the spectral density of a dimensionless load factor
+  translation_psd,              // length^2 / Hz
+  rotation_psd,                 // radian^2 / Hz
+  stress_psd,                   // stress^2 / Hz
+  percent,                      // a relative change in %
 };
+
+// Every quantity, in the enum's order (the tables a test checks outputs against).
+const std::vector<Quantity>& all_quantities();
 
 class UnitSystem {
  public:
@@ -45,6 +62,8 @@ class UnitSystem {
   double to_si(double value, Quantity q) const { return value * to_si_factor(q); }
   double from_si(double value, Quantity q) const { return value / to_si_factor(q); }
   std::string label(Quantity q) const;
+  // Every label of this system, all_quantities()' order: what an output of it may carry as a unit.
+  std::vector<std::string> labels() const;
 
  private:
   std::string name_;

@@ -1,4 +1,4 @@
-// The frame transient study: read, run, write; see frame_study.h.
+// The frame transient study: read and run; see frame_study.h (report/frame_outputs writes it).
 #include "coupling/frame_study.h"
 
 #include <fmt/format.h>
@@ -12,14 +12,12 @@
 #include <tuple>
 #include <algorithm>
 
-#include "core/csv_writer.h"
 #include "core/error.h"
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
 #include "fem/quadratic_beam_element.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
-#include "fem/vtu_writer.h"
 
 namespace framedyn::coupling {
 
@@ -47,6 +45,8 @@ std::string set_names(const std::map<std::string, std::vector<int>>& sets, const
   return fmt::format(" (its {} sets: {})", kind, names);
 }
 
+}  // namespace
+
 const char* supports_name(FrameSupports s) {
   switch (s) {
     case FrameSupports::fixed_rear_end: return "fixed_rear_end";
@@ -64,6 +64,8 @@ const char* method_name(FrameMethod m) {
   }
   return "";
 }
+
+namespace {
 
 std::string json_number(double v) {
   if (!std::isfinite(v)) return "null";
@@ -420,325 +422,6 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
-
-void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q, const core::ResultsFolder& folder) {
-  const core::UnitSystem& u = q.units;
-  using core::Quantity;
-  const double lf = 1.0 / u.to_si_factor(Quantity::length), mf = 1.0 / u.to_si_factor(Quantity::moment),
-               sf = 1.0 / u.to_si_factor(Quantity::stress);
-  {
-    core::CsvTable t({"mode", core::column("frequency", "Hz"), "damping_ratio"});
-    for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
-      t.row().add(static_cast<int>(i + 1)).add(r.frequencies_hz(i));
-      if (i < r.response.damping_ratios.size()) t.add(r.response.damping_ratios(i));
-      else t.add(q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i)));
-    }
-    folder.write_text("frame_modes.csv", t.str());
-  }
-  // The parts the frame model carried, as an .inp fragment to include after the mesh (coupling/frame_parts.h).
-  if (!r.parts.empty()) folder.write_text("frame_parts.inp", frame_parts_inp(r.model, r.parts));
-  if (!r.rails.empty()) {
-    core::CsvTable t({"rail", "element", "station", core::column("X", u.label(Quantity::length)), core::column("Y", u.label(Quantity::length)),
-                      core::column("Z", u.label(Quantity::length)), core::column("max_bending_moment", u.label(Quantity::moment)),
-                      core::column("max_abs_Mz", u.label(Quantity::moment)), core::column("max_abs_My", u.label(Quantity::moment)),
-                      core::column("max_abs_normal_stress", u.label(Quantity::stress))});
-    for (const RailRecovery& rail : r.rails)
-      for (std::size_t k = 0; k < rail.station_points.size(); ++k) {
-        const Eigen::Index i = static_cast<Eigen::Index>(k);
-        t.row().add(rail.spec.name).add(rail.station_element_ids[k]).add(static_cast<int>(k % static_cast<std::size_t>(q.stations)))
-            .add(rail.station_points[k].x() * lf).add(rail.station_points[k].y() * lf).add(rail.station_points[k].z() * lf)
-            .add(rail.envelope_bending_moment(i) * mf).add(rail.envelope_mz(i) * mf).add(rail.envelope_my(i) * mf)
-            .add(rail.envelope_normal_stress(i) * sf);
-      }
-    folder.write_text("frame_rails_envelope.csv", t.str());
-  }
-  if (!r.rails.empty()) {
-    std::vector<std::string> h = {"time [s]"};
-    for (const RailRecovery& rail : r.rails) {
-      h.push_back(core::column(rail.spec.name + ".max_bending_moment", u.label(Quantity::moment)));
-      h.push_back(core::column(rail.spec.name + ".max_abs_normal_stress", u.label(Quantity::stress)));
-    }
-    core::CsvTable t(h);
-    for (Eigen::Index j = 0; j < r.response.times.size(); ++j) {
-      t.row().add(r.response.times(j));
-      for (const RailRecovery& rail : r.rails) t.add(rail.series_bending_moment(j) * mf).add(rail.series_normal_stress(j) * sf);
-    }
-    folder.write_text("frame_rails_series.csv", t.str());
-  }
-  // Section-force histories of the element sets that ask for them, one row per output time and station.
-  const double ff = 1.0 / u.to_si_factor(Quantity::force);
-  for (std::size_t k = 0; k < r.rails.size() && k < r.sections.size(); ++k) {
-    const SectionHistory& h = r.sections[k];
-    if (!q.rails[k].history) continue;
-    const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment);
-    core::CsvTable t({"time [s]", "element", "station", core::column("x", u.label(Quantity::length)), core::column("N", F), core::column("Vy", F),
-                      core::column("Vz", F), core::column("T", M), core::column("My", M), core::column("Mz", M),
-                      core::column("max_abs_normal_stress", u.label(Quantity::stress))});
-    const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
-    for (Eigen::Index j = 0; j < r.response.times.size(); ++j)
-      for (Eigen::Index s = 0; s < ns; ++s) {
-        const auto v = h.values.row(j * ns + s);
-        t.row().add(r.response.times(j)).add(h.element_ids[static_cast<std::size_t>(s)]).add(h.station_index[static_cast<std::size_t>(s)])
-            .add(h.station_x[static_cast<std::size_t>(s)] * lf).add(v(0) * ff).add(v(1) * ff).add(v(2) * ff).add(v(3) * mf).add(v(4) * mf)
-            .add(v(5) * mf).add(v(6) * sf);
-      }
-    folder.write_text("frame_sections_" + q.rails[k].name + ".csv", t.str());
-  }
-  // Nodal histories, one row per output time and node: displacement, velocity, acceleration per DOF.
-  for (const NodalHistory& h : r.nodal) {
-    const std::string L = u.label(Quantity::length);
-    std::vector<std::string> head = {"time [s]", "node"};
-    const char* names[6] = {"X", "Y", "Z", "RX", "RY", "RZ"};
-    const bool rates = h.velocity.size() > 0;
-    for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("U") + names[d], d < 3 ? L : "rad"));
-    if (rates) {
-      for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("V") + names[d], d < 3 ? L + "/s" : "rad/s"));
-      for (int d = 0; d < 6; ++d) head.push_back(core::column(std::string("A") + names[d], d < 3 ? L + "/s^2" : "rad/s^2"));
-    }
-    core::CsvTable t(head);
-    for (Eigen::Index j = 0; j < r.response.times.size(); ++j)
-      for (std::size_t n = 0; n < h.nodes.size(); ++n) {
-        t.row().add(r.response.times(j)).add(h.node_ids[n]);
-        const Eigen::Index row = fem::kDofsPerNode * static_cast<Eigen::Index>(n);
-        for (int d = 0; d < 6; ++d) t.add(h.displacement(row + d, j) * (d < 3 ? lf : 1.0));
-        if (rates) {
-          for (int d = 0; d < 6; ++d) t.add(h.velocity(row + d, j) * (d < 3 ? lf : 1.0));
-          for (int d = 0; d < 6; ++d) t.add(h.acceleration(row + d, j) * (d < 3 ? lf : 1.0));
-        }
-      }
-    folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
-  }
-  if (!q.pvd) return;
-  // ParaView time series: one VTU per output time, a PVD collection naming them.
-  const fem::FrameModel& m = r.model;
-  std::vector<fem::BeamGeometry> geometry;
-  for (const fem::BeamElement& b : m.beams) geometry.push_back(fem::beam_geometry(m, b));
-  // One VTU per output time, built and written on two threads (the files are
-  // independent, so the bytes do not depend on the order): writing ~1,000
-  // small files is most of a pipeline run's time.
-  const auto write_frame = [&](Eigen::Index j) {
-    const Eigen::VectorXd uj = r.response.displacement.col(j);
-    fem::VtuField disp{fmt::format("displacement [{}]", u.label(Quantity::length)), 3, {}};
-    fem::VtuField rot{"rotation [rad]", 3, {}};
-    for (std::size_t n = 0; n < m.nodes.size(); ++n)
-      for (int d = 0; d < 3; ++d) {
-        disp.values.push_back(uj(fem::kDofsPerNode * static_cast<Eigen::Index>(n) + d) * lf);
-        rot.values.push_back(uj(fem::kDofsPerNode * static_cast<Eigen::Index>(n) + 3 + d));
-      }
-    fem::VtuField stress{fmt::format("max_abs_normal_stress [{}]", u.label(Quantity::stress)), 1, {}};
-    fem::VtuField moment{fmt::format("max_bending_moment [{}]", u.label(Quantity::moment)), 1, {}};
-    fem::VtuField axial{fmt::format("axial_force_mid [{}]", u.label(Quantity::force)), 1, {}};
-    for (std::size_t e = 0; e < m.beams.size(); ++e) {
-      if (m.beams[e].is_quadratic()) {  // three-node beams (B32, B32R): stations by statics of their nodal forces
-        double smax = 0.0, mmax = 0.0;
-        for (const fem::StationResult& st : fem::quadratic_beam_stations(m, m.beams[e], uj, q.stations)) {
-          mmax = std::max(mmax, std::hypot(st.forces.my, st.forces.mz));
-          for (double v : st.fiber_stress) smax = std::max(smax, std::abs(v));
-        }
-        stress.values.push_back(smax * sf);
-        moment.values.push_back(mmax * mf);
-        axial.values.push_back(fem::quadratic_beam_stations(m, m.beams[e], uj, 3)[1].forces.n / u.to_si_factor(Quantity::force));
-        continue;
-      }
-      const fem::Vector12d f = fem::element_end_forces(geometry[e], m.beams[e], uj);
-      double smax = 0.0, mmax = 0.0;
-      for (int s = 0; s < q.stations; ++s) {
-        const fem::SectionForces sfc = fem::section_forces_at(f, geometry[e].data.length * s / (q.stations - 1));
-        mmax = std::max(mmax, std::hypot(sfc.my, sfc.mz));
-        for (double v : fem::fiber_stresses(geometry[e].data.section, sfc)) smax = std::max(smax, std::abs(v));
-      }
-      stress.values.push_back(smax * sf);
-      moment.values.push_back(mmax * mf);
-      axial.values.push_back(fem::section_forces_at(f, 0.5 * geometry[e].data.length).n / u.to_si_factor(Quantity::force));
-    }
-    folder.write_text(fmt::format("frame_response_{:05d}.vtu", j), fem::vtu_document(m, lf, {disp, rot}, {stress, moment, axial}));
-  };
-  const Eigen::Index frames = r.response.times.size();
-  std::exception_ptr failure;
-  std::thread second([&] {
-    try {
-      for (Eigen::Index j = 1; j < frames; j += 2) write_frame(j);
-    } catch (...) {
-      failure = std::current_exception();
-    }
-  });
-  try {
-    for (Eigen::Index j = 0; j < frames; j += 2) write_frame(j);
-  } catch (...) {
-    second.join();
-    throw;
-  }
-  second.join();
-  if (failure) std::rethrow_exception(failure);
-  std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
-  for (Eigen::Index j = 0; j < frames; ++j)
-    pvd += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"frame_response_{:05d}.vtu\"/>\n",
-                       core::format_number(r.response.times(j)), j);
-  pvd += "  </Collection>\n</VTKFile>\n";
-  folder.write_text("frame_response.pvd", pvd);
-}
-
-nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStudyRequest& q) {
-  using nlohmann::ordered_json;
-  const core::UnitSystem& u = q.units;
-  using core::Quantity;
-  const double lf = 1.0 / u.to_si_factor(Quantity::length);
-  // Every number as {value, unit}; strings (paths, names) escaped by nlohmann.
-  auto quantity = [](double value, const std::string& unit) { return ordered_json{{"value", value}, {"unit", unit}}; };
-  auto peak = [&](const RailPeak& p, double value, Quantity q_value, const std::string& rail) {
-    ordered_json j = quantity(u.from_si(value, q_value), u.label(q_value));
-    j["rail"] = rail;
-    j["element"] = p.element_id;
-    j["station"] = p.station;
-    j["x"] = quantity(p.point.x() * lf, u.label(Quantity::length));
-    j["time"] = quantity(p.time, "s");
-    return j;
-  };
-  ordered_json j;
-  j["model"] = "frame_transient";
-  j["mesh"] = q.mesh.string();
-  j["supports"] = supports_name(q.supports);
-  j["method"] = method_name(q.method);
-  // No wall time here: the same study must give byte-identical files (the console prints it).
-  j["nodes"] = r.model.nodes.size();
-  j["elements"] = r.model.beams.size();
-  j["output_times"] = r.response.times.size();
-  ordered_json modes = ordered_json::array();
-  for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
-    const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)
-                                                             : q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i));
-    modes.push_back({{"mode", i + 1}, {"frequency_hz", r.frequencies_hz(i)}, {"damping_ratio", zeta}});
-  }
-  j["modes"] = modes;
-  // The support used, and whether the real machine has it (see frame_warnings).
-  {
-    const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;
-    std::vector<int> supported;
-    for (const fem::Constraint& c : r.model.constraints) supported.push_back(r.model.nodes[static_cast<std::size_t>(c.node)].id);
-    std::sort(supported.begin(), supported.end());
-    supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
-    const char* meaning = q.supports == FrameSupports::free_free_inertia_relief
-                              ? "no supports: the loads are balanced by the frame model's rigid-body inertia (inertia relief)"
-                          : clamp ? "all six DOFs of the support nodes fixed: a support the moving machine does not have (thesis parity)"
-                                  : "the mesh's own *BOUNDARY (the supports the mesh's author gave)";
-    j["support"] = {{"kind", supports_name(q.supports)},
-                    {"node_sets", clamp ? q.support_sets : std::vector<std::string>{}},
-                    {"nodes", supported},
-                    {"artificial", clamp},
-                    {"meaning", meaning}};
-  }
-  // Every load applied to the frame model: where it is, how it reaches the mesh, its largest force and moment.
-  ordered_json points = ordered_json::array();
-  const std::string L = u.label(Quantity::length);
-  for (std::size_t p = 0; p < r.mapping.points.size(); ++p) {
-    const MappedLoadPoint& mp = r.mapping.points[p];
-    std::vector<int> ids;
-    for (int n : mp.nodes) ids.push_back(r.model.nodes[static_cast<std::size_t>(n)].id);
-    ordered_json jp = {{"name", mp.name},
-                       {"position", {{"value", {mp.location.x() * lf, mp.location.y() * lf, mp.location.z() * lf}}, {"unit", L}}},
-                       {"at_node", mp.at_node},
-                       {"node_set", mp.from_node_set},
-                       {"nodes", ids},
-                       {"spider_length", quantity(mp.spider_length * lf, L)}};
-    if (p < r.loads.points.size()) {
-      // Largest resultant |F| and |M| over the history, with when.
-      const Eigen::MatrixXd& v = r.loads.points[p].values;
-      Eigen::Index kf = 0, km = 0;
-      for (Eigen::Index k = 1; k < v.rows(); ++k) {
-        if (v.row(k).head<3>().norm() > v.row(kf).head<3>().norm()) kf = k;
-        if (v.row(k).tail<3>().norm() > v.row(km).tail<3>().norm()) km = k;
-      }
-      if (v.rows() > 0) {
-        jp["peak_force"] = {{"value", u.from_si(v.row(kf).head<3>().norm(), Quantity::force)}, {"unit", u.label(Quantity::force)},
-                            {"time", quantity(r.loads.times(kf), "s")}};
-        jp["peak_moment"] = {{"value", u.from_si(v.row(km).tail<3>().norm(), Quantity::moment)}, {"unit", u.label(Quantity::moment)},
-                             {"time", quantity(r.loads.times(km), "s")}};
-      }
-    }
-    points.push_back(jp);
-  }
-  j["load_points"] = points;
-  // The mesh's own loads, constant throughout (mesh_loads: constant).
-  if (r.constant_load.size() > 0) {
-    Eigen::Vector3d total = Eigen::Vector3d::Zero();
-    for (Eigen::Index n = 0; n + 5 < r.constant_load.size(); n += 6) total += r.constant_load.segment<3>(n);
-    const double ff = 1.0 / u.to_si_factor(Quantity::force);
-    j["constant_loads"] = {{"source", q.mesh.filename().string()},
-                           {"cload_entries", r.constant_cloads},
-                           {"dload_beams", r.constant_dloads},
-                           {"resultant_force", {{"value", {total.x() * ff + 0.0, total.y() * ff + 0.0, total.z() * ff + 0.0}}, {"unit", u.label(Quantity::force)}}},
-                           {"meaning", "the mesh's *CLOAD and *DLOAD act at every time, added to the load history; the response starts from the "
-                                       "static equilibrium under them and the history's first row"}};
-  }  // absent: no constant load acted (a null would read as a broken-down number)
-  if (r.free_rigid_motions > 0 && q.supports != FrameSupports::free_free_inertia_relief)
-    j["free_rigid_motions"] = {{"count", r.free_rigid_motions},
-                               {"meaning", "the supports leave these rigid motions free: the loads are relieved by their inertia and the "
-                                           "displacements are the elastic part (as for supports: none)"}};
-  // The parts on the frame model, its total mass and where the frame structure's mass came from (Eqs. 9.3, 9.4).
-  {
-    FramePartsSummary parts = frame_parts_summary(r.model, r.parts, r.mass, q.structure_part, q.structure_source, q.parts_carried_by_mesh, u);
-    j["parts"] = std::move(parts.parts);
-    j["total_mass"] = std::move(parts.total_mass);
-    j["structure"] = std::move(parts.structure);
-  }
-  ordered_json moments = ordered_json::object(), components = ordered_json::object();
-  const RailRecovery* worst = nullptr;
-  for (const RailRecovery& rail : r.rails) {
-    moments[rail.spec.name] = peak(rail.peak_bending_moment, rail.peak_bending_moment.value, Quantity::moment, rail.spec.name);
-    components[rail.spec.name] = {{"mz", peak(rail.peak_mz, rail.peak_mz.value, Quantity::moment, rail.spec.name)},
-                                  {"my", peak(rail.peak_my, rail.peak_my.value, Quantity::moment, rail.spec.name)}};
-    if (!worst || std::abs(rail.peak_normal_stress.value) > std::abs(worst->peak_normal_stress.value)) worst = &rail;
-  }
-  j["peak_bending_moment"] = moments;
-  j["peak_bending_moment_components"] = components;
-  if (worst) {
-    ordered_json stress = peak(worst->peak_normal_stress, worst->peak_normal_stress.value, Quantity::stress, worst->spec.name);
-    stress["fiber"] = worst->peak_normal_stress.fiber;
-    stress["bending_share"] = worst->bending_share;
-    j["peak_normal_stress"] = stress;
-    ordered_json rails = ordered_json::object();
-    for (const RailRecovery& rail : r.rails)
-      rails[rail.spec.name] = {{"peak_normal_stress", peak(rail.peak_normal_stress, rail.peak_normal_stress.value, Quantity::stress, rail.spec.name)},
-                               {"bending_share", rail.bending_share}};
-    j["rails"] = rails;
-  }
-  // Every output set by its name: where and when each quantity peaks.
-  auto set_peak = [&](const RailPeak& p, Quantity qty) {
-    return ordered_json{{"value", u.from_si(p.value, qty)}, {"unit", u.label(qty)}, {"element", p.element_id}, {"station", p.station},
-                        {"time", quantity(p.time, "s")}};
-  };
-  auto nodal_peak = [&](const NodalPeak& p, double factor, const std::string& unit) {
-    return ordered_json{{"value", p.value * factor}, {"unit", unit}, {"node", p.node_id}, {"dof", fem::dof_name(p.dof)}, {"time", quantity(p.time, "s")}};
-  };
-  ordered_json outputs = ordered_json::object();
-  for (const RailRecovery& rail : r.rails) {
-    const int stations = std::max(1, q.stations);
-    outputs[rail.spec.name] = {{"kind", "element_set"},
-                               {"set", rail.spec.element_set},
-                               {"elements", rail.station_element_ids.size() / static_cast<std::size_t>(stations)},
-                               {"peak_axial_force", set_peak(rail.peak_axial_force, Quantity::force)},
-                               {"peak_shear_y", set_peak(rail.peak_shear_y, Quantity::force)},
-                               {"peak_shear_z", set_peak(rail.peak_shear_z, Quantity::force)},
-                               {"peak_torque", set_peak(rail.peak_torque, Quantity::moment)},
-                               {"peak_my", set_peak(rail.peak_my, Quantity::moment)},
-                               {"peak_mz", set_peak(rail.peak_mz, Quantity::moment)},
-                               {"peak_bending_moment", set_peak(rail.peak_bending_moment, Quantity::moment)},
-                               {"peak_normal_stress", set_peak(rail.peak_normal_stress, Quantity::stress)}};
-  }
-  for (const NodalHistory& h : r.nodal) {
-    ordered_json o = {{"kind", "node_set"}, {"set", h.spec.node_set}, {"nodes", h.node_ids}};
-    o["peak_displacement"] = nodal_peak(h.peak_displacement, lf, L);
-    if (h.velocity.size() > 0) {
-      o["peak_velocity"] = nodal_peak(h.peak_velocity, lf, L + "/s");
-      o["peak_acceleration"] = nodal_peak(h.peak_acceleration, lf, L + "/s^2");
-    }
-    outputs[h.spec.name] = o;
-  }
-  j["outputs"] = outputs;
-  return j;
-}
-
-std::string frame_summary_json(const FrameStudyResults& r, const FrameStudyRequest& q) { return frame_summary(r, q).dump(2); }
 
 std::vector<core::Warning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
   std::vector<core::Warning> out;

@@ -27,9 +27,9 @@
 // keeps the trencher's: REAR_END clamped, outputs left_rail and right_rail
 // (element sets LEFT_RAIL, RIGHT_RAIL).
 //
-// Reading (read_frame_block / read_frame_study), running (run_frame_study)
-// and writing (write_frame_outputs, frame_summary_json) are separate, so a
-// study or a Python binding can run many cases without files.
+// Reading (read_frame_block / read_frame_study) and running (run_frame_study)
+// are here; writing (report/frame_outputs.h) is separate, so a study or a
+// Python binding can run many cases without files.
 #pragma once
 
 #include <filesystem>
@@ -149,17 +149,9 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 // failed solve.
 FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr);
 
-// frame_modes.csv; with element-set outputs frame_rails_envelope.csv,
-// frame_rails_series.csv and frame_sections_<name>.csv (history); per
-// node-set output frame_nodes_<name>.csv; with request.pvd,
-// frame_response.pvd + frame_response_NNNNN.vtu; in the study's units.
-void write_frame_outputs(const FrameStudyResults& results, const FrameStudyRequest& request, const core::ResultsFolder& folder);
-// The summary's "frame" object as JSON text: modes[i].frequency_hz,
-// peak_bending_moment.<element output> (left_rail / right_rail in the
-// pipeline), peak_normal_stress (value + unit, where and when),
-// bending_share, outputs.<name> (every output set's peaks).
-nlohmann::ordered_json frame_summary(const FrameStudyResults& results, const FrameStudyRequest& request);
-std::string frame_summary_json(const FrameStudyResults& results, const FrameStudyRequest& request);  // frame_summary(...).dump(2)
+// The names of the supports and the method as a study file spells them.
+const char* supports_name(FrameSupports supports);
+const char* method_name(FrameMethod method);
 
 // Artificial supports: the clamp of `clamped` and `fixed_rear_end` (the
 // thesis's SAPIV model), all six DOFs of the support_set nodes fixed, which a

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/csv_writer.h"
+#include "core/number_text.h"
 #include "core/error.h"
 
 namespace framedyn::coupling {
@@ -274,7 +274,7 @@ std::string format_load_history(const LoadHistory& h, const core::UnitSystem& un
   for (const LoadPointHistory& p : h.points)
     out += fmt::format("# point {} {} {} {}\n", p.name, core::format_number(p.location.x() / length),
                        core::format_number(p.location.y() / length), core::format_number(p.location.z() / length));
-  out += "time [s]";
+  out += "time [" + units.label(core::Quantity::time) + "]";
   for (const LoadPointHistory& p : h.points)
     for (int c = 0; c < 6; ++c) out += "," + p.name + "." + kLoadComponents[c] + " [" + units.label(component_quantity(c)) + "]";
   out += "\n";

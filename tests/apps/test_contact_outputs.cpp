@@ -67,7 +67,7 @@ struct StudyRun {
 StudyRun run_study(const TempDir& dir, const std::string& text) {
   std::ofstream(dir / "study.yaml") << text;
   StudyRun r;
-  r.result = framedyn::testing::framedyn(dir, "run study.yaml --out results -q");
+  r.result = framedyn::testing::framedyn(dir, "run study.yaml --out results");  // the default level: warnings on stderr (-q prints errors only)
   if (r.result.status != 0) throw std::runtime_error("framedyn failed: " + r.result.err);
   r.summary = Json::parse(read_file(dir / "results" / "summary.json"));
   r.response = read_file(dir / "results" / "response.csv");

@@ -561,6 +561,8 @@ std::vector<Row> rows() {
       {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
       cli_row("CLI-36", "static frame.inp --inertia-relief --out results -q", "command line: --inertia-relief"),
+      // ---- progress and verbosity (apps/progress.cpp, apps/command_line.cpp)
+      cli_row("CLI-38", "static frame.inp --out results -v -q", "command line: --quiet"),
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

@@ -41,8 +41,8 @@ class OffsetPlowingPipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new framedyn::testing::TempDir("framedyn_test_pipeline");
-    status_ = run("run " + (kSource / "examples" / "offset_plowing.yaml").string() + " -o " + (*dir_ / "out").string() + " -q",
-                  *dir_ / "run.log");
+    status_ = run("run " + (kSource / "examples" / "offset_plowing.yaml").string() + " -o " + (*dir_ / "out").string(),
+                  *dir_ / "run.log");  // the default level: the warnings on stderr (-q prints errors only)
     if (status_ == 0) summary_ = nlohmann::json::parse(slurp(*dir_ / "out" / "summary.json"));
   }
   static void TearDownTestSuite() {

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "core/plot.h"
+#include "report/plot.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -103,7 +103,7 @@ void run_and_check(const std::string& example, std::map<std::string, std::vector
 }
 
 TEST(Run3DFigures, ChainCentredAndOffsetDrawFigures22And23FromTheFrameLoads) {
-  if (!framedyn::core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
+  if (!framedyn::report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
   std::map<std::string, std::vector<double>> centred, offset;
   ASSERT_NO_FATAL_FAILURE(run_and_check("r100_chain_center.yaml", centred));
   ASSERT_NO_FATAL_FAILURE(run_and_check("r100_chain_offset.yaml", offset));
@@ -117,7 +117,7 @@ TEST(Run3DFigures, ChainCentredAndOffsetDrawFigures22And23FromTheFrameLoads) {
 }
 
 TEST(Run3DFigures, StraightAndOffsetPlowingDrawFigure24) {
-  if (!framedyn::core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
+  if (!framedyn::report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
   std::map<std::string, std::vector<double>> straight, offset;
   ASSERT_NO_FATAL_FAILURE(run_and_check("r100_plow_straight.yaml", straight));
   ASSERT_NO_FATAL_FAILURE(run_and_check("r100_plow_offset.yaml", offset));

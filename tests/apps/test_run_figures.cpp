@@ -1,5 +1,5 @@
 // `framedyn run --figures`: the response's time histories as PNG images next
-// to response.csv (apps/response_figures.cpp), the plow's forces (thesis
+// to response.csv (report/response_figures.cpp), the plow's forces (thesis
 // Figures 11 and 12) and blade motion; a machine without a chain draws no
 // chain force. Skipped only when gnuplot is absent (install-deps.sh installs it).
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/plot.h"
+#include "report/plot.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -33,7 +33,7 @@ int framedyn(const framedyn::testing::TempDir& dir, const std::string& args) {
 }
 
 TEST(RunFigures, PlowStudyGivesForceMagnitudeAngleAndBladeMotion) {
-  if (!framedyn::core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
+  if (!framedyn::report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
   framedyn::testing::TempDir dir("framedyn_test_run_figures");
   ASSERT_EQ(framedyn(dir, std::string("run '") + FRAMEDYN_SOURCE_DIR + "/examples/r100_plow_2d.yaml' --figures --out plow"), 0)
       << read_file(dir / "err.txt");
@@ -68,7 +68,7 @@ std::string chain_study_text() {
 }
 
 TEST(RunFigures, ChainStudyGivesTheChainForceAndNoPlowFigures) {
-  if (!framedyn::core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
+  if (!framedyn::report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
   framedyn::testing::TempDir dir("framedyn_test_run_figures");
   dir.write("chain.yaml", chain_study_text());
   ASSERT_EQ(framedyn(dir, "run chain.yaml --figures --out chain -q"), 0) << read_file(dir / "err.txt");

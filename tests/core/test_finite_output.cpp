@@ -13,11 +13,11 @@
 #include <limits>
 #include <string>
 
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
 #include "core/finite_output.h"
 #include "core/results_folder.h"
-#include "fem/vtu_writer.h"
+#include "report/vtu_writer.h"
 #include "tests/support/temp_dir.h"
 
 namespace framedyn {
@@ -44,7 +44,7 @@ void expect_contains(const std::string& message, const std::string& part) {
 }
 
 TEST(FiniteOutput, CsvNaNNamesFileRowColumnAndTheRowsFirstValue) {
-  core::CsvTable t({core::column("time", "s"), core::column("z_frame", "m"), core::column("theta_frame", "rad")});
+  report::CsvTable t({report::column("time", "s"), report::column("z_frame", "m"), report::column("theta_frame", "rad")});
   t.row().add(0.0).add(0.001).add(0.0);
   t.row().add(0.0005).add(0.002).add(kNaN);  // fmt writes "nan"
   const std::string m = refusal("out/response.csv", t.str());
@@ -54,7 +54,7 @@ TEST(FiniteOutput, CsvNaNNamesFileRowColumnAndTheRowsFirstValue) {
 }
 
 TEST(FiniteOutput, CsvInfinitiesOfBothSignsAndQuotedTextColumns) {
-  core::CsvTable t({"label", core::column("force", "N")});
+  report::CsvTable t({"label", report::column("force", "N")});
   t.row().add(std::string("a, quoted \"label\"")).add(-kInf);
   const std::string m = refusal("sweep.csv", t.str());
   expect_contains(m, "sweep.csv: row 1 (line 2), column \"force [N]\" (where label = a, quoted \"label\") is -infinite (\"-inf\")");
@@ -74,7 +74,7 @@ TEST(FiniteOutput, LoadHistoryCommentLinesAreNotTheHeader) {
 }
 
 TEST(FiniteOutput, FiniteFilesAndWordsThatContainInfOrNanPass) {
-  core::CsvTable t({"dominant", core::column("frequency", "Hz"), "note"});
+  report::CsvTable t({"dominant", report::column("frequency", "Hz"), "note"});
   t.row().add(std::string("infinite_plane")).add(1.5e-300).add(std::string("nano inference info Nancy"));
   t.row().add(std::string("z")).add(1e300).add(std::string("-"));
   EXPECT_EQ(refusal("modes.csv", t.str()), "");
@@ -85,14 +85,14 @@ TEST(FiniteOutput, FiniteFilesAndWordsThatContainInfOrNanPass) {
 TEST(FiniteOutput, VtuNamesTheDataArrayEntryAndComponent) {
   fem::FrameModel model;
   model.nodes = {{1, Eigen::Vector3d(0, 0, 0)}, {2, Eigen::Vector3d(1, 0, 0)}, {3, Eigen::Vector3d(2, 0, 0)}};
-  fem::VtuField displacement{"displacement", 3, {0, 0, 0, 0.1, 0.2, 0.3, 0.4, kInf, 0.6}};
-  const std::string m = refusal("series/frame_response_00012.vtu", fem::vtu_document(model, 1.0, {displacement}, {}));
+  report::VtuField displacement{"displacement", 3, {0, 0, 0, 0.1, 0.2, 0.3, 0.4, kInf, 0.6}};
+  const std::string m = refusal("series/frame_response_00012.vtu", report::vtu_document(model, 1.0, {displacement}, {}));
   std::printf("%s\n", m.c_str());
   expect_contains(m, "series/frame_response_00012.vtu: DataArray \"displacement\", entry 2, component 1 (both counted from 0; line ");
   expect_contains(m, "is infinite");
   // A non-finite node coordinate is in the Points array.
   model.nodes[1].position.y() = kNaN;
-  expect_contains(refusal("modes.vtu", fem::vtu_document(model, 1.0, {}, {})), "modes.vtu: DataArray \"Points\", entry 1, component 1 (both counted from 0;");
+  expect_contains(refusal("modes.vtu", report::vtu_document(model, 1.0, {}, {})), "modes.vtu: DataArray \"Points\", entry 1, component 1 (both counted from 0;");
 }
 
 TEST(FiniteOutput, JsonSummaryNullFromANaNNamesTheKeyPath) {
@@ -134,7 +134,7 @@ TEST(FiniteOutput, ResultsFolderWritesNothingAndLeavesEarlierResults) {
   try {
     core::ResultsFolder second(target);
     second.write_text("modes.csv", "mode,frequency [Hz]\n1,3.5\n");
-    core::CsvTable t({core::column("time", "s"), core::column("a_plow", "m/s^2")});
+    report::CsvTable t({report::column("time", "s"), report::column("a_plow", "m/s^2")});
     t.row().add(0.25).add(kNaN);
     second.write_text("response.csv", t.str());
     ADD_FAILURE() << "no NumericalError";

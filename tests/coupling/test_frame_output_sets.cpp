@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -137,7 +138,7 @@ TEST_F(CantileverStudy, StepTipLoadOscillatesAboutStaticDeflectionWithTwiceItsPe
   EXPECT_LE(peak, 2.0 * kStatic * (1.0 + 1e-4));
   EXPECT_GE(peak, (1.0 + share(1) * sinc - (1.0 - share(1))) * kStatic);
   // The summary names the peak's node, DOF and time.
-  const nlohmann::ordered_json summary = coupling::frame_summary(r, q);
+  const nlohmann::ordered_json summary = report::frame_summary(r, q);
   const nlohmann::ordered_json& out = summary["outputs"]["tip"];
   EXPECT_EQ(out["kind"], "node_set");
   EXPECT_EQ(out["set"], "TIP");
@@ -207,7 +208,7 @@ TEST_F(CantileverStudy, RootSectionForcesOfAStaticTipLoadArePAndPTimesL) {
   EXPECT_EQ(r.rails[0].peak_bending_moment.station, 0);
   // Written as frame_sections_root.csv, one row per time and station.
   core::ResultsFolder folder(dir / "out");
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder);
   folder.commit();
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "frame_sections_root.csv"));
 }
@@ -232,13 +233,13 @@ TEST_F(CantileverStudy, DirectMethodGivesTheTipDisplacementHistoryWithoutRates) 
   EXPECT_EQ(r.nodal[0].velocity.size(), 0);
   EXPECT_GT(r.nodal[0].peak_displacement.value, kStatic);  // a step response overshoots the static deflection
   core::ResultsFolder folder(dir / "out");
-  coupling::write_frame_outputs(r, q, folder);
+  report::write_frame_outputs(r, q, folder);
   folder.commit();
   std::ifstream in(dir / "out" / "frame_nodes_tip.csv");
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header, "time [s],node,UX [m],UY [m],UZ [m],URX [rad],URY [rad],URZ [rad]");
-  EXPECT_EQ(coupling::frame_summary_json(r, q).find("peak_velocity"), std::string::npos);
+  EXPECT_EQ(report::frame_summary_json(r, q).find("peak_velocity"), std::string::npos);
 }
 
 TEST_F(CantileverStudy, FreeFreeBeamHasTheClosedFormFirstElasticFrequency) {
@@ -333,14 +334,14 @@ TEST_F(CantileverUnderGravity, ZeroLoadHistoryStaysAtTheStaticDeflectionWL4Over8
   for (Eigen::Index j = 0; j < r.response.times.size(); ++j) worst = std::max(worst, std::abs(r.nodal[0].displacement(2, j) / static_gravity - 1.0));
   std::cout << "[ measured ] w L^4 / 8EI = " << static_gravity << " m; largest relative departure of the tip over 2 periods " << worst << "\n";
   EXPECT_LT(worst, 1e-9);
-  const nlohmann::ordered_json s = coupling::frame_summary(r, q);
+  const nlohmann::ordered_json s = report::frame_summary(r, q);
   EXPECT_EQ(s["constant_loads"]["dload_beams"], kElements);
   EXPECT_EQ(s["constant_loads"]["cload_entries"], 0);
   EXPECT_NEAR(s["constant_loads"]["resultant_force"]["value"][2].get<double>(), -w * kL, 1e-9 * w * kL);
   // mesh_loads: none ignores them: the tip does not move.
   const auto none = run(0.0, "  mesh_loads: none\n");
   EXPECT_EQ(none.nodal[0].displacement.cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_FALSE(coupling::frame_summary(none, q).contains("constant_loads"));
+  EXPECT_FALSE(report::frame_summary(none, q).contains("constant_loads"));
 }
 
 TEST_F(CantileverUnderGravity, StepLoadOscillatesAboutTheStaticDeflectionUnderGravityAndTheLoad) {

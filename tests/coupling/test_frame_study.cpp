@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -88,8 +89,8 @@ TEST(FrameStudy, FreeFreeInertiaReliefRunsAndWritesSummaryAndParaViewSeries) {
   EXPECT_EQ(r.frequencies_hz.size(), 20);
   EXPECT_GT(r.frequencies_hz(0), 1.0);     // rigid-body modes are not among the elastic ones
   core::ResultsFolder folder(dir / "out");
-  coupling::write_frame_outputs(r, q, folder);
-  const std::string json = coupling::frame_summary_json(r, q);
+  report::write_frame_outputs(r, q, folder);
+  const std::string json = report::frame_summary_json(r, q);
   folder.write_text("frame_summary.json", json);
   folder.commit();
   for (const char* f : {"frame_modes.csv", "frame_rails_envelope.csv", "frame_rails_series.csv", "frame_response.pvd",

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/plot.h"
+#include "report/plot.h"
 #include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
 #include "tests/support/temp_dir.h"
@@ -158,7 +158,7 @@ int framedyn(const testing::TempDir& dir, const std::string& args) {
 bool is_png(const fs::path& p) { return read_file(p).substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8); }
 
 TEST(SweepCommand, WritesTheTableTheSummaryAndTheFigures) {
-  if (!core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
+  if (!report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)";
   testing::TempDir dir("framedyn_test_sweep");
   ASSERT_EQ(framedyn(dir, "sweep '" + kPlowStudy + "' --parameter soil.damping --values 200,300 --out c5 --jobs 2"), 0)
       << read_file(dir / "err.txt");

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -76,7 +77,7 @@ TEST(SupportWarnings, CantileverPeakMomentAtTheClampIsWarnedAndTheSummaryNamesTh
   EXPECT_EQ(w[0].code, "peak_at_artificial_support");
   EXPECT_NE(w[0].message.find("beam: the peak normal stress"), std::string::npos) << w[0].message;
   EXPECT_NE(w[0].message.find("the clamp of ROOT (clamped), node 1"), std::string::npos) << w[0].message;
-  const auto j = nlohmann::json::parse(coupling::frame_summary_json(c.results, c.request));
+  const auto j = nlohmann::json::parse(report::frame_summary_json(c.results, c.request));
   EXPECT_EQ(j["support"]["kind"], "clamped");
   EXPECT_EQ(j["support"]["artificial"], true);
   EXPECT_EQ(j["support"]["nodes"], nlohmann::json::array({1}));
@@ -96,7 +97,7 @@ TEST(SupportWarnings, ProppedCantileverPeakUnderTheLoadAwayFromTheClampIsNotWarn
   const double a = 0.75, b = 0.25;
   EXPECT_NEAR(peak.value, 100.0 * a * a * (3 - a) * b / 2, 0.02 * 100.0 * a * a * (3 - a) * b / 2);  // R_B b, within the ramp's dynamic part
   EXPECT_TRUE(coupling::frame_warnings(c.results, c.request).empty());
-  const auto j = nlohmann::json::parse(coupling::frame_summary_json(c.results, c.request));
+  const auto j = nlohmann::json::parse(report::frame_summary_json(c.results, c.request));
   EXPECT_EQ(j["support"]["kind"], "clamped");
   EXPECT_EQ(j["support"]["nodes"], nlohmann::json::array({1, 9}));  // every supported node, the roller's too
 }
@@ -105,7 +106,7 @@ TEST(SupportWarnings, FreeFreeFrameHasNoSupportToWarnAbout) {
   const framedyn::testing::TempDir dir("framedyn_test_support_warnings");
   const Case c = run_case(dir, "", coupling::FrameSupports::free_free_inertia_relief, {}, ramp_at("END", 1.0));
   EXPECT_TRUE(coupling::frame_warnings(c.results, c.request).empty());
-  const auto j = nlohmann::json::parse(coupling::frame_summary_json(c.results, c.request));
+  const auto j = nlohmann::json::parse(report::frame_summary_json(c.results, c.request));
   EXPECT_EQ(j["support"]["kind"], "free_free_inertia_relief");
   EXPECT_EQ(j["support"]["artificial"], false);
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace framedyn::core {
+namespace framedyn::report {
 
 struct PlotSeries {
   std::string name;       // legend entry
@@ -52,4 +52,4 @@ void write_png(const LinePlot& plot, const std::filesystem::path& png, const std
 // Whether `gnuplot` can be run (it answers `--version`).
 bool gnuplot_available(const std::string& gnuplot = "gnuplot");
 
-}  // namespace framedyn::core
+}  // namespace framedyn::report

@@ -1,20 +1,15 @@
-// CSV writing with units in the headers.
-#include "core/csv_writer.h"
+// CSV writing with units in the headers; see csv_writer.h.
+#include "report/csv_writer.h"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace framedyn::core {
+namespace framedyn::report {
 
 std::string column(const std::string& name, const std::string& unit) {
   if (unit.empty() || unit == "1") return name;
   return name + " [" + unit + "]";
-}
-
-std::string format_number(double value) {
-  if (value == 0.0) return "0";  // also folds -0 into 0
-  return fmt::format("{:.10g}", value);
 }
 
 CsvTable::CsvTable(std::vector<std::string> headers) : headers_(std::move(headers)) {}
@@ -27,7 +22,7 @@ CsvTable& CsvTable::row() {
 
 CsvTable& CsvTable::add(double value) {
   if (rows_.empty()) row();
-  rows_.back().push_back(format_number(value));
+  rows_.back().push_back(core::format_number(value));
   return *this;
 }
 
@@ -63,4 +58,4 @@ std::string CsvTable::str() const {
   return out;
 }
 
-}  // namespace framedyn::core
+}  // namespace framedyn::report

@@ -9,9 +9,9 @@
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
-// Throws core::PlotError, before a long run, if gnuplot cannot be run.
+// Throws report::PlotError, before a long run, if gnuplot cannot be run.
 void require_gnuplot();
 
 // Writes the figures the response has into `folder` and returns their file
@@ -19,4 +19,4 @@ void require_gnuplot();
 std::vector<std::string> write_response_figures(const coupling::RigidStudy& study, const coupling::RigidResults& results,
                                                 const core::ResultsFolder& folder);
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
-namespace framedyn::core {
+#include "core/number_text.h"
+
+namespace framedyn::report {
 
 class CsvTable {
  public:
@@ -26,7 +28,7 @@ class CsvTable {
 
 // "name [unit]", or "name" when unit is "" or "1".
 std::string column(const std::string& name, const std::string& unit);
-// Text of a double for CSV and tables: 10 significant digits, -0 as 0.
-std::string format_number(double value);
+// Text of a double for CSV and tables (core/number_text.h).
+using core::format_number;
 
-}  // namespace framedyn::core
+}  // namespace framedyn::report

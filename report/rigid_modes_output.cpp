@@ -1,16 +1,17 @@
-// rigid.modes and rigid_modes.csv for every rigid-body study (apps/rigid_modes_output.h).
-#include "apps/rigid_modes_output.h"
+// rigid.modes and rigid_modes.csv for every rigid-body study (report/rigid_modes_output.h).
+#include "report/rigid_modes_output.h"
 
-#include "core/csv_writer.h"
+#include "core/units.h"
+#include "report/csv_writer.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 nlohmann::ordered_json write_rigid_modes(const std::vector<std::string>& coordinates, const std::vector<rigid::RigidMode>& modes,
                                          const core::ResultsFolder& folder) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  std::vector<std::string> header = {"mode", core::column("frequency", "Hz"), "dominant"};
+  std::vector<std::string> header = {"mode", report::column("frequency", core::UnitSystem::si().label(core::Quantity::frequency)), "dominant"};
   for (const std::string& c : coordinates) header.push_back("energy_share_" + c);
-  core::CsvTable csv(header);
+  report::CsvTable csv(header);
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const rigid::RigidMode& m = modes[i];
     nlohmann::ordered_json share;
@@ -23,4 +24,4 @@ nlohmann::ordered_json write_rigid_modes(const std::vector<std::string>& coordin
   return list;
 }
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

@@ -1,4 +1,4 @@
-// PNG line plots through gnuplot (core/plot.h): the image is a real PNG of the
+// PNG line plots through gnuplot (report/plot.h): the image is a real PNG of the
 // requested size, the same plot gives the same bytes, and bad plots or a
 // missing or failing gnuplot are clear errors. Tests that draw are skipped
 // only when gnuplot is absent (install-deps.sh installs gnuplot-nox).
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/plot.h"
+#include "report/plot.h"
 #include "tests/support/temp_dir.h"
 
 namespace framedyn {
@@ -34,8 +34,8 @@ std::uint32_t big_endian(const std::string& s, std::size_t at) {
 }
 
 // One period of a sine in 101 points, with a second series: a legend of two.
-core::LinePlot sine_plot() {
-  core::LinePlot p;
+report::LinePlot sine_plot() {
+  report::LinePlot p;
   p.title = "Shaker force, one cycle (operator's test)";  // a quote in a title must survive gnuplot's quoting
   p.x_label = "time";
   p.x_unit = "s";
@@ -43,7 +43,7 @@ core::LinePlot sine_plot() {
   p.y_unit = "lbf";
   p.width = 640;
   p.height = 400;
-  core::PlotSeries a{"horizontal_force", {}, {}}, b{"vertical force", {}, {}};
+  report::PlotSeries a{"horizontal_force", {}, {}}, b{"vertical force", {}, {}};
   for (int i = 0; i <= 100; ++i) {
     const double t = i / 1833.0;
     a.x.push_back(t);
@@ -56,13 +56,13 @@ core::LinePlot sine_plot() {
 }
 
 #define SKIP_WITHOUT_GNUPLOT() \
-  if (!core::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)"
+  if (!report::gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (install-deps.sh installs gnuplot-nox)"
 
 TEST(LinePlot, WritesAPngWithTheSignatureAndTheRequestedSize) {
   SKIP_WITHOUT_GNUPLOT();
   testing::TempDir dir("framedyn_test_plot");
   const fs::path png = dir / "sine.png";
-  core::write_png(sine_plot(), png);
+  report::write_png(sine_plot(), png);
   const std::string bytes = read_bytes(png);
   ASSERT_GT(bytes.size(), 33u);
   // PNG signature (ISO/IEC 15948, 5.2), then the IHDR chunk: length 13, type, width, height.
@@ -78,10 +78,10 @@ TEST(LinePlot, WritesAPngWithTheSignatureAndTheRequestedSize) {
 TEST(LinePlot, SamePlotTwiceGivesIdenticalBytes) {
   SKIP_WITHOUT_GNUPLOT();
   testing::TempDir dir("framedyn_test_plot");
-  core::LinePlot p = sine_plot();
+  report::LinePlot p = sine_plot();
   p.mark_points = true;
-  core::write_png(p, dir / "a.png");
-  core::write_png(p, dir / "b.png");
+  report::write_png(p, dir / "a.png");
+  report::write_png(p, dir / "b.png");
   EXPECT_EQ(read_bytes(dir / "a.png"), read_bytes(dir / "b.png"));
 }
 
@@ -89,19 +89,19 @@ TEST(LinePlot, SinglePointAndConstantSeriesAreDrawn) {
   // A sweep of one value, or a figure that does not change, is still a plot.
   SKIP_WITHOUT_GNUPLOT();
   testing::TempDir dir("framedyn_test_plot");
-  core::LinePlot p = sine_plot();
+  report::LinePlot p = sine_plot();
   p.mark_points = true;
   p.series = {{"one value", {300.0}, {0.84}}, {"constant", {100, 200, 300}, {1.0, 1.0, 1.0}}};
-  core::write_png(p, dir / "one.png");
+  report::write_png(p, dir / "one.png");
   EXPECT_EQ(read_bytes(dir / "one.png").substr(1, 3), "PNG");
 }
 
 TEST(LinePlot, BadPlotsAreInputErrorsBeforeGnuplotRuns) {
   testing::TempDir dir("framedyn_test_plot");
   const fs::path png = dir / "bad.png";
-  const auto expect_error = [&](const core::LinePlot& p, const std::string& expected) {
+  const auto expect_error = [&](const report::LinePlot& p, const std::string& expected) {
     try {
-      core::write_png(p, png, "/nonexistent/gnuplot");  // never reached for a bad plot
+      report::write_png(p, png, "/nonexistent/gnuplot");  // never reached for a bad plot
       ADD_FAILURE() << "no error for: " << expected;
     } catch (const core::InputError& e) {
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
@@ -109,44 +109,44 @@ TEST(LinePlot, BadPlotsAreInputErrorsBeforeGnuplotRuns) {
     }
     EXPECT_FALSE(fs::exists(png));
   };
-  core::LinePlot none = sine_plot();
+  report::LinePlot none = sine_plot();
   none.series.clear();
   expect_error(none, "at least one series");
-  core::LinePlot empty = sine_plot();
+  report::LinePlot empty = sine_plot();
   empty.series[1].x.clear();
   empty.series[1].y.clear();
   expect_error(empty, "an empty series");
-  core::LinePlot ragged = sine_plot();
+  report::LinePlot ragged = sine_plot();
   ragged.series[0].y.pop_back();
   expect_error(ragged, "101 x and 100 y values");
-  core::LinePlot nan = sine_plot();
+  report::LinePlot nan = sine_plot();
   nan.series[0].y[7] = std::numeric_limits<double>::quiet_NaN();
   expect_error(nan, "finite values in series 'horizontal_force'");
-  core::LinePlot tiny = sine_plot();
+  report::LinePlot tiny = sine_plot();
   tiny.width = 10;
   expect_error(tiny, "100 to 10000 pixels");
-  core::LinePlot log = sine_plot();  // a sine crosses zero: no logarithmic y axis for it
+  report::LinePlot log = sine_plot();  // a sine crosses zero: no logarithmic y axis for it
   log.log_y = true;
   expect_error(log, "positive values on a logarithmic axis in series 'horizontal_force'");
 }
 
 TEST(LinePlot, LogarithmicAxesForSpectra) {
-  core::LinePlot p = sine_plot();
-  EXPECT_EQ(core::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png").find("logscale"), std::string::npos);
+  report::LinePlot p = sine_plot();
+  EXPECT_EQ(report::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png").find("logscale"), std::string::npos);
   p.log_x = true;
   p.log_y = true;
-  const std::string s = core::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png");
+  const std::string s = report::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png");
   EXPECT_NE(s.find("set logscale x"), std::string::npos) << s;
   EXPECT_NE(s.find("set logscale y"), std::string::npos) << s;
 }
 
 TEST(LinePlot, MissingGnuplotIsAClearError) {
   testing::TempDir dir("framedyn_test_plot");
-  EXPECT_FALSE(core::gnuplot_available("/nonexistent/gnuplot"));
+  EXPECT_FALSE(report::gnuplot_available("/nonexistent/gnuplot"));
   try {
-    core::write_png(sine_plot(), dir / "x.png", "/nonexistent/gnuplot");
+    report::write_png(sine_plot(), dir / "x.png", "/nonexistent/gnuplot");
     FAIL() << "no error without gnuplot";
-  } catch (const core::PlotError& e) {
+  } catch (const report::PlotError& e) {
     EXPECT_NE(std::string(e.what()).find("gnuplot-nox"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "x.png"));
@@ -156,15 +156,15 @@ TEST(LinePlot, FailingGnuplotIsAClearError) {
   // `false` stands in for a gnuplot that rejects the script: exit status 1, no image.
   testing::TempDir dir("framedyn_test_plot");
   try {
-    core::write_png(sine_plot(), dir / "x.png", "false");
+    report::write_png(sine_plot(), dir / "x.png", "false");
     FAIL() << "no error from a failing gnuplot";
-  } catch (const core::PlotError& e) {
+  } catch (const report::PlotError& e) {
     EXPECT_NE(std::string(e.what()).find("exit status 1"), std::string::npos) << e.what();
   }
 }
 
 TEST(LinePlot, ScriptLabelsBothAxesWithUnitsAndEveryLegend) {
-  const std::string s = core::gnuplot_script(sine_plot(), "/tmp/d.csv", "/tmp/p.png");
+  const std::string s = report::gnuplot_script(sine_plot(), "/tmp/d.csv", "/tmp/p.png");
   EXPECT_NE(s.find("set xlabel 'time [s]'"), std::string::npos) << s;
   EXPECT_NE(s.find("set ylabel 'force [lbf]'"), std::string::npos) << s;
   EXPECT_NE(s.find("set title 'Shaker force, one cycle (operator''s test)'"), std::string::npos) << s;

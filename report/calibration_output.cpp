@@ -1,13 +1,13 @@
 // summary.json's rigid.calibration and calibration.csv; see calibration_output.h.
-#include "apps/calibration_output.h"
+#include "report/calibration_output.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 namespace {
 
@@ -23,7 +23,7 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
                                          const core::ResultsFolder& folder) {
   nlohmann::ordered_json cal;
   nlohmann::ordered_json params = nlohmann::ordered_json::array();
-  core::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial [1]", "lower", "upper", "at_bound", "uncertainty"});
+  report::CsvTable pcsv({"parameter", "unit", "initial", "fitted", "fitted/initial [1]", "lower", "upper", "at_bound", "uncertainty"});
   for (std::size_t i = 0; i < c.fitted.size(); ++i) {
     const std::string& name = request.parameters[i];
     const core::Quantity q = quantity(name);
@@ -104,4 +104,4 @@ void print_calibration(const coupling::CalibrationRequest& request, const rigid:
                c.upper[i] / c.initial[i], c.at_bound[i] ? "  AT BOUND" : "");
 }
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

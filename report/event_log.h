@@ -9,8 +9,8 @@
 #include "core/units.h"
 #include "rigid/time_integration.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 std::string event_text(const rigid::Trajectory::Event& event, const core::UnitSystem& units);
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

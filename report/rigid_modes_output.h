@@ -11,10 +11,10 @@
 #include "core/results_folder.h"
 #include "rigid/rigid_modes.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 // Writes rigid_modes.csv into `folder` and returns the JSON array of the modes.
 nlohmann::ordered_json write_rigid_modes(const std::vector<std::string>& coordinates, const std::vector<rigid::RigidMode>& modes,
                                          const core::ResultsFolder& folder);
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

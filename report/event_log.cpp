@@ -1,9 +1,9 @@
 // Event texts in the study's units; see event_log.h.
-#include "apps/event_log.h"
+#include "report/event_log.h"
 
 #include <fmt/format.h>
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 std::string event_text(const rigid::Trajectory::Event& event, const core::UnitSystem& units) {
   if (event.length_name.empty()) return event.what;
@@ -11,4 +11,4 @@ std::string event_text(const rigid::Trajectory::Event& event, const core::UnitSy
                      units.label(core::Quantity::length));
 }
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

@@ -1,5 +1,5 @@
 // PNG line plots through gnuplot; see plot.h.
-#include "core/plot.h"
+#include "report/plot.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -17,13 +17,21 @@
 #include <sstream>
 #include <system_error>
 
-#include "core/csv_writer.h"
+#include "report/csv_writer.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 
 extern char** environ;
 
-namespace framedyn::core {
+namespace framedyn::report {
+
+using core::InputError;
+using core::InputLocation;
+using core::hold_output_gate;
+using core::register_temporary;
+using core::unregister_temporary;
+using core::register_child;
+using core::unregister_child;
 
 namespace fs = std::filesystem;
 
@@ -244,4 +252,4 @@ bool gnuplot_available(const std::string& gnuplot) {
   }
 }
 
-}  // namespace framedyn::core
+}  // namespace framedyn::report

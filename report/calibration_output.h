@@ -16,7 +16,7 @@
 #include "coupling/rigid_study.h"
 #include "rigid/calibration.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 // Writes calibration.csv into `folder` and returns the JSON object.
 nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& result,
@@ -25,4 +25,4 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
 
 void print_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& result);
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

@@ -11,7 +11,7 @@
 
 #include "fem/frame_model.h"
 
-namespace framedyn::fem {
+namespace framedyn::report {
 
 struct VtuField {
   std::string name;             // e.g. "mode_01_translation [in]"
@@ -20,7 +20,7 @@ struct VtuField {
 };
 
 // `length_scale` turns SI coordinates into output units (1 / metres per unit).
-std::string vtu_document(const FrameModel& model, double length_scale, const std::vector<VtuField>& point_fields,
+std::string vtu_document(const fem::FrameModel& model, double length_scale, const std::vector<VtuField>& point_fields,
                          const std::vector<VtuField>& cell_fields);
 
-}  // namespace framedyn::fem
+}  // namespace framedyn::report

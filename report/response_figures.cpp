@@ -1,13 +1,13 @@
 // Response figures for `framedyn run --figures`; see response_figures.h.
-#include "apps/response_figures.h"
+#include "report/response_figures.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/plot.h"
+#include "report/plot.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 namespace {
 
@@ -56,35 +56,35 @@ void add_frame_figures(const coupling::RigidStudy& study, const coupling::RigidR
                                     {"frame_shear_resultant.png", "shear resultant SRZ", 14, 19, &sr.srz, Quantity::force},
                                     {"frame_bending_resultant.png", "bending resultant SRMY", 15, 20, &sr.srmy, Quantity::moment}};
   for (const Along& a : along) {
-    core::LinePlot plot;
+    report::LinePlot plot;
     plot.title = std::string(a.what) + " along the frame (thesis Figure " + std::to_string(plow ? a.figure_plow : a.figure_chain) + ")";
     plot.x_label = "X, rearward from the front axle";
     plot.x_unit = u.label(Quantity::length);
     plot.y_label = a.what;
     plot.y_unit = u.label(a.q);
     for (std::size_t i : instants) {
-      core::PlotSeries ps{"t = " + std::to_string(time[i]).substr(0, 6) + " s", x, {}};
+      report::PlotSeries ps{"t = " + std::to_string(time[i]).substr(0, 6) + " s", x, {}};
       for (double v : (*a.values)[i]) ps.y.push_back(u.from_si(v, a.q));
       plot.series.push_back(std::move(ps));
     }
-    core::write_png(plot, folder.path_of(a.file));
+    report::write_png(plot, folder.path_of(a.file));
     written.push_back(a.file);
   }
   if (!r.rail_top_stress.empty()) {
     std::size_t k = 0;
     for (std::size_t j = 0; j < sr.output_x.size(); ++j)
       if (std::abs(sr.output_x[j] - 0.9144) < std::abs(sr.output_x[k] - 0.9144)) k = j;  // 36 in, midway between the axles
-    core::LinePlot plot;
+    report::LinePlot plot;
     plot.title = std::string("Rail top-fiber stress at X = ") + std::to_string(u.from_si(sr.output_x[k], Quantity::length)).substr(0, 5) + " " +
                  u.label(Quantity::length) + " (thesis Figure " + (plow ? "16" : "21") + ")";
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = "normal stress at the top of one rail";
     plot.y_unit = u.label(Quantity::stress);
-    core::PlotSeries ps{"top fiber, tension positive", time, {}};
+    report::PlotSeries ps{"top fiber, tension positive", time, {}};
     for (const auto& row : r.rail_top_stress) ps.y.push_back(u.from_si(row[k], Quantity::stress));
     plot.series.push_back(std::move(ps));
-    core::write_png(plot, folder.path_of("rail_stress_x36.png"));
+    report::write_png(plot, folder.path_of("rail_stress_x36.png"));
     written.push_back("rail_stress_x36.png");
   }
 }
@@ -92,8 +92,8 @@ void add_frame_figures(const coupling::RigidStudy& study, const coupling::RigidR
 }  // namespace
 
 void require_gnuplot() {
-  if (!core::gnuplot_available())
-    throw core::PlotError("--figures needs gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run");
+  if (!report::gnuplot_available())
+    throw report::PlotError("--figures needs gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run");
 }
 
 std::vector<std::string> write_response_figures(const coupling::RigidStudy& study, const coupling::RigidResults& r, const core::ResultsFolder& folder) {
@@ -112,22 +112,22 @@ std::vector<std::string> write_response_figures(const coupling::RigidStudy& stud
     const coupling::Series* s = find_series(r, f.series);
     if (f.attachment != study.machine.attachment) continue;
     if (!s || s->values.size() != time.size() || time.empty()) continue;
-    core::LinePlot plot;
+    report::LinePlot plot;
     plot.title = f.title + ": " + study.name;
     plot.x_label = "time";
-    plot.x_unit = "s";
+    plot.x_unit = u.label(Quantity::time);
     plot.y_label = f.y_label;
     // The angle series is in degrees already (dimensionless in the results).
-    plot.y_unit = s->quantity == Quantity::dimensionless ? "deg" : u.label(s->quantity);
-    core::PlotSeries ps{f.legend, time, {}};
+    plot.y_unit = u.label(s->quantity == Quantity::dimensionless ? Quantity::angle_degrees : s->quantity);
+    report::PlotSeries ps{f.legend, time, {}};
     ps.y.reserve(s->values.size());
     for (double v : s->values) ps.y.push_back(u.from_si(v, s->quantity));
     plot.series.push_back(std::move(ps));
-    core::write_png(plot, folder.path_of(f.file));
+    report::write_png(plot, folder.path_of(f.file));
     written.push_back(f.file);
   }
   if (r.resultants) add_frame_figures(study, r, folder, written);
   return written;
 }
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

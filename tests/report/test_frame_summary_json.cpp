@@ -1,4 +1,4 @@
-// The frame summary (coupling::frame_summary, summary.json's "frame") is
+// The frame summary (report::frame_summary, summary.json's "frame") is
 // valid JSON whatever its strings hold: a mesh path, load-point and rail names
 // with a tab, a line break, a quote, a backslash and every other control
 // character parse back with nlohmann and read back exactly as given (issue 14,
@@ -10,6 +10,7 @@
 #include <string>
 
 #include "coupling/frame_study.h"
+#include "report/frame_outputs.h"
 
 namespace {
 
@@ -43,7 +44,7 @@ TEST(FrameSummaryJson, ControlCharactersInEveryStringParseBackUnchanged) {
   rail.peak_normal_stress.point = Eigen::Vector3d(0.254, 0, 0);
   r.rails.push_back(rail);
 
-  const std::string text = coupling::frame_summary(r, q).dump(2);
+  const std::string text = report::frame_summary(r, q).dump(2);
   nlohmann::json j;
   ASSERT_NO_THROW(j = nlohmann::json::parse(text)) << text;
   EXPECT_EQ(j["mesh"].get<std::string>(), q.mesh.string());

@@ -1,0 +1,123 @@
+// The outputs of `framedyn modes`; see modes_outputs.h.
+#include "report/modes_outputs.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "report/csv_writer.h"
+#include "report/vtu_writer.h"
+
+namespace framedyn::report {
+
+namespace {
+const char* kDirections[6] = {"x", "y", "z", "rx", "ry", "rz"};
+}  // namespace
+
+void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r, const ModesRun& run, const core::ResultsFolder& folder) {
+  using core::Quantity;
+  const core::UnitSystem& u = model.units;
+  const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
+  const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);
+  auto eff_in_units = [&](const fem::Vector6d& v, int d) { return v(d) * (d < 3 ? mass_f : rot_f); };
+  // Effective masses as fractions of the model's total mass (Eq. 7.5).
+  auto fraction = [&](const fem::Vector6d& v, int d) { return r.total_mass(d) > 0 ? v(d) / r.total_mass(d) : 0.0; };
+
+  // summary.json
+  nlohmann::ordered_json j;
+  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "modes"}};
+  j["input"] = {{"mesh", run.mesh_path}, {"units", u.name()}};
+  nlohmann::ordered_json frame;
+  frame["nodes"] = model.nodes.size();
+  frame["beam_elements"] = model.beams.size();
+  frame["dofs"] = model.dof_count();
+  frame["free_dofs"] = r.free_dofs;
+  frame["mass_formulation"] = run.lumped ? "lumped" : "consistent";
+  // Masses (docs/theory/fem.md Eqs. 7.4, 7.5): the whole model's, supported
+  // DOFs included; the part the free DOFs carry, per direction.
+  frame["total_mass"] = {{"value", r.total_mass(0) * mass_f}, {"unit", u.label(Quantity::mass)}};
+  frame["total_rotary_inertia"] = {{"x", r.total_mass(3) * rot_f}, {"y", r.total_mass(4) * rot_f}, {"z", r.total_mass(5) * rot_f},
+                                   {"unit", u.label(Quantity::rotary_inertia)}, {"about", "reference_point"}};
+  nlohmann::ordered_json free_mass;
+  for (int d = 0; d < 6; ++d) free_mass[kDirections[d]] = eff_in_units(r.free_mass, d);
+  frame["free_dof_mass"] = free_mass;
+  frame["reference_point"] = {{"value", {0.0, 0.0, 0.0}}, {"unit", u.label(Quantity::length)}};
+  frame["effective_mass_unit"] = {{"translation", u.label(Quantity::mass)}, {"rotation", u.label(Quantity::rotary_inertia)}};
+  frame["participation_factor_unit"] = {{"translation", u.label(Quantity::participation_translation)},
+                                        {"rotation", u.label(Quantity::participation_rotation)}};
+  frame["rigid_body_modes_expected"] = r.rigid_body_modes_expected;
+  frame["parts"] = r.parts;
+  frame["sturm_check"] = {{"certified", r.certified}, {"eigenvalues_below", r.sturm_count}, {"below_hz", r.sturm_shift_hz},
+                          {"lanczos_runs", r.lanczos_runs}};
+  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  fem::Vector6d sum = fem::Vector6d::Zero();
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const fem::Mode& m = r.modes[i];
+    nlohmann::ordered_json jm;
+    jm["mode"] = i + 1;
+    jm["frequency_hz"] = m.frequency_hz;
+    jm["rigid_body"] = m.rigid_body;
+    nlohmann::ordered_json eff, frac;
+    for (int d = 0; d < 6; ++d) {
+      eff[kDirections[d]] = eff_in_units(m.effective_mass, d);
+      frac[kDirections[d]] = fraction(m.effective_mass, d);
+    }
+    sum += m.effective_mass;
+    nlohmann::ordered_json gamma;
+    for (int d = 0; d < 6; ++d) gamma[kDirections[d]] = m.participation(d) * std::sqrt(d < 3 ? mass_f : rot_f);
+    jm["participation_factor"] = gamma;
+    jm["effective_mass"] = eff;
+    jm["effective_mass_fraction"] = frac;
+    modes.push_back(jm);
+  }
+  frame["modes"] = modes;
+  nlohmann::ordered_json cumulative;
+  for (int d = 0; d < 6; ++d) cumulative[kDirections[d]] = fraction(sum, d);
+  frame["effective_mass_fraction_sum"] = cumulative;
+  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD, Sturm-count certified"}, {"shift_hz", -run.shift_hz},
+                     {"restarts", r.iterations}, {"operator_solves", r.operator_solves}};
+  j["frame"] = frame;
+  folder.write_text("summary.json", j.dump(2) + "\n");
+
+  // modes.csv
+  std::vector<std::string> headers = {"mode", report::column("frequency", u.label(Quantity::frequency)), "rigid_body"};
+  for (int d = 0; d < 6; ++d)
+    headers.push_back(report::column(std::string("effective_mass_") + kDirections[d], d < 3 ? u.label(Quantity::mass) : u.label(Quantity::rotary_inertia)));
+  for (int d = 0; d < 6; ++d) headers.push_back(std::string("effective_mass_fraction_") + kDirections[d]);
+  report::CsvTable table(headers);
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const fem::Mode& m = r.modes[i];
+    table.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(std::string(m.rigid_body ? "yes" : "no"));
+    for (int d = 0; d < 6; ++d) table.add(eff_in_units(m.effective_mass, d));
+    for (int d = 0; d < 6; ++d) table.add(fraction(m.effective_mass, d));
+  }
+  folder.write_text("modes.csv", table.str());
+
+  // mode_shapes.csv: mass-normalised, in the input's units.
+  const double sqrt_m = std::sqrt(u.to_si_factor(Quantity::mass));
+  const double tr_f = sqrt_m / u.to_si_factor(Quantity::length);
+  const std::string tr_unit = u.label(Quantity::mass_normalised_translation);
+  const std::string rot_unit = u.label(Quantity::mass_normalised_rotation);
+  report::CsvTable shapes({"mode", "node", report::column("ux", tr_unit), report::column("uy", tr_unit), report::column("uz", tr_unit),
+                         report::column("rx", rot_unit), report::column("ry", rot_unit), report::column("rz", rot_unit)});
+  std::vector<report::VtuField> fields;
+  for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) {
+    double max_translation = 0.0;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+      max_translation = std::max(max_translation, r.shapes.col(i).segment<3>(static_cast<Eigen::Index>(6 * n)).norm());
+    report::VtuField f{fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz), 3, {}};
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+      const auto s = r.shapes.col(i).segment<6>(static_cast<Eigen::Index>(6 * n));
+      shapes.row().add(static_cast<int>(i + 1)).add(model.nodes[n].id);
+      for (int d = 0; d < 6; ++d) shapes.add(s(d) * (d < 3 ? tr_f : sqrt_m));
+      for (int d = 0; d < 3; ++d) f.values.push_back(max_translation > 0 ? s(d) / max_translation : 0.0);
+    }
+    fields.push_back(std::move(f));
+  }
+  folder.write_text("mode_shapes.csv", shapes.str());
+  folder.write_text("modes.vtu", report::vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), fields, {}));
+}
+
+}  // namespace framedyn::report
