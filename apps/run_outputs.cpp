@@ -37,6 +37,9 @@ nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateMode
     for (const rigid::RigidMode& m : s.modes) f.push_back(m.frequency_hz);
     j[s.state] = {{"label", s.label}, {"frequencies_hz", f}};
   }
+  return j;
+}
+
 namespace {
 
 // {start_up: {value, unit, time_s}, steady: {value, unit, time_s}}, a part

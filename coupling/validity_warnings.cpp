@@ -31,15 +31,12 @@ std::string law_of(const std::string& part) {
 
 }  // namespace
 
-bool is_angle_coordinate(const std::string& name) {
-  return name.rfind("theta", 0) == 0 || name == "psi" || name == "eta" || name == "alpha";
-}
-
 LargestRotation largest_body_rotation(const rigid::Multibody& model, const rigid::Trajectory& tr) {
   // Candidates: the bodies' rotations |R_b q|, then the angle coordinates
   // (psi turns the plow linkage's massless arms, which are no bodies).
   const std::vector<rigid::Body>& bodies = model.bodies();
   const std::vector<std::string>& names = model.coordinate_names();
+  const std::vector<core::Quantity>& quantities = model.coordinate_quantities();  // which coordinates are angles
   std::vector<std::string> what;
   std::vector<int> coordinate;  // -1 for a body
   for (const rigid::Body& b : bodies) {
@@ -47,7 +44,7 @@ LargestRotation largest_body_rotation(const rigid::Multibody& model, const rigid
     coordinate.push_back(-1);
   }
   for (std::size_t c = 0; c < names.size(); ++c)
-    if (is_angle_coordinate(names[c])) {
+    if (quantities[c] == core::Quantity::angle) {
       what.push_back("coordinate " + names[c]);
       coordinate.push_back(static_cast<int>(c));
     }

@@ -117,7 +117,7 @@ TEST(ContactOutputs, OneSidedContactsNeverPullAndTransmitNothingExactlyWhileLost
   EXPECT_GT(zero, 0.1);  // the bounce tire is off the ground for a good part of the run (37 %)
   EXPECT_DOUBLE_EQ(r.summary["rigid"]["contacts"]["bounce_tire"]["lift_off_fraction"].get<double>(), zero);
   // No contact pulls, so no contact_in_tension (the run warns of other things:
-  // steady operation not reached, docs/validation.md §5.3).
+  // steady operation not reached, docs/validation.md P1.4).
   ASSERT_TRUE(r.summary.contains("warnings"));
   for (const Json& w : r.summary["warnings"]) EXPECT_NE(w["code"], "contact_in_tension") << w.dump();
   EXPECT_EQ(r.result.err.find("[contact_in_tension]"), std::string::npos);

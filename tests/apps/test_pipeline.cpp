@@ -104,7 +104,7 @@ TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned)
   EXPECT_EQ(summary_["frame"]["support"]["artificial"], true);
   EXPECT_EQ(summary_["frame"]["support"]["nodes"], nlohmann::json::array({22, 44, 51}));
   EXPECT_EQ(summary_["frame"]["peak_normal_stress"]["x"]["value"], 80);
-  // After the vehicle's own warnings (steady_not_reached: docs/validation.md §5.3), the frame's.
+  // After the vehicle's own warnings (steady_not_reached: docs/validation.md P1.4), the frame's.
   ASSERT_FALSE(summary_["warnings"].empty());
   bool at_support = false;
   for (const nlohmann::json& w : summary_["warnings"]) at_support = at_support || w["code"] == "peak_at_artificial_support";

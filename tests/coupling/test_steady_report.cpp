@@ -1,6 +1,6 @@
 // Steady operation and validity warnings as a vehicle run reports them
 // (coupling/steady_report.h): on the shipped 2-D plow, which climbs out of the
-// cut and never settles (docs/validation.md §5.3), and the shipped digging
+// cut and never settles (docs/validation.md P1.4), and the shipped digging
 // chain, whose soil law chatters after its start-up (§6.4).
 #include <gtest/gtest.h>
 

@@ -19,7 +19,7 @@ double figure(const core::Warning& w, const std::string& name) {
 
 // Two bodies pitching with theta (the second twice as much) on a tiny assembly.
 rigid::Multibody pitching_bodies(double second_ratio) {
-  rigid::Multibody mb({"z", "theta"});
+  rigid::Multibody mb({"z", "theta"}, {core::Quantity::length, core::Quantity::angle});
   for (const auto& [name, ratio] : {std::pair<std::string, double>{"frame", 1.0}, {"plow", second_ratio}}) {
     rigid::Body b;
     b.name = name;
@@ -65,7 +65,7 @@ TEST(ValidityWarnings, RotationBeyondOnePercentLinearisationErrorWarnsWithItsErr
 
 TEST(ValidityWarnings, AngleCoordinateOfAMasslessLinkageCountsAsARotation) {
   // psi turns the plow linkage's arms, which are no bodies: its own angle is the rotation.
-  rigid::Multibody mb({"z", "psi"});
+  rigid::Multibody mb({"z", "psi"}, {core::Quantity::length, core::Quantity::angle});
   rigid::Body b;
   b.name = "plow";
   b.mass = 1.0;

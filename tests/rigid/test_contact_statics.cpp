@@ -42,7 +42,9 @@ struct Platform {
   rigid::Multibody model;
   std::vector<rigid::ContactDefinition> contacts;
   Platform(double mass, const Eigen::Vector2d& cg, bool with_roll = true)
-      : roll(with_roll), model(with_roll ? std::vector<std::string>{"z", "theta_x", "theta_y"} : std::vector<std::string>{"z", "theta_y"}) {
+      : roll(with_roll), model(with_roll ? std::vector<std::string>{"z", "theta_x", "theta_y"} : std::vector<std::string>{"z", "theta_y"},
+              with_roll ? std::vector<core::Quantity>{core::Quantity::length, core::Quantity::angle, core::Quantity::angle}
+                        : std::vector<core::Quantity>{core::Quantity::length, core::Quantity::angle}) {
     rigid::Body b;
     b.name = "platform";
     b.mass = mass;

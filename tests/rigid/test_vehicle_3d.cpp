@@ -732,7 +732,7 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithSoilSwitchingAgrees) {
 TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
   // One-sided contacts (Eq. 4a.3): with twice its shaker force the shipped
   // plow's bounce tire lifts off (with the shipped force it carries 2,794 lbf
-  // at rest and never less than 746: docs/validation.md 5.3); in 3-D it is
+  // at rest and never less than 746: docs/validation.md P1.3); in 3-D it is
   // the same element, and the 2-D axle's two tires are the 3-D axle's left
   // and right tires, which lift off together or not at all in the symmetric model.
   const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::unilateral, 2.0);
