@@ -97,7 +97,7 @@ TEST(ContactOutputs, BilateralBounceTirePullsForTheReportedFractionAndIsWarnedAb
 
 // The shipped plow, started from its own statics (docs/theory/rigid.md section 11),
 // keeps its bounce tire on the ground (least force 746 lbf of 2,794 at rest:
-// docs/validation.md 5.3); with twice the shaker force it lifts the plow off it.
+// docs/validation.md P1.3); with twice the shaker force it lifts the plow off it.
 std::string with_shaker_force(std::string study, const std::string& force) {
   const std::string key = "force: 26530,";
   const auto at = study.find(key);

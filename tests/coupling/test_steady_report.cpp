@@ -81,7 +81,7 @@ TEST(SteadyReport, ShippedChainChattersInASlidingRegimeAndHasNoShakerToJudgeStea
   EXPECT_EQ(find(r.warnings, "steady_not_reached"), nullptr);
   const core::Warning* w = find(r.warnings, "switching_law_chattering");
   ASSERT_NE(w, nullptr);
-  // Counts depend on the integrator's tolerance (validation §6.4): bounds, not equalities.
+  // Counts depend on the integrator's tolerance (validation V12.4): bounds, not equalities.
   EXPECT_GT(figure(*w, "switches"), 1000);
   EXPECT_LT(figure(*w, "median_interval"), 1e-4);
   EXPECT_EQ(figure(*w, "period"), 0.1);
