@@ -32,8 +32,6 @@ std::string FrequencyDomainOptions::out_dir() const {
   return out.empty() ? std::filesystem::path(mesh.path).stem().string() + "_" + suffix_ : out;
 }
 
-int node_id_of_dof(const fem::FrameModel& model, int global_dof) { return model.nodes[static_cast<std::size_t>(global_dof / fem::kDofsPerNode)].id; }
-
 FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& opt, const std::string& analysis, Progress& progress) {
   FrequencyDomainFrame f;
   progress.stage("reading " + opt.mesh.path);

@@ -49,7 +49,4 @@ struct FrequencyDomainFrame {
 // more --modes than the frame has free DOFs.
 FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& options, const std::string& analysis, Progress& progress);
 
-// "node 12" style labels: the mesh's node number of a global DOF and its direction name.
-int node_id_of_dof(const fem::FrameModel& model, int global_dof);
-
 }  // namespace framedyn::apps
