@@ -10,6 +10,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/frequency_domain_input.h"
 #include "report/response_figures.h"
@@ -28,6 +29,7 @@ using core::Quantity;
 struct RandomCommandOptions {
   FrequencyDomainOptions common;
   std::string psd;
+  bool inertia_relief = false;
 };
 
 report::LinePlot spectrum_plot(const std::string& title, const std::string& y_label, const std::string& y_unit, const std::string& name,
@@ -53,12 +55,19 @@ int run_random(const RandomCommandOptions& opt) {
   const FrequencyDomainFrame f = prepare_frequency_domain(opt.common, "random", progress);
   const fem::FrameModel& model = *f.model;
   const core::UnitSystem& u = model.units;
-  if (f.frame->free_free())
+  const int free_rigid = f.frame->rigid_count();
+  if (free_rigid > 0 && !opt.inertia_relief)
     throw core::InputError({opt.common.mesh.path, 0, "*BOUNDARY"},
-                           "supports (a frame free to move as a rigid body has no stationary random response)", "none");
+                           "supports that hold the frame against every rigid motion (a frame free to move as a rigid body has no "
+                           "stationary random response; ask for --inertia-relief for the elastic response relative to its rigid motion)",
+                           f.frame->free_free() ? std::string("none")
+                                                : fmt::format("supports that leave {} rigid motion{} free", free_rigid, free_rigid == 1 ? "" : "s"));
+  if (opt.inertia_relief && free_rigid == 0)
+    throw nothing_to_relieve(opt.common.mesh.path);
 
   fem::RandomOptions ro;
   ro.response = f.response;
+  ro.inertia_relief = opt.inertia_relief;
   for (int n : f.output_nodes)
     for (int d = 0; d < fem::kDofsPerNode; ++d) ro.output_dofs.push_back(fem::kDofsPerNode * n + d);
   progress.stage(fmt::format("random response over {} to {} Hz ({} modes)", psd.lowest(), psd.highest(), f.basis.eigenvalues.size()));
@@ -135,6 +144,9 @@ int run_random(const RandomCommandOptions& opt) {
   h["mode_count"] = r.modes_used;
   h["highest_mode_frequency_hz"] = f.modes.modes.back().frequency_hz;
   h["static_correction"] = r.static_correction;
+  h["displacements"] = r.inertia_relief ? "elastic part (inertia relief: relative to the rigid motion that takes the loads' unbalanced part)"
+                                        : "total";
+  if (r.inertia_relief) h["free_rigid_motions"] = r.rigid_body_modes;
   h["grid_points"] = r.frequencies_hz.size();
   h["max_displacement_psd"] = {{"value", r.max_displacement_psd * lf * lf}, {"unit", L2}, {"node", psd_node}, {"dof", psd_dof}, {"frequency_hz", psd_f}};
   if (has_stress)
@@ -156,6 +168,8 @@ int run_random(const RandomCommandOptions& opt) {
   fmt::print("load PSD {} from {:.6g} to {:.6g} Hz (load factor RMS {:.6g}); {} modes up to {:.6g} Hz, zeta = {}, static correction {}; {} grid points\n",
              opt.psd, psd.lowest(), psd.highest(), std::sqrt(load_ms), r.modes_used, f.modes.modes.back().frequency_hz, opt.common.damping_ratio,
              r.static_correction ? "on" : "off", r.frequencies_hz.size());
+  if (r.inertia_relief)
+    fmt::print("inertia relief: {} free rigid motions take the loads' unbalanced part; displacements are the elastic part\n", r.rigid_body_modes);
   fmt::print("max displacement RMS {:.6g} {} at node {} ({})\n", r.max_displacement_rms * lf, L, rms_node, rms_dof);
   fmt::print("max displacement PSD {:.6g} {} at node {} ({}) at {:.6g} Hz\n", r.max_displacement_psd * lf * lf, L2, psd_node, psd_dof, psd_f);
   if (has_stress) {
@@ -172,6 +186,9 @@ void add_random_command(CLI::App& app, std::function<int()>& run) {
   auto opt = std::make_shared<RandomCommandOptions>();
   CLI::App* cmd = app.add_subcommand("random", "Random response (PSD and RMS) to the mesh's loads scaled by a load PSD");
   cmd->add_option("--psd", opt->psd, "Load PSD, CSV with columns 'frequency [Hz],psd [1/Hz]' (one-sided; interpolated log-log)")->required();
+  cmd->add_flag("--inertia-relief", opt->inertia_relief,
+                "A frame free to move rigidly: the elastic response relative to its rigid motion, the loads' unbalanced part taken by "
+                "that motion's inertia");
   opt->common.add_to(*cmd, "random");
   cmd->callback([opt, &run]() { run = [opt]() { return run_random(*opt); }; });
 }
