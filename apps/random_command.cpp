@@ -4,7 +4,8 @@
 // (fem/random_response.h). Writes DIR/summary.json, DIR/response_psd.csv
 // (PSD of every DOF of the output nodes over the integration grid),
 // DIR/rms.csv (RMS of every DOF of the output nodes), response_psd.png and
-// stress_psd.png.
+// stress_psd.png. `--inertia-relief`: a frame free to move rigidly, its
+// elastic response relative to the rigid motion (fem::RandomOptions).
 #include <fmt/format.h>
 
 #include <cmath>

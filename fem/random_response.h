@@ -5,7 +5,9 @@
 // (modal_frequency_response.h), and RMS values sigma_y^2 = integral of S_y
 // over the PSD's band, by the trapezoidal rule on a frequency grid refined
 // around every mode (the half-power band of a mode is 2 zeta f_j wide).
-// Theory: docs/theory/fem.md, "Random response", Eqs. (S.1)-(S.5).
+// A frame free to move rigidly has no stationary response; with inertia
+// relief its elastic part relative to the rigid motion is computed instead.
+// Theory: docs/theory/fem.md, "Random response", Eqs. (S.1)-(S.7).
 #pragma once
 
 #include <Eigen/Dense>
