@@ -26,6 +26,13 @@ std::string help_of(const CLI::App* command) {
 
 core::InputLocation command_line(const std::string& option) { return {"command line", 0, option}; }
 
+core::InputError nothing_to_relieve(const std::string& mesh_path) {
+  return core::InputError(command_line("--inertia-relief"),
+                          "a frame whose supports leave rigid motions free (inertia relief takes the loads' unbalanced part by those motions' "
+                          "accelerations)",
+                          mesh_path + ", held against every rigid motion by its supports");
+}
+
 CLI::Validator number_check(const std::string& expected, const std::function<bool(double)>& ok, bool integer) {
   return CLI::Validator(
       [expected, ok, integer](std::string& input) {

@@ -22,6 +22,10 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
 // "command line: --modes: expected ..., found ...".
 core::InputLocation command_line(const std::string& option);
 
+// `--inertia-relief` asked for a frame (mesh `mesh_path`) its supports hold
+// against every rigid motion: nothing to relieve (static, random).
+core::InputError nothing_to_relieve(const std::string& mesh_path);
+
 // A check of a numeric option whose failure reads "expected EXPECTED, found
 // 'VALUE'" (CLI11's own range checks print "Value 0 not in range 1 to
 // 100000", and 2.2e-308 for "positive"); `integer` refuses "2.5" too.

@@ -5,10 +5,12 @@
 // report/frequency_response_outputs (DIR/summary.json, DIR/response_psd.csv:
 // PSD of every DOF of the output nodes over the integration grid, DIR/rms.csv:
 // RMS of every DOF of the output nodes, response_psd.png, stress_psd.png) and
-// prints the peaks.
+// prints the peaks. `--inertia-relief`: a frame free to move rigidly, its
+// elastic response relative to the rigid motion (fem::RandomOptions).
 #include <fmt/format.h>
 
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/frequency_domain_input.h"
 #include "report/response_figures.h"
@@ -26,6 +28,7 @@ using core::Quantity;
 struct RandomCommandOptions {
   FrequencyDomainOptions common;
   std::string psd;
+  bool inertia_relief = false;
 };
 
 int run_random(const RandomCommandOptions& opt) {
@@ -35,12 +38,19 @@ int run_random(const RandomCommandOptions& opt) {
   const FrequencyDomainFrame f = prepare_frequency_domain(opt.common, "random", progress);
   const fem::FrameModel& model = *f.model;
   const core::UnitSystem& u = model.units;
-  if (f.frame->free_free())
+  const int free_rigid = f.frame->rigid_count();
+  if (free_rigid > 0 && !opt.inertia_relief)
     throw core::InputError({opt.common.mesh.path, 0, "*BOUNDARY"},
-                           "supports (a frame free to move as a rigid body has no stationary random response)", "none");
+                           "supports that hold the frame against every rigid motion (a frame free to move as a rigid body has no "
+                           "stationary random response; ask for --inertia-relief for the elastic response relative to its rigid motion)",
+                           f.frame->free_free() ? std::string("none")
+                                                : fmt::format("supports that leave {} rigid motion{} free", free_rigid, free_rigid == 1 ? "" : "s"));
+  if (opt.inertia_relief && free_rigid == 0)
+    throw nothing_to_relieve(opt.common.mesh.path);
 
   fem::RandomOptions ro;
   ro.response = f.response;
+  ro.inertia_relief = opt.inertia_relief;
   for (int n : f.output_nodes)
     for (int d = 0; d < fem::kDofsPerNode; ++d) ro.output_dofs.push_back(fem::kDofsPerNode * n + d);
   progress.stage(fmt::format("random response over {} to {} Hz ({} modes)", psd.lowest(), psd.highest(), f.basis.eigenvalues.size()));
@@ -67,6 +77,8 @@ int run_random(const RandomCommandOptions& opt) {
   fmt::print("load PSD {} from {:.6g} to {:.6g} Hz (load factor RMS {:.6g}); {} modes up to {:.6g} Hz, zeta = {}, static correction {}; {} grid points\n",
              opt.psd, psd.lowest(), psd.highest(), p.load_factor_rms, r.modes_used, f.modes.modes.back().frequency_hz, opt.common.damping_ratio,
              r.static_correction ? "on" : "off", r.frequencies_hz.size());
+  if (r.inertia_relief)
+    fmt::print("inertia relief: {} free rigid motions take the loads' unbalanced part; displacements are the elastic part\n", r.rigid_body_modes);
   fmt::print("max displacement RMS {:.6g} {} at node {} ({})\n", r.max_displacement_rms * lf, L, p.rms_node, p.rms_dof);
   fmt::print("max displacement PSD {:.6g} {} at node {} ({}) at {:.6g} Hz\n", r.max_displacement_psd * lf * lf, L2, p.psd_node, p.psd_dof, p.psd_frequency_hz);
   if (p.has_stress) {
@@ -83,6 +95,9 @@ void add_random_command(CLI::App& app, std::function<int()>& run) {
   auto opt = std::make_shared<RandomCommandOptions>();
   CLI::App* cmd = app.add_subcommand("random", "Random response (PSD and RMS) to the mesh's loads scaled by a load PSD");
   cmd->add_option("--psd", opt->psd, "Load PSD, CSV with columns 'frequency [Hz],psd [1/Hz]' (one-sided; interpolated log-log)")->required();
+  cmd->add_flag("--inertia-relief", opt->inertia_relief,
+                "A frame free to move rigidly: the elastic response relative to its rigid motion, the loads' unbalanced part taken by "
+                "that motion's inertia");
   opt->common.add_to(*cmd, "random");
   cmd->callback([opt, &run]() { run = [opt]() { return run_random(*opt); }; });
 }

@@ -54,10 +54,7 @@ int run_static(const StaticOptions& opt) {
                            e.what());
   }
   if (opt.inertia_relief && r.free_rigid_motions == 0)
-    throw core::InputError({"command line", 0, "--inertia-relief"},
-                           "a frame whose supports leave rigid motions free (inertia relief takes the loads' unbalanced part by those motions' "
-                           "accelerations)",
-                           opt.mesh.path + ", held against every rigid motion by its supports");
+    throw nothing_to_relieve(opt.mesh.path);
   progress.stage("recovering section forces");
   const std::vector<fem::StationResult> stations = fem::recover_stations(model, r.displacement, opt.stations);
 

@@ -49,6 +49,7 @@ ModalFrequencyResponse modal_frequency_response(const FrameDynamics& frame, cons
                          : options.damping.coefficient(elastic++, std::sqrt(std::max(lambda, 0.0)));
     r.modal_forces(j) = basis.shapes.col(j).dot(f);
     r.shapes.col(j) = to_all_dofs(frame, basis.shapes.col(j));
+    r.rigid_body.push_back(rigid);
     if (rigid) ++r.rigid_body_modes;
   }
 
@@ -61,6 +62,28 @@ ModalFrequencyResponse modal_frequency_response(const FrameDynamics& frame, cons
       if (!basis.rigid_body[static_cast<std::size_t>(j)]) u -= basis.shapes.col(j) * (r.modal_forces(j) / r.eigenvalues(j));
     r.residual = to_all_dofs(frame, u);
   }
+  return r;
+}
+
+ModalFrequencyResponse elastic_part(const ModalFrequencyResponse& response) {
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index j = 0; j < response.mode_count(); ++j)
+    if (!response.rigid_body[static_cast<std::size_t>(j)]) keep.push_back(j);
+  ModalFrequencyResponse r = response;
+  const Eigen::Index n = static_cast<Eigen::Index>(keep.size());
+  r.eigenvalues.resize(n);
+  r.damping.resize(n);
+  r.modal_forces.resize(n);
+  r.shapes.resize(response.shapes.rows(), n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index j = keep[static_cast<std::size_t>(k)];
+    r.eigenvalues(k) = response.eigenvalues(j);
+    r.damping(k) = response.damping(j);
+    r.modal_forces(k) = response.modal_forces(j);
+    r.shapes.col(k) = response.shapes.col(j);
+  }
+  r.rigid_body.assign(static_cast<std::size_t>(n), false);
+  r.rigid_body_modes = 0;
   return r;
 }
 

@@ -50,6 +50,7 @@ struct ModalFrequencyResponse {
   Eigen::VectorXd residual;      // r of Eq. (H.4) on all DOFs (zero without the static correction)
   bool static_correction = false;
   int rigid_body_modes = 0;
+  std::vector<bool> rigid_body;  // per mode used: a rigid-body mode
 
   int mode_count() const { return static_cast<int>(eigenvalues.size()); }
   // q(omega) of Eq. (H.3); omega in rad/s, > 0 when there are rigid-body modes.
@@ -62,6 +63,11 @@ struct ModalFrequencyResponse {
 // std::invalid_argument for a load of the wrong size or a basis with no mode.
 ModalFrequencyResponse modal_frequency_response(const FrameDynamics& frame, const ModalBasis& basis, const Eigen::VectorXd& load,
                                                 const FrequencyResponseOptions& options);
+
+// The response without the rigid-body modes' terms: the elastic part
+// u_e = u - R R^T M u of Eq. (H.2) (inertia relief, Eq. S.6). The residual is
+// kept: it is already the relieved one (Eq. H.4, G of the relieved load).
+ModalFrequencyResponse elastic_part(const ModalFrequencyResponse& response);
 
 // Outputs linear in the displacement: row k is y_k = (Y_modal q + y_residual)_k.
 struct LinearOutputs {

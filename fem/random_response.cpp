@@ -77,17 +77,24 @@ RandomResult random_response(const FrameDynamics& frame, const ModalBasis& basis
   check_load_psd(psd, "load PSD");
   for (int g : options.output_dofs)
     if (g < 0 || g >= model.dof_count()) throw std::invalid_argument(fmt::format("output DOF {} outside the model's {} DOFs", g, model.dof_count()));
-  const ModalFrequencyResponse response = modal_frequency_response(frame, basis, load, options.response);
-  if (response.rigid_body_modes > 0)
+  if (options.inertia_relief && frame.rigid_count() == 0)
+    throw std::invalid_argument(
+        "inertia relief needs a frame whose supports leave rigid motions free; this one is held against every rigid motion");
+  const ModalFrequencyResponse full = modal_frequency_response(frame, basis, load, options.response);
+  if (full.rigid_body_modes > 0 && !options.inertia_relief)
     throw std::invalid_argument(
         "a frame that is free to move as a rigid body has no stationary random response (its rigid-body motion "
-        "under a random load grows without bound): support it");
+        "under a random load grows without bound): support it, or ask for inertia relief (the elastic part)");
+  // Inertia relief (Eq. S.6): the rigid-body modes' terms left out; the residual is the relieved one already.
+  const ModalFrequencyResponse response = options.inertia_relief ? elastic_part(full) : full;
 
   RandomResult r;
   r.frequencies_hz = random_response_grid(psd, response, options);
   r.output_dofs = options.output_dofs;
   r.modes_used = response.mode_count();
   r.static_correction = response.static_correction;
+  r.rigid_body_modes = full.rigid_body_modes;
+  r.inertia_relief = options.inertia_relief;
   const Eigen::Index nf = static_cast<Eigen::Index>(r.frequencies_hz.size());
   for (double f : r.frequencies_hz) r.load_psd.push_back(psd.at(f));
   const std::vector<double> w = trapezoid_weights(r.frequencies_hz);

@@ -5,7 +5,9 @@
 // (modal_frequency_response.h), and RMS values sigma_y^2 = integral of S_y
 // over the PSD's band, by the trapezoidal rule on a frequency grid refined
 // around every mode (the half-power band of a mode is 2 zeta f_j wide).
-// Theory: docs/theory/fem.md, "Random response", Eqs. (S.1)-(S.5).
+// A frame free to move rigidly has no stationary response; with inertia
+// relief its elastic part relative to the rigid motion is computed instead.
+// Theory: docs/theory/fem.md, "Random response", Eqs. (S.1)-(S.7).
 #pragma once
 
 #include <Eigen/Dense>
@@ -22,6 +24,10 @@ struct RandomOptions {
   std::vector<int> output_dofs;  // global DOFs whose response PSD is kept at every grid frequency
   int points_per_decade = 100;   // base log-spaced grid over the band
   double mode_step = 0.03;       // refinement around each mode: the step in s of Eq. (S.5)
+  // A frame free to move rigidly (free-free or partially supported): the
+  // elastic response relative to its rigid motion, the loads' unbalanced part
+  // taken by that motion's inertia (Eq. S.6). Without it such a frame is refused.
+  bool inertia_relief = false;
 };
 
 struct RandomResult {
@@ -48,8 +54,9 @@ struct RandomResult {
   FiberPoint max_stress_rms_point;
 
   int modes_used = 0;
-  int rigid_body_modes = 0;
+  int rigid_body_modes = 0;             // of the basis used; left out of the response with inertia relief
   bool static_correction = false;
+  bool inertia_relief = false;          // displacements, PSDs and RMS values are the elastic part (Eq. S.6)
 };
 
 // The integration grid: the PSD's rows, a log-spaced grid and, for each
@@ -59,8 +66,10 @@ struct RandomResult {
 // |H|^2 falls like 1/(f - f_j)^2; all clipped to the band.
 std::vector<double> random_response_grid(const LoadPsd& psd, const ModalFrequencyResponse& response, const RandomOptions& options);
 
-// Throws std::invalid_argument for an output DOF out of range, or a
-// free-free frame (its rigid-body modes have no finite mean square).
+// Throws std::invalid_argument for an output DOF out of range, a frame free
+// to move rigidly without options.inertia_relief (its rigid-body modes have no
+// finite mean square), or options.inertia_relief on a frame its supports hold
+// against every rigid motion (nothing to relieve).
 RandomResult random_response(const FrameDynamics& frame, const ModalBasis& basis, const Eigen::VectorXd& load, const LoadPsd& psd,
                              const RandomOptions& options);
 

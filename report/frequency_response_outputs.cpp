@@ -222,6 +222,9 @@ std::vector<std::string> write_random_results(const fem::FrameModel& model, cons
   h["mode_count"] = r.modes_used;
   h["highest_mode_frequency_hz"] = modes.modes.back().frequency_hz;
   h["static_correction"] = r.static_correction;
+  h["displacements"] = r.inertia_relief ? "elastic part (inertia relief: relative to the rigid motion that takes the loads' unbalanced part)"
+                                        : "total";
+  if (r.inertia_relief) h["free_rigid_motions"] = r.rigid_body_modes;
   h["grid_points"] = r.frequencies_hz.size();
   h["max_displacement_psd"] = {{"value", r.max_displacement_psd * lf * lf}, {"unit", L2}, {"node", peaks.psd_node}, {"dof", peaks.psd_dof},
                                {"frequency_hz", peaks.psd_frequency_hz}};

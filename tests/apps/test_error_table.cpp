@@ -561,6 +561,11 @@ std::vector<Row> rows() {
       {"CLI-32", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3: psd [1/Hz]", true},
       cli_row("CLI-36", "static frame.inp --inertia-relief --out results -q", "command line: --inertia-relief"),
+      // ---- random response of a frame free to move rigidly (apps/random_command.cpp)
+      {"CLI-39", {{"frame.inp", edit(kMesh, "1, ENCASTRE\n", "1, 1, 3\n")}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0.01\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "frame.inp: *BOUNDARY", true},
+      {"CLI-40", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n500,0.01\n"}},
+       "random frame.inp --psd psd.csv -z 0.02 --inertia-relief --no-figures --out results", "command line: --inertia-relief", true},
       // ---- progress and verbosity (apps/progress.cpp, apps/command_line.cpp)
       cli_row("CLI-38", "static frame.inp --out results -v -q", "command line: --quiet"),
   };

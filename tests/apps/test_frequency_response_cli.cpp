@@ -183,4 +183,34 @@ TEST(RandomCli, RmsTableIsTheIntegralOfTheResponsePsdTable) {
   EXPECT_NEAR(h["max_displacement_rms"]["value"].get<double>(), tip_rms, 1e-9 * tip_rms);
 }
 
+TEST(RandomCli, FreeFrameIsRefusedWithoutInertiaReliefAndItsElasticPartReportedWithIt) {
+  // The cantilever without its clamp: free-free, 6 free rigid motions.
+  std::string mesh = cantilever();
+  mesh.replace(mesh.find("*BOUNDARY\n1, ENCASTRE\n"), std::string("*BOUNDARY\n1, ENCASTRE\n").size(), "");
+  TempDir dir;
+  dir.write("frame.inp", mesh);
+  dir.write("psd.csv", "frequency [Hz],psd [1/Hz]\n2,0.001\n400,0.001\n");
+  const RunResult refused = framedyn(dir, "random frame.inp --psd psd.csv -z 0.03 --no-figures --out results -q");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("--inertia-relief"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "results"));
+
+  const RunResult r = framedyn(dir, "random frame.inp --psd psd.csv -z 0.03 --inertia-relief --no-figures --out results -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "results" / "summary.json"));
+  const nlohmann::json& h = j["frame"]["random"];
+  EXPECT_EQ(h["displacements"].get<std::string>().rfind("elastic part (inertia relief", 0), 0u) << h["displacements"];
+  EXPECT_EQ(h["free_rigid_motions"], 6);
+  EXPECT_EQ(h["static_correction"], true);
+  // A free beam bent by a force at one end: the elastic part moves both ends (no support holds the root).
+  const Csv rms = read_csv(dir / "results" / "rms.csv");
+  double root = 0.0, tip = 0.0;
+  for (const auto& row : rms.rows) {
+    if (row[0] == 1) root = row[3];
+    if (row[0] == 9) tip = row[3];
+  }
+  EXPECT_GT(root, 0.0);
+  EXPECT_GT(tip, 0.0);
+}
+
 }  // namespace

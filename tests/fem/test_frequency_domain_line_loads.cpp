@@ -13,7 +13,6 @@
 //     which tends to the static q L^2/8 as omega -> 0.
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseLU>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -29,6 +28,7 @@
 #include "fem/modal_transient.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
+#include "tests/support/frequency_domain.h"
 
 namespace {
 
@@ -58,18 +58,7 @@ FrameModel simply_supported(const std::string& type, int elements) {
 
 // (K - omega^2 M + i omega (alpha M + beta K)) u = F on the free DOFs by sparse LU, on all DOFs.
 Eigen::VectorXcd direct_solve(const FrameDynamics& frame, const Eigen::VectorXd& load, double omega) {
-  const SparseMatrix k = frame.system().stiffness.selfadjointView<Eigen::Lower>();
-  const SparseMatrix m = frame.system().mass.selfadjointView<Eigen::Lower>();
-  const Eigen::SparseMatrix<cd> a =
-      k.cast<cd>() - cd(omega * omega, 0.0) * m.cast<cd>() + cd(0.0, omega) * (cd(kAlpha) * m.cast<cd>() + cd(kBeta) * k.cast<cd>());
-  Eigen::SparseLU<Eigen::SparseMatrix<cd>> lu(a);
-  EXPECT_EQ(lu.info(), Eigen::Success);
-  Eigen::VectorXcd f(frame.dofs().free_count());
-  for (int e = 0; e < f.size(); ++e) f(e) = load(frame.dofs().free_dofs[static_cast<std::size_t>(e)]);
-  const Eigen::VectorXcd u = lu.solve(f);
-  Eigen::VectorXcd all = Eigen::VectorXcd::Zero(frame.model().dof_count());
-  for (int e = 0; e < f.size(); ++e) all(frame.dofs().free_dofs[static_cast<std::size_t>(e)]) = u(e);
-  return all;
+  return framedyn::testing::direct_frequency_solve(frame, load, omega, kAlpha, kBeta);
 }
 
 // The closed-form series above (odd n up to 2001: the terms fall as n^-3).

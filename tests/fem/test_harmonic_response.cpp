@@ -5,8 +5,6 @@
 // same frame, and the steady state of a long transient at one frequency.
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseLU>
-
 #include <cmath>
 #include <complex>
 #include <iostream>
@@ -18,6 +16,7 @@
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
 #include "tests/support/beam_meshes.h"
+#include "tests/support/frequency_domain.h"
 
 namespace {
 
@@ -112,18 +111,7 @@ Eigen::VectorXd l_frame_load(const FrameModel& m) {
 
 // (K - omega^2 M + i omega (alpha M + beta K)) u = F on the free DOFs by sparse LU.
 Eigen::VectorXcd direct_solve(const FrameDynamics& frame, const Eigen::VectorXd& load, double omega, double alpha, double beta) {
-  const SparseMatrix k = frame.system().stiffness.selfadjointView<Eigen::Lower>();
-  const SparseMatrix m = frame.system().mass.selfadjointView<Eigen::Lower>();
-  const Eigen::SparseMatrix<cd> a =
-      k.cast<cd>() - cd(omega * omega, 0.0) * m.cast<cd>() + cd(0.0, omega) * (cd(alpha) * m.cast<cd>() + cd(beta) * k.cast<cd>());
-  Eigen::SparseLU<Eigen::SparseMatrix<cd>> lu(a);
-  EXPECT_EQ(lu.info(), Eigen::Success);
-  Eigen::VectorXcd f(frame.dofs().free_count());
-  for (int e = 0; e < f.size(); ++e) f(e) = load(frame.dofs().free_dofs[static_cast<std::size_t>(e)]);
-  const Eigen::VectorXcd u = lu.solve(f);
-  Eigen::VectorXcd all = Eigen::VectorXcd::Zero(frame.model().dof_count());
-  for (int e = 0; e < f.size(); ++e) all(frame.dofs().free_dofs[static_cast<std::size_t>(e)]) = u(e);
-  return all;
+  return framedyn::testing::direct_frequency_solve(frame, load, omega, alpha, beta);
 }
 
 double relative_error(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) { return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff(); }
