@@ -32,6 +32,7 @@
 #include "report/frame_outputs.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
+#include "coupling/validity_warnings.h"
 
 namespace framedyn::apps {
 
@@ -210,6 +211,12 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
     j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
+    // The shaker near an elastic mode of the frame model (Eq. 8.3's band, on the beam model's modes).
+    if (study.machine.attachment == rigid::Attachment::plow) {
+      const std::vector<double> frame_hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + frame->frequencies_hz.size());
+      add_warnings(j, coupling::frame_resonance_warnings(study.machine.plow.shaker_frequency, frame_hz,
+                                                         study.frame_response->mesh.filename().string()));
+    }
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");

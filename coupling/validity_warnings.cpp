@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace framedyn::coupling {
 
@@ -168,12 +169,44 @@ std::vector<core::Warning> chattering_warnings(const std::vector<SwitchingActivi
   return out;
 }
 
+namespace {
+
+// (f_shaker - f) / f when the shaker lies within Eq. 8.3's band of f (f > 0).
+std::optional<double> offset_in_band(double shaker_hz, double f) {
+  if (!(shaker_hz > 0) || !(f > 0)) return std::nullopt;
+  const double offset = (shaker_hz - f) / f;
+  if (std::abs(offset) > kResonanceBand) return std::nullopt;
+  return offset;
+}
+
+std::vector<core::Warning> frame_resonance_warnings(double shaker_hz, const std::vector<double>& frame_modes_hz, const std::string& mesh_name) {
+  std::vector<core::Warning> out;
+  for (std::size_t i = 0; i < frame_modes_hz.size(); ++i) {
+    const double f = frame_modes_hz[i];
+    const std::optional<double> near = offset_in_band(shaker_hz, f);
+    if (!near) continue;
+    core::Warning w;
+    w.code = "shaker_near_frame_mode";
+    w.message = fmt::format("the shaker's {:.4g} Hz is {:+.1f} % from elastic mode {} of the frame model ({:.4g} Hz, {}): within {:.0f} % "
+                            "of a natural frequency the frame's stresses are set by its modal damping, which the model knows least "
+                            "well; check what the mode is (frame_modes.csv, the ParaView series) before using the stress peaks",
+                            shaker_hz, 100.0 * *near, i + 1, f, mesh_name, 100.0 * kResonanceBand);
+    w.figures = {{"shaker_frequency", shaker_hz, "Hz"}, {"mode", static_cast<double>(i + 1), "1"}, {"mode_frequency", f, "Hz"},
+                 {"relative_offset", *near, "1"}, {"band", kResonanceBand, "1"}};
+    out.push_back(w);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<core::Warning> resonance_warnings(double shaker_hz, const std::vector<rigid::RigidMode>& modes, const std::string& modes_label) {
   std::vector<core::Warning> out;
-  if (!(shaker_hz > 0)) return out;
   for (std::size_t i = 0; i < modes.size(); ++i) {
-    const double f = modes[i].frequency_hz, offset = (shaker_hz - f) / f;
-    if (!(f > 0) || std::abs(offset) > kResonanceBand) continue;
+    const double f = modes[i].frequency_hz;
+    const std::optional<double> near = offset_in_band(shaker_hz, f);
+    if (!near) continue;
+    const double offset = *near;
     core::Warning w;
     w.code = "shaker_near_mode";
     w.message = fmt::format("the shaker's {:.4g} Hz is {:+.1f} % from mode {} ({:.4g} Hz, {}; modes {}): within {:.0f} % of a natural "

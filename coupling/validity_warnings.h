@@ -63,6 +63,11 @@ std::vector<core::Warning> chattering_warnings(const std::vector<SwitchingActivi
 // Eq. 8.3: one warning per mode with |f_shaker - f_mode| <= 0.1 f_mode.
 constexpr double kResonanceBand = 0.10;
 std::vector<core::Warning> resonance_warnings(double shaker_hz, const std::vector<rigid::RigidMode>& modes, const std::string& modes_label);
+// The same band on the elastic modes of the frame's beam model (the pipeline,
+// `frame_modes_hz` ascending): one shaker_near_frame_mode per such mode, where
+// the frame's stresses are set by its modal damping (a free-free frame model
+// whose part hangs from one node can put a local mode there).
+std::vector<core::Warning> frame_resonance_warnings(double shaker_hz, const std::vector<double>& frame_modes_hz, const std::string& mesh_name);
 
 // steady_not_reached, when `s` has no reached_at; `duration` the run's length (s).
 std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, const rigid::SteadyCriterion& c, double duration);

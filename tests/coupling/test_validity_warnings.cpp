@@ -143,6 +143,24 @@ TEST(ValidityWarnings, ShakerWithinTenPercentOfAModeWarns) {
   }
 }
 
+TEST(ValidityWarnings, ShakerWithinTenPercentOfAFrameModeWarnsNamingTheMode) {
+  // The shipped free-free frame model's lowest elastic modes (18.63 Hz: the engine rocking on its one-node mount).
+  const std::vector<double> frame_hz = {18.63, 31.44, 40.0};
+  const std::vector<core::Warning> w = frame_resonance_warnings(18.33, frame_hz, "r100_frame.inp");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].code, "shaker_near_frame_mode");
+  EXPECT_EQ(figure(w[0], "mode"), 1);
+  EXPECT_NEAR(figure(w[0], "relative_offset"), (18.33 - 18.63) / 18.63, 1e-15);
+  EXPECT_NE(w[0].message.find("r100_frame.inp"), std::string::npos);
+  // The band's edges, as for the vehicle's modes: 10.1 % away is outside, 9.9 % inside.
+  EXPECT_TRUE(frame_resonance_warnings(40.0 * 1.101, {40.0}, "m").empty());
+  EXPECT_TRUE(frame_resonance_warnings(40.0 * 0.899, {40.0}, "m").empty());
+  EXPECT_EQ(frame_resonance_warnings(40.0 * 1.099, {40.0}, "m").size(), 1u);
+  EXPECT_EQ(frame_resonance_warnings(40.0 * 0.901, {40.0}, "m").size(), 1u);
+  // No shaker (a chain): nothing to warn about.
+  EXPECT_TRUE(frame_resonance_warnings(0.0, frame_hz, "m").empty());
+}
+
 TEST(ValidityWarnings, SteadyNotReachedWarnsWithTheRemainingChangeAndIsSilentOnceReached) {
   // The decaying transient of test_steady_operation (x = 5 e^{-t/2T} + sin):
   // steady from 10 periods; the last 3 comparisons pass only with 14 periods of data.
