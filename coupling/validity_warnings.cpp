@@ -179,25 +179,6 @@ std::optional<double> offset_in_band(double shaker_hz, double f) {
   return offset;
 }
 
-std::vector<core::Warning> frame_resonance_warnings(double shaker_hz, const std::vector<double>& frame_modes_hz, const std::string& mesh_name) {
-  std::vector<core::Warning> out;
-  for (std::size_t i = 0; i < frame_modes_hz.size(); ++i) {
-    const double f = frame_modes_hz[i];
-    const std::optional<double> near = offset_in_band(shaker_hz, f);
-    if (!near) continue;
-    core::Warning w;
-    w.code = "shaker_near_frame_mode";
-    w.message = fmt::format("the shaker's {:.4g} Hz is {:+.1f} % from elastic mode {} of the frame model ({:.4g} Hz, {}): within {:.0f} % "
-                            "of a natural frequency the frame's stresses are set by its modal damping, which the model knows least "
-                            "well; check what the mode is (frame_modes.csv, the ParaView series) before using the stress peaks",
-                            shaker_hz, 100.0 * *near, i + 1, f, mesh_name, 100.0 * kResonanceBand);
-    w.figures = {{"shaker_frequency", shaker_hz, "Hz"}, {"mode", static_cast<double>(i + 1), "1"}, {"mode_frequency", f, "Hz"},
-                 {"relative_offset", *near, "1"}, {"band", kResonanceBand, "1"}};
-    out.push_back(w);
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<core::Warning> resonance_warnings(double shaker_hz, const std::vector<rigid::RigidMode>& modes, const std::string& modes_label) {
@@ -215,6 +196,25 @@ std::vector<core::Warning> resonance_warnings(double shaker_hz, const std::vecto
                             shaker_hz, 100.0 * offset, i + 1, f, modes[i].dominant, modes_label, 100.0 * kResonanceBand);
     w.figures = {{"shaker_frequency", shaker_hz, "Hz"}, {"mode", static_cast<double>(i + 1), "1"}, {"mode_frequency", f, "Hz"},
                  {"relative_offset", offset, "1"}, {"band", kResonanceBand, "1"}};
+    out.push_back(w);
+  }
+  return out;
+}
+
+std::vector<core::Warning> frame_resonance_warnings(double shaker_hz, const std::vector<double>& frame_modes_hz, const std::string& mesh_name) {
+  std::vector<core::Warning> out;
+  for (std::size_t i = 0; i < frame_modes_hz.size(); ++i) {
+    const double f = frame_modes_hz[i];
+    const std::optional<double> near = offset_in_band(shaker_hz, f);
+    if (!near) continue;
+    core::Warning w;
+    w.code = "shaker_near_frame_mode";
+    w.message = fmt::format("the shaker's {:.4g} Hz is {:+.1f} % from elastic mode {} of the frame model ({:.4g} Hz, {}): within {:.0f} % "
+                            "of a natural frequency the frame's stresses are set by its modal damping, which the model knows least "
+                            "well; check what the mode is (frame_modes.csv, the ParaView series) before using the stress peaks",
+                            shaker_hz, 100.0 * *near, i + 1, f, mesh_name, 100.0 * kResonanceBand);
+    w.figures = {{"shaker_frequency", shaker_hz, "Hz"}, {"mode", static_cast<double>(i + 1), "1"}, {"mode_frequency", f, "Hz"},
+                 {"relative_offset", *near, "1"}, {"band", kResonanceBand, "1"}};
     out.push_back(w);
   }
   return out;
