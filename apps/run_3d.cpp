@@ -24,6 +24,7 @@
 #include "apps/run_outputs.h"
 #include "report/csv_writer.h"
 #include "report/event_log.h"
+#include "report/json_quantity.h"
 #include "core/results_folder.h"
 #include "report/response_figures.h"
 #include "report/plot.h"
@@ -189,7 +190,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
           double peak = 0.0;  // the value of largest magnitude, with its sign
           for (Eigen::Index i = 0; i < p.values.rows(); ++i)
             if (std::abs(p.values(i, c)) > std::abs(peak)) peak = p.values(i, c);
-          jp[coupling::kLoadComponents[c]] = {{"peak", peak * (c < 3 ? ff : mf)}, {"unit", u.label(c < 3 ? Quantity::force : Quantity::moment)}};
+          jp[coupling::kLoadComponents[c]] = {{"peak", report::quantity(peak * (c < 3 ? ff : mf), u.label(c < 3 ? Quantity::force : Quantity::moment))}};
         }
         loads[p.name] = jp;
       }

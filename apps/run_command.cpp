@@ -16,6 +16,7 @@
 #include "apps/run_outputs.h"
 #include "report/csv_writer.h"
 #include "report/event_log.h"
+#include "report/json_quantity.h"
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -138,7 +139,7 @@ int run_study(const RunOptions& opt) {
                                      {"peak_srx", {{"value", px * ff}, {"unit", F}}},
                                      {"peak_srz", {{"value", pz * ff}, {"unit", F}}},
                                      {"peak_srmy", {{"value", pm * mf}, {"unit", M}}}};
-        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"unit", S}, {"time_s", ps_time}};
+        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"unit", S}, {"time", report::quantity(ps_time, u.label(Quantity::time))}};
         points.push_back(jp);
       }
       for (std::size_t i = 0; i < tr.time.size(); ++i)

@@ -2,6 +2,7 @@
 #include "apps/run_outputs.h"
 
 #include "apps/progress.h"
+#include "report/json_quantity.h"
 
 #include <fmt/format.h>
 
@@ -33,21 +34,21 @@ nlohmann::ordered_json static_json(const std::vector<coupling::StaticContact>& c
 nlohmann::ordered_json modes_by_state_json(const std::vector<coupling::StateModes>& states) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const coupling::StateModes& s : states) {
-    nlohmann::ordered_json f = nlohmann::ordered_json::array();
+    std::vector<double> f;
     for (const rigid::RigidMode& m : s.modes) f.push_back(m.frequency_hz);
-    j[s.state] = {{"label", s.label}, {"frequencies_hz", f}};
+    j[s.state] = {{"label", s.label}, {"frequencies", report::quantity(f, core::UnitSystem::si().label(core::Quantity::frequency))}};
   }
   return j;
 }
 
 namespace {
 
-// {start_up: {value, unit, time_s}, steady: {value, unit, time_s}}, a part
+// {start_up: {value, unit, time {value, unit}}, steady: {...}}, a part
 // absent when it holds no sample (steady: not reached; start_up: steady from t = 0).
 nlohmann::ordered_json split_json(const rigid::PeakSplit& s, double factor, const std::string& unit) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  if (s.start_up) j["start_up"] = {{"value", s.start_up->value * factor}, {"unit", unit}, {"time_s", s.start_up->time}};
-  if (s.steady) j["steady"] = {{"value", s.steady->value * factor}, {"unit", unit}, {"time_s", s.steady->time}};
+  if (s.start_up) j["start_up"] = {{"value", s.start_up->value * factor}, {"unit", unit}, {"time", report::quantity(s.start_up->time, "s")}};
+  if (s.steady) j["steady"] = {{"value", s.steady->value * factor}, {"unit", unit}, {"time", report::quantity(s.steady->time, "s")}};
   return j;
 }
 
@@ -67,7 +68,7 @@ nlohmann::ordered_json steady_json(const coupling::SteadyReport& st, const core:
   j["tolerance"] = st.criterion.tolerance;
   j["window_periods"] = st.criterion.window_periods;
   j["max_period_multiple"] = st.criterion.max_period_multiple;
-  j["remaining_change"] = {{"value", op.remaining_change}, {"period_multiple", op.remaining_period_multiple}, {"signal", op.leading_signal}};
+  j["remaining_change"] = {{"value", op.remaining_change}, {"unit", "1"}, {"period_multiple", op.remaining_period_multiple}, {"signal", op.leading_signal}};
   j["watched"] = st.watched;
   nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
   for (const coupling::SteadyPeak& p : st.peaks) {

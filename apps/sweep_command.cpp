@@ -16,6 +16,7 @@
 #include "apps/commands.h"
 #include "apps/progress.h"
 #include "report/csv_writer.h"
+#include "report/json_quantity.h"
 #include "core/error.h"
 #include "report/plot.h"
 #include "core/results_folder.h"
@@ -161,7 +162,7 @@ int run_sweep(const SweepOptions& opt) {
 
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
-  const std::string unit = u.label(q);
+  const std::string unit = u.label(q), hz = u.label(Quantity::frequency);
   // The values as given on the command line (the study's units), for the CSV, JSON and figures.
   const std::vector<double>& x = opt.values;
   const double reference = u.from_si(s.reference.value, q);
@@ -180,7 +181,7 @@ int run_sweep(const SweepOptions& opt) {
     const coupling::SweepPoint& p = s.points[i];
     csv.row().add(x[i]);
     nlohmann::ordered_json jr;
-    jr["value"] = x[i];
+    jr["parameter"] = report::quantity(x[i], unit);
     for (const Figure& f : figures()) {
       const std::optional<double>& v = p.*f.member;
       if (v) csv.add(u.from_si(*v, f.quantity));
@@ -199,7 +200,7 @@ int run_sweep(const SweepOptions& opt) {
       if (m < p.frequencies_hz.size()) csv.add(p.frequencies_hz[m]).add(p.dominant[m]);
       else csv.add(std::string()).add(std::string());
     }
-    jr["frequencies_hz"] = p.frequencies_hz;
+    jr["frequencies"] = report::quantity(p.frequencies_hz, hz);
     jr["dominant"] = p.dominant;
     runs.push_back(jr);
   }
@@ -216,17 +217,16 @@ int run_sweep(const SweepOptions& opt) {
   j["input"] = {{"study", opt.study}, {"name", study.name}, {"units", u.name()}};
   nlohmann::ordered_json sw;
   sw["parameter"] = opt.parameter;
-  sw["unit"] = unit;
-  sw["values"] = x;
+  sw["values"] = report::quantity(x, unit);
   sw["jobs"] = opt.jobs;
   nlohmann::ordered_json ref;
-  ref["value"] = reference;
+  ref["parameter"] = report::quantity(reference, unit);
   ref["in_values"] = s.reference_index >= 0;
   for (const Figure& f : figures()) {
     const std::optional<double>& v = s.reference.*f.member;
     if (v) ref[f.key] = {{"value", u.from_si(*v, f.quantity)}, {"unit", u.label(f.quantity)}};
   }
-  ref["frequencies_hz"] = s.reference.frequencies_hz;
+  ref["frequencies"] = report::quantity(s.reference.frequencies_hz, hz);
   sw["reference"] = ref;
   sw["runs"] = runs;
   nlohmann::ordered_json sp;

@@ -182,7 +182,7 @@ std::string vtu_location(const std::string& text, const Hit& hit) {
 bool nullable_key(const std::string& key) { return key == "reached_at" || key == "period_multiple"; }
 
 // The dotted key path of the first null in a JSON document, as in
-// "frame.modes[2].frequency_hz" (a nullable key's null excepted).
+// "frame.modes[2].frequency.value" (a nullable key's null excepted).
 std::optional<std::string> first_null(const nlohmann::json& j, const std::string& path) {
   if (j.is_null()) return path.empty() ? std::string("(the whole document)") : path;
   if (j.is_object()) {

@@ -1,4 +1,5 @@
 // summary.json's rigid.calibration and calibration.csv; see calibration_output.h.
+#include "report/json_quantity.h"
 #include "report/calibration_output.h"
 
 #include <fmt/format.h>
@@ -51,9 +52,10 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
   nlohmann::ordered_json targets = nlohmann::ordered_json::array(), labels = nlohmann::ordered_json::array();
   for (std::size_t t = 0; t < request.targets.size(); ++t) {
     const rigid::FrequencyTarget& tg = request.targets[t];
-    targets.push_back({{"frequency_hz", tg.frequency_hz},
+    const std::string hz = core::UnitSystem::si().label(core::Quantity::frequency);
+    targets.push_back({{"frequency", report::quantity(tg.frequency_hz, hz)},
                        {"dominant", tg.dominant},
-                       {"achieved_hz", c.achieved_hz[t]},
+                       {"achieved", report::quantity(c.achieved_hz[t], hz)},
                        {"achieved_dominant", c.achieved_dominant[t]},
                        {"relative_error", (c.achieved_hz[t] - tg.frequency_hz) / tg.frequency_hz},
                        {"label_matches", static_cast<bool>(c.label_matches[t])}});

@@ -15,6 +15,7 @@
 #include "coupling/frame_parts.h"
 #include "fem/section_forces.h"
 #include "report/csv_writer.h"
+#include "report/json_quantity.h"
 #include "report/vtu_writer.h"
 
 namespace framedyn::report {
@@ -202,8 +203,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
   const core::UnitSystem& u = q.units;
   using core::Quantity;
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
-  // Every number as {value, unit}; strings (paths, names) escaped by nlohmann.
-  auto quantity = [](double value, const std::string& unit) { return ordered_json{{"value", value}, {"unit", unit}}; };
+  // Every number as {value, unit} (report/json_quantity.h); strings (paths, names) escaped by nlohmann.
   auto peak = [&](const RailPeak& p, double value, Quantity q_value, const std::string& rail) {
     ordered_json j = quantity(u.from_si(value, q_value), u.label(q_value));
     j["rail"] = rail;
@@ -226,7 +226,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
   for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i) {
     const double zeta = i < r.response.damping_ratios.size() ? r.response.damping_ratios(i)
                                                              : q.damping.ratio_of(static_cast<int>(i), 6.283185307179586 * r.frequencies_hz(i));
-    modes.push_back({{"mode", i + 1}, {"frequency_hz", r.frequencies_hz(i)}, {"damping_ratio", zeta}});
+    modes.push_back({{"mode", i + 1}, {"frequency", quantity(r.frequencies_hz(i), u.label(Quantity::frequency))}, {"damping_ratio", zeta}});
   }
   j["modes"] = modes;
   // The support used, and whether the real machine has it (see frame_warnings).

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 
+#include "report/json_quantity.h"
 #include "report/csv_writer.h"
 #include "report/plot.h"
 
@@ -73,7 +74,7 @@ std::vector<std::string> write_harmonic_results(const fem::FrameModel& model, co
                                                 const std::function<void(const std::string&)>& stage) {
   const core::UnitSystem& u = model.units;
   const double lf = 1.0 / u.to_si_factor(Quantity::length), sf = 1.0 / u.to_si_factor(Quantity::stress);
-  const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress);
+  const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress), hz = u.label(Quantity::frequency);
 
   // frf.csv: per output node and frequency, amplitude and phase of each DOF; u_d(t) = |u_d| cos(omega t + phase_d).
   std::vector<std::string> headers = {"node", column("frequency", u.label(Quantity::frequency))};
@@ -133,18 +134,18 @@ std::vector<std::string> write_harmonic_results(const fem::FrameModel& model, co
   }
 
   const nlohmann::ordered_json input = input_entry(
-      run, u, {{"frequencies", {{"first_hz", r.frequencies_hz.front()}, {"last_hz", r.frequencies_hz.back()}, {"count", r.frequencies_hz.size()}}}});
+      run, u, {{"frequencies", {{"first", quantity(r.frequencies_hz.front(), hz)}, {"last", quantity(r.frequencies_hz.back(), hz)}, {"count", r.frequencies_hz.size()}}}});
   nlohmann::ordered_json h;
   h["mode_count"] = r.modes_used;
   h["rigid_body_modes"] = r.rigid_body_modes;
-  h["highest_mode_frequency_hz"] = modes.modes.back().frequency_hz;
+  h["highest_mode_frequency"] = quantity(modes.modes.back().frequency_hz, hz);
   h["static_correction"] = r.static_correction;
-  h["max_displacement"] = {{"value", r.max_displacement * lf}, {"unit", L}, {"node", peaks.node}, {"dof", peaks.dof}, {"frequency_hz", peaks.frequency_hz}};
+  h["max_displacement"] = {{"value", r.max_displacement * lf}, {"unit", L}, {"node", peaks.node}, {"dof", peaks.dof}, {"frequency", quantity(peaks.frequency_hz, hz)}};
   if (peaks.has_stress)
     h["max_fiber_stress"] = {{"value", r.max_fiber_stress * sf},
                              {"unit", S},
                              {"element", r.max_fiber_stress_point.element_id},
-                             {"frequency_hz", peaks.stress_frequency_hz}};
+                             {"frequency", quantity(peaks.stress_frequency_hz, hz)}};
   h["figures"] = figures;
   write_summary(model, modes, "harmonic", input, h, folder);
   return figures;
@@ -171,7 +172,7 @@ std::vector<std::string> write_random_results(const fem::FrameModel& model, cons
                                               const std::function<void(const std::string&)>& stage) {
   const core::UnitSystem& u = model.units;
   const double lf = 1.0 / u.to_si_factor(Quantity::length), sf = 1.0 / u.to_si_factor(Quantity::stress);
-  const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress);
+  const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress), hz = u.label(Quantity::frequency);
   const std::string L2 = u.label(Quantity::translation_psd), S2 = u.label(Quantity::stress_psd);
 
   std::vector<std::string> headers = {"node", column("frequency", u.label(Quantity::frequency)), column("load_psd", u.label(Quantity::per_frequency))};
@@ -217,20 +218,20 @@ std::vector<std::string> write_random_results(const fem::FrameModel& model, cons
 
   const nlohmann::ordered_json input =
       input_entry(run, u,
-                  {{"psd", run.psd_path}, {"band", {{"lowest_hz", psd.lowest()}, {"highest_hz", psd.highest()}}}, {"load_factor_rms", peaks.load_factor_rms}});
+                  {{"psd", run.psd_path}, {"band", {{"lowest", quantity(psd.lowest(), hz)}, {"highest", quantity(psd.highest(), hz)}}}, {"load_factor_rms", peaks.load_factor_rms}});
   nlohmann::ordered_json h;
   h["mode_count"] = r.modes_used;
-  h["highest_mode_frequency_hz"] = modes.modes.back().frequency_hz;
+  h["highest_mode_frequency"] = quantity(modes.modes.back().frequency_hz, hz);
   h["static_correction"] = r.static_correction;
   h["displacements"] = r.inertia_relief ? "elastic part (inertia relief: relative to the rigid motion that takes the loads' unbalanced part)"
                                         : "total";
   if (r.inertia_relief) h["free_rigid_motions"] = r.rigid_body_modes;
   h["grid_points"] = r.frequencies_hz.size();
   h["max_displacement_psd"] = {{"value", r.max_displacement_psd * lf * lf}, {"unit", L2}, {"node", peaks.psd_node}, {"dof", peaks.psd_dof},
-                               {"frequency_hz", peaks.psd_frequency_hz}};
+                               {"frequency", quantity(peaks.psd_frequency_hz, hz)}};
   if (peaks.has_stress)
     h["max_stress_psd"] = {{"value", r.max_stress_psd * sf * sf}, {"unit", S2}, {"element", r.max_stress_psd_point.element_id},
-                           {"frequency_hz", peaks.stress_frequency_hz}};
+                           {"frequency", quantity(peaks.stress_frequency_hz, hz)}};
   h["max_displacement_rms"] = {{"value", r.max_displacement_rms * lf}, {"unit", L}, {"node", peaks.rms_node}, {"dof", peaks.rms_dof}};
   if (peaks.has_stress) h["max_stress_rms"] = {{"value", r.max_stress_rms * sf}, {"unit", S}, {"element", r.max_stress_rms_point.element_id}};
   h["figures"] = figures;

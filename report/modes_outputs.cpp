@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "report/csv_writer.h"
+#include "report/json_quantity.h"
 #include "report/vtu_writer.h"
 
 namespace framedyn::report {
@@ -22,6 +23,14 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
   const double mass_f = 1.0 / u.to_si_factor(Quantity::mass);
   const double rot_f = 1.0 / u.to_si_factor(Quantity::rotary_inertia);
   auto eff_in_units = [&](const fem::Vector6d& v, int d) { return v(d) * (d < 3 ? mass_f : rot_f); };
+  // A six-direction mass-like vector as {translation: {value [x, y, z], unit}, rotation: {value [rx, ry, rz], unit}}:
+  // the two halves carry different units (Eqs. 7.4, 7.5).
+  auto by_direction = [&](const fem::Vector6d& v, double translation_factor, double rotation_factor, Quantity tq, Quantity rq) {
+    return nlohmann::ordered_json{
+        {"translation", quantity(std::vector<double>{v(0) * translation_factor, v(1) * translation_factor, v(2) * translation_factor}, u.label(tq))},
+        {"rotation", quantity(std::vector<double>{v(3) * rotation_factor, v(4) * rotation_factor, v(5) * rotation_factor}, u.label(rq))}};
+  };
+  const std::string hz = u.label(Quantity::frequency);
   // Effective masses as fractions of the model's total mass (Eq. 7.5).
   auto fraction = [&](const fem::Vector6d& v, int d) { return r.total_mass(d) > 0 ? v(d) / r.total_mass(d) : 0.0; };
 
@@ -38,18 +47,14 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
   // Masses (docs/theory/fem.md Eqs. 7.4, 7.5): the whole model's, supported
   // DOFs included; the part the free DOFs carry, per direction.
   frame["total_mass"] = {{"value", r.total_mass(0) * mass_f}, {"unit", u.label(Quantity::mass)}};
-  frame["total_rotary_inertia"] = {{"x", r.total_mass(3) * rot_f}, {"y", r.total_mass(4) * rot_f}, {"z", r.total_mass(5) * rot_f},
-                                   {"unit", u.label(Quantity::rotary_inertia)}, {"about", "reference_point"}};
-  nlohmann::ordered_json free_mass;
-  for (int d = 0; d < 6; ++d) free_mass[kDirections[d]] = eff_in_units(r.free_mass, d);
-  frame["free_dof_mass"] = free_mass;
-  frame["reference_point"] = {{"value", {0.0, 0.0, 0.0}}, {"unit", u.label(Quantity::length)}};
-  frame["effective_mass_unit"] = {{"translation", u.label(Quantity::mass)}, {"rotation", u.label(Quantity::rotary_inertia)}};
-  frame["participation_factor_unit"] = {{"translation", u.label(Quantity::participation_translation)},
-                                        {"rotation", u.label(Quantity::participation_rotation)}};
+  frame["total_rotary_inertia"] = quantity(std::vector<double>{r.total_mass(3) * rot_f, r.total_mass(4) * rot_f, r.total_mass(5) * rot_f},
+                                           u.label(Quantity::rotary_inertia));
+  frame["total_rotary_inertia"]["about"] = "reference_point";
+  frame["free_dof_mass"] = by_direction(r.free_mass, mass_f, rot_f, Quantity::mass, Quantity::rotary_inertia);
+  frame["reference_point"] = quantity(std::vector<double>{0.0, 0.0, 0.0}, u.label(Quantity::length));
   frame["rigid_body_modes_expected"] = r.rigid_body_modes_expected;
   frame["parts"] = r.parts;
-  frame["sturm_check"] = {{"certified", r.certified}, {"eigenvalues_below", r.sturm_count}, {"below_hz", r.sturm_shift_hz},
+  frame["sturm_check"] = {{"certified", r.certified}, {"eigenvalues_below", r.sturm_count}, {"below", quantity(r.sturm_shift_hz, hz)},
                           {"lanczos_runs", r.lanczos_runs}};
   nlohmann::ordered_json modes = nlohmann::ordered_json::array();
   fem::Vector6d sum = fem::Vector6d::Zero();
@@ -57,18 +62,14 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
     const fem::Mode& m = r.modes[i];
     nlohmann::ordered_json jm;
     jm["mode"] = i + 1;
-    jm["frequency_hz"] = m.frequency_hz;
+    jm["frequency"] = quantity(m.frequency_hz, hz);
     jm["rigid_body"] = m.rigid_body;
-    nlohmann::ordered_json eff, frac;
-    for (int d = 0; d < 6; ++d) {
-      eff[kDirections[d]] = eff_in_units(m.effective_mass, d);
-      frac[kDirections[d]] = fraction(m.effective_mass, d);
-    }
+    nlohmann::ordered_json frac;
+    for (int d = 0; d < 6; ++d) frac[kDirections[d]] = fraction(m.effective_mass, d);
     sum += m.effective_mass;
-    nlohmann::ordered_json gamma;
-    for (int d = 0; d < 6; ++d) gamma[kDirections[d]] = m.participation(d) * std::sqrt(d < 3 ? mass_f : rot_f);
-    jm["participation_factor"] = gamma;
-    jm["effective_mass"] = eff;
+    jm["participation_factor"] = by_direction(m.participation, std::sqrt(mass_f), std::sqrt(rot_f), Quantity::participation_translation,
+                                              Quantity::participation_rotation);
+    jm["effective_mass"] = by_direction(m.effective_mass, mass_f, rot_f, Quantity::mass, Quantity::rotary_inertia);
     jm["effective_mass_fraction"] = frac;
     modes.push_back(jm);
   }
@@ -76,7 +77,7 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
   nlohmann::ordered_json cumulative;
   for (int d = 0; d < 6; ++d) cumulative[kDirections[d]] = fraction(sum, d);
   frame["effective_mass_fraction_sum"] = cumulative;
-  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD, Sturm-count certified"}, {"shift_hz", -run.shift_hz},
+  frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD, Sturm-count certified"}, {"shift", quantity(-run.shift_hz, hz)},
                      {"restarts", r.iterations}, {"operator_solves", r.operator_solves}};
   j["frame"] = frame;
   folder.write_text("summary.json", j.dump(2) + "\n");

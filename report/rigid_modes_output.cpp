@@ -3,6 +3,7 @@
 
 #include "core/units.h"
 #include "report/csv_writer.h"
+#include "report/json_quantity.h"
 
 namespace framedyn::report {
 
@@ -16,7 +17,7 @@ nlohmann::ordered_json write_rigid_modes(const std::vector<std::string>& coordin
     const rigid::RigidMode& m = modes[i];
     nlohmann::ordered_json share;
     for (std::size_t c = 0; c < coordinates.size(); ++c) share[coordinates[c]] = m.energy_share(static_cast<Eigen::Index>(c));
-    list.push_back({{"mode", i + 1}, {"frequency_hz", m.frequency_hz}, {"dominant", m.dominant}, {"energy_share", share}});
+    list.push_back({{"mode", i + 1}, {"frequency", report::quantity(m.frequency_hz, core::UnitSystem::si().label(core::Quantity::frequency))}, {"dominant", m.dominant}, {"energy_share", share}});
     csv.row().add(static_cast<int>(i + 1)).add(m.frequency_hz).add(m.dominant);
     for (std::size_t c = 0; c < coordinates.size(); ++c) csv.add(m.energy_share(static_cast<Eigen::Index>(c)));
   }

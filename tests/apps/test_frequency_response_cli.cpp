@@ -89,7 +89,7 @@ TEST(HarmonicCli, LowFrequencyAmplitudeIsTheStaticDeflectionAndTheResonanceIsAtT
   const RunResult mo = framedyn(dir, "modes frame.inp --modes 4 --out modes -q");
   ASSERT_EQ(mo.status, 0) << mo.err;
   const double u_static = std::abs(nlohmann::json::parse(read_file(dir / "static" / "summary.json"))["frame"]["max_displacement"]["value"].get<double>());
-  const double f1 = nlohmann::json::parse(read_file(dir / "modes" / "summary.json"))["frame"]["modes"][0]["frequency_hz"].get<double>();
+  const double f1 = nlohmann::json::parse(read_file(dir / "modes" / "summary.json"))["frame"]["modes"][0]["frequency"]["value"].get<double>();
 
   // 0.1 Hz to 2 f1 in steps of f1/500: the first frequency is quasi-static, the grid brackets f1 closely.
   const double step = f1 / 500.0;
@@ -110,7 +110,7 @@ TEST(HarmonicCli, LowFrequencyAmplitudeIsTheStaticDeflectionAndTheResonanceIsAtT
   EXPECT_EQ(h["max_fiber_stress"]["unit"], "Pa");
   EXPECT_EQ(h["max_fiber_stress"]["element"], 1);  // the root carries the largest moment
   // The resonance peak of |H| lies at f1 sqrt(1 - 2 zeta^2): within one grid step of it.
-  EXPECT_NEAR(h["max_displacement"]["frequency_hz"].get<double>(), f1 * std::sqrt(1 - 2 * zeta * zeta), step);
+  EXPECT_NEAR(h["max_displacement"]["frequency"]["value"].get<double>(), f1 * std::sqrt(1 - 2 * zeta * zeta), step);
   // At resonance the first mode's static share is amplified by 1/(2 zeta); for a tip-loaded
   // cantilever that share is 97 % of the tip deflection (the higher modes add the rest, unamplified),
   // and the grid misses the peak by at most (step / (zeta f1))^2 / 2 = 5e-3.

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -142,6 +143,22 @@ void compare_json(const nlohmann::json& a, const nlohmann::json& b, const std::s
       const double va = a["value"].get<double>() * to_si(ua), vb = b["value"].get<double>() * to_si(ub);
       EXPECT_TRUE(agree(va, vb, std::abs(va), path + " [" + ua + " / " + ub + "]"));
       ++numbers;
+    }
+    const auto numbers_only = [](const nlohmann::json& v) {
+      return v.is_array() && std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); });
+    };
+    if (a.contains("value") && a.contains("unit") && numbers_only(a["value"])) {  // {value: [v0, v1, ...], unit}
+      const std::string ua = a["unit"], ub = b["unit"];
+      EXPECT_TRUE(label_of(ua, "in-lbf-s")) << path << ": '" << ua << "' in an inch study";
+      EXPECT_TRUE(label_of(ub, "m-N-s")) << path << ": '" << ub << "' in an SI study";
+      ASSERT_EQ(a["value"].size(), b["value"].size()) << path;
+      double scale = 0.0;
+      for (const auto& v : a["value"]) scale = std::max(scale, std::abs(v.get<double>() * to_si(ua)));
+      for (std::size_t i = 0; i < a["value"].size(); ++i) {
+        const double va = a["value"][i].get<double>() * to_si(ua), vb = b["value"][i].get<double>() * to_si(ub);
+        EXPECT_TRUE(agree(va, vb, scale, path + "[" + std::to_string(i) + "] [" + ua + " / " + ub + "]"));
+        ++numbers;
+      }
     }
     // The calibration's parameters: {name, unit, initial, fitted, ratio}, the
     // numbers other than the ratio in the object's unit.
@@ -330,6 +347,69 @@ TEST(OutputUnits, FramePartsInertiaScaleIsTheTotalInertiaInTheStudysUnit) {
       EXPECT_NEAR(p["initial"].get<double>(), total, 1e-12 * total);
     }
   EXPECT_TRUE(found);
+}
+
+// ------------------------------------------------------------ a unit on every number
+
+// One style for every dimensional number (issue 14, "one {value, unit} style
+// everywhere"): a number is either inside an object that names its unit
+// (the `value` of {value, unit}, or the calibration's {name, unit, initial,
+// fitted, ...}),
+// or it sits under a key that names something dimensionless. A unit carried
+// in a key's name (`frequency_hz`) fails here.
+const std::set<std::string> kDimensionlessKeys = {
+    "mode", "dofs", "free_dofs", "nodes", "elements", "beam_elements", "output_times", "events", "steps", "count", "grid_points",
+    "mode_count", "rigid_body_modes", "free_rigid_motions", "rigid_body_modes_expected", "parts", "eigenvalues_below", "lanczos_runs",
+    "restarts", "operator_solves", "iterations", "relative_residual", "target_count", "independent_targets", "shape_components", "jobs", "node", "element",
+    "station", "frame_node", "fiber", "window_periods", "max_period_multiple", "period_multiple", "index",
+    // ratios and fractions
+    "damping_ratio", "tension_fraction", "lift_off_fraction", "bending_share", "ratio", "relative_error", "residual_max", "tolerance",
+    "singular_values", "regularization_weight", "mac", "shape_weight", "load_factor_rms", "share"};
+// Objects whose every member is a dimensionless number (shares and fractions by coordinate or direction).
+const std::set<std::string> kDimensionlessMaps = {"energy_share", "effective_mass_fraction", "effective_mass_fraction_sum", "relative_change",
+                                                  "relative_spread", "unresolved"};
+
+void find_bare_numbers(const nlohmann::json& j, const std::string& path, const std::string& key, bool in_unit_object,
+                       std::vector<std::string>& bare) {
+  if (j.is_object()) {
+    if (kDimensionlessMaps.count(key)) return;
+    // In {value, unit, ...} the unit is the value's only; in the calibration's
+    // {name, unit, initial, fitted, ...} (no `value`) it is every number's.
+    const bool has_unit = j.contains("unit") && j["unit"].is_string();
+    for (auto it = j.begin(); it != j.end(); ++it)
+      find_bare_numbers(it.value(), path + "." + it.key(), it.key(), has_unit && (it.key() == "value" || !j.contains("value")), bare);
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) find_bare_numbers(j[i], path + "[" + std::to_string(i) + "]", key, in_unit_object, bare);
+  } else if (j.is_number() && !in_unit_object && !kDimensionlessKeys.count(key)) {
+    bare.push_back(path);
+  }
+}
+
+TEST(OutputUnits, EveryDimensionalNumberOfEverySummaryIsAValueWithItsUnit) {
+  TempDir dir("framedyn_test_output_units");
+  std::string mesh = read_file(fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "portal_frame.inp");
+  mesh += "*BOUNDARY\nFEET, 1, 6\n*STEP\n*STATIC\n*CLOAD\n7, 1, 1000.\n*END STEP\n";
+  dir.write("frame.inp", mesh);
+  dir.write("psd.csv", "frequency [Hz],psd [1/Hz]\n1,1\n50,1\n");
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"plow_2d", "run '" + (kExamples / "r100_plow_2d.yaml").string() + "' -q --out plow_2d"},
+      {"pipeline", "run '" + (kExamples / "offset_plowing.yaml").string() + "' -q --out pipeline"},
+      {"calibration", "run '" + (kExamples / "thesis" / "case1.yaml").string() + "' -q --out calibration"},
+      {"sweep", "sweep '" + (kExamples / "r100_plow_2d.yaml").string() + "' -p soil.damping --values 200,300 --no-figures -q --out sweep"},
+      {"frame_response", "frame-response '" + (kExamples / "portal_frame_sway.yaml").string() + "' -q --out frame_response"},
+      {"modes", "modes frame.inp --modes 8 -q --out modes"},
+      {"static", "static frame.inp -q --out static"},
+      {"harmonic", "harmonic frame.inp -f 1:50:20 -z 0.02 --no-figures -q --out harmonic"},
+      {"random", "random frame.inp --psd psd.csv -z 0.02 --no-figures -q --out random"}};
+  for (const auto& [name, command] : runs) {
+    const auto r = framedyn(dir, command);
+    ASSERT_EQ(r.status, 0) << command << "\n" << r.err;
+    std::vector<std::string> bare;
+    find_bare_numbers(nlohmann::json::parse(read_file(dir / name / "summary.json")), "", "", false, bare);
+    std::string list;
+    for (const std::string& b : bare) list += "\n  " + b;
+    EXPECT_TRUE(bare.empty()) << name << "/summary.json: numbers with neither a unit nor a dimensionless key:" << list;
+  }
 }
 
 }  // namespace

@@ -98,11 +98,11 @@ TEST(FiniteOutput, VtuNamesTheDataArrayEntryAndComponent) {
 TEST(FiniteOutput, JsonSummaryNullFromANaNNamesTheKeyPath) {
   nlohmann::json j;
   j["frame"]["modes"] = nlohmann::json::array();
-  j["frame"]["modes"].push_back({{"mode", 1}, {"frequency_hz", 12.5}});
-  j["frame"]["modes"].push_back({{"mode", 2}, {"frequency_hz", kNaN}});  // nlohmann writes null
+  j["frame"]["modes"].push_back({{"mode", 1}, {"frequency", {{"value", 12.5}, {"unit", "Hz"}}}});
+  j["frame"]["modes"].push_back({{"mode", 2}, {"frequency", {{"value", kNaN}, {"unit", "Hz"}}}});  // nlohmann writes null
   const std::string m = refusal("results/summary.json", j.dump(2) + "\n");
   std::printf("%s\n", m.c_str());
-  expect_contains(m, "results/summary.json: key frame.modes[1].frequency_hz is null (nlohmann::json writes a NaN or an infinity as null)");
+  expect_contains(m, "results/summary.json: key frame.modes[1].frequency.value is null (nlohmann::json writes a NaN or an infinity as null)");
   // Hand-written JSON with a bare nan (not valid JSON) is found by its line.
   expect_contains(refusal("summary.json", "{\n  \"a\": 1,\n  \"b\": nan\n}\n"), "summary.json: line 3 is NaN");
 }

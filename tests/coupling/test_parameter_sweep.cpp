@@ -178,8 +178,8 @@ TEST(SweepCommand, WritesTheTableTheSummaryAndTheFigures) {
   const nlohmann::json j = nlohmann::json::parse(read_file(dir / "c5" / "summary.json"));
   EXPECT_EQ(j["framedyn"]["command"], "sweep");
   EXPECT_EQ(j["sweep"]["parameter"], "soil.damping");
-  EXPECT_EQ(j["sweep"]["unit"], "lbf*s/in");
-  EXPECT_EQ(j["sweep"]["reference"]["value"], 300.0);
+  EXPECT_EQ(j["sweep"]["values"]["unit"], "lbf*s/in");
+  EXPECT_EQ(j["sweep"]["reference"]["parameter"]["value"], 300.0);
   EXPECT_EQ(j["sweep"]["reference"]["in_values"], true);
   ASSERT_EQ(j["sweep"]["runs"].size(), 2u);
   EXPECT_EQ(j["sweep"]["runs"][1]["relative_change"]["peak_cutting_force"], 0.0);

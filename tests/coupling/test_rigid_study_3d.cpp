@@ -162,9 +162,9 @@ TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {
   const auto j = nlohmann::json::parse(read_text(out + "/summary.json"));
   EXPECT_EQ(j["rigid"]["model"], "rigid_3d");
   EXPECT_EQ(j["rigid"]["dofs"], 15);
-  EXPECT_EQ(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["unit"], "lbf");
-  EXPECT_GT(std::abs(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["peak"].get<double>()), 0.0);
-  EXPECT_EQ(j["rigid"]["frame_loads"]["P25_FRONT_AXLE_PIN"]["MX"]["unit"], "lbf*in");
+  EXPECT_EQ(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["peak"]["unit"], "lbf");
+  EXPECT_GT(std::abs(j["rigid"]["frame_loads"]["P27_LEVELING_CYLINDER"]["FZ"]["peak"]["value"].get<double>()), 0.0);
+  EXPECT_EQ(j["rigid"]["frame_loads"]["P25_FRONT_AXLE_PIN"]["MX"]["peak"]["unit"], "lbf*in");
 }
 
 }  // namespace
