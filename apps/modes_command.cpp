@@ -13,7 +13,9 @@
 #include "apps/progress.h"
 #include "core/results_folder.h"
 #include "fem/modal_analysis.h"
+#include "report/mode_shape_figure.h"
 #include "report/modes_outputs.h"
+#include "report/response_figures.h"
 
 namespace framedyn::apps {
 
@@ -27,6 +29,7 @@ struct ModesOptions {
   std::string out;
   bool lumped = false;
   double shift_hz = 1.0;
+  bool figures = false;
   ProgressFlags progress;
 };
 
@@ -34,6 +37,7 @@ int run_modes(const ModesOptions& opt) {
   Progress progress(opt.progress);
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_modes" : opt.out;
   core::check_results_target(out_dir, {opt.mesh.path});  // before the run: a refusal costs no time
+  if (opt.figures) report::require_gnuplot();
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
@@ -49,6 +53,22 @@ int run_modes(const ModesOptions& opt) {
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
   report::write_modes_results(model, r, {opt.mesh.path, opt.lumped, opt.shift_hz}, folder);
+  bool drew = false;
+  if (opt.figures) {
+    // The lowest elastic modes (a rigid-body mode has no shape worth a picture).
+    std::vector<Eigen::Index> elastic;
+    std::vector<double> hz;
+    for (std::size_t i = 0; i < r.modes.size() && elastic.size() < 4; ++i)
+      if (!r.modes[i].rigid_body) elastic.push_back(static_cast<Eigen::Index>(i)), hz.push_back(r.modes[i].frequency_hz);
+    if (!elastic.empty()) {
+      progress.stage("figures");
+      Eigen::MatrixXd shapes(r.shapes.rows(), static_cast<Eigen::Index>(elastic.size()));
+      for (std::size_t k = 0; k < elastic.size(); ++k) shapes.col(static_cast<Eigen::Index>(k)) = r.shapes.col(elastic[k]);
+      report::write_png(report::mode_shape_figure(model, shapes, hz, "Mode shapes: " + std::filesystem::path(opt.mesh.path).filename().string()),
+                        folder.path_of("mode_shapes.png"));
+      drew = true;
+    }
+  }
   folder.commit();
   progress.done();
   if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
@@ -80,7 +100,7 @@ int run_modes(const ModesOptions& opt) {
   std::string line = fmt::format("{:>5}  {:>14}                            ", "sum", "");
   for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", fraction(sum_all, d));
   fmt::print("{}\n", line);
-  fmt::print("\nresults in {}/ (summary.json, modes.csv, mode_shapes.csv, modes.vtu)\n", out_dir);
+  fmt::print("\nresults in {}/ (summary.json, modes.csv, mode_shapes.csv, modes.vtu{})\n", out_dir, drew ? ", mode_shapes.png" : "");
   return 0;
 }
 
@@ -94,6 +114,7 @@ void add_modes_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_modes)");
   cmd->add_flag("--lumped", opt->lumped, "Lumped mass instead of consistent mass");
   cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(number_check("a positive shift in Hz", [](double hz) { return hz > 0; }, false));
+  cmd->add_flag("--figures", opt->figures, "Draw the lowest four elastic mode shapes, three views each, into mode_shapes.png (gnuplot)");
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_modes(*opt); }; });
 }

@@ -25,6 +25,7 @@
 #include "report/csv_writer.h"
 #include "report/event_log.h"
 #include "report/json_quantity.h"
+#include "report/mode_shape_figure.h"
 #include "core/results_folder.h"
 #include "report/response_figures.h"
 #include "report/plot.h"
@@ -221,6 +222,14 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");
+      if (frame->mode_shapes.cols() > 0) {
+        const std::vector<double> hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + std::min<Eigen::Index>(frame->frequencies_hz.size(), frame->mode_shapes.cols()));
+        report::write_png(report::mode_shape_figure(frame->model, frame->mode_shapes, hz,
+                                                    fmt::format("Frame model's lowest elastic modes ({}, supports: {})", study.frame_response->mesh.filename().string(),
+                                                                coupling::supports_name(study.frame_response->supports))),
+                          folder.path_of("frame_mode_shapes.png"));
+        figure_files.push_back("frame_mode_shapes.png");
+      }
     }
   }
   folder.write_text("summary.json", j.dump(2) + "\n");

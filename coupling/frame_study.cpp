@@ -362,6 +362,17 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, mo));
   }
 
+  // The lowest elastic shapes on all DOFs (rigid-link slaves included), for the mode-shape figure.
+  {
+    std::vector<Eigen::Index> elastic;
+    for (Eigen::Index i = 0; i < basis.eigenvalues.size() && elastic.size() < 4; ++i)
+      if (!basis.rigid_body[static_cast<std::size_t>(i)]) elastic.push_back(i);
+    out.mode_shapes.resize(model.dof_count(), static_cast<Eigen::Index>(elastic.size()));
+    const Eigen::VectorXd none = Eigen::VectorXd::Zero(model.dof_count());
+    for (std::size_t k = 0; k < elastic.size(); ++k)
+      out.mode_shapes.col(static_cast<Eigen::Index>(k)) = fem::expand_free(frame.dofs(), basis.shapes.col(elastic[k]), none);
+  }
+
   fem::TransientInput in;
   in.times = out.loads.times;
   in.distribution = out.mapping.distribution;

@@ -126,6 +126,7 @@ struct FrameStudyResults {
   LoadHistory loads;
   LoadMapping mapping;
   Eigen::VectorXd frequencies_hz;            // elastic modes (those used; the lowest 20 for `direct`)
+  Eigen::MatrixXd mode_shapes;               // all DOFs x the lowest (up to 4) elastic modes, M-normalised: for figures
   fem::TransientResult response;
   std::vector<RailRecovery> rails;           // the element-set outputs, in request.rails' order
   std::vector<NodalHistory> nodal;           // the node-set outputs, in request.node_outputs' order

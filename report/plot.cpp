@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <system_error>
 
@@ -152,10 +153,15 @@ void check_plot(const LinePlot& plot) {
   if (plot.series.empty()) throw InputError(where, "at least one series", "none");
   if (plot.width < 100 || plot.width > 10000 || plot.height < 100 || plot.height > 10000)
     throw InputError(where, "a size of 100 to 10000 pixels", fmt::format("{} x {}", plot.width, plot.height));
+  for (const auto& [range, axis] : {std::pair{plot.x_range, "x"}, std::pair{plot.y_range, "y"}})
+    if (range && !(std::isfinite((*range)[0]) && std::isfinite((*range)[1]) && (*range)[0] < (*range)[1]))
+      throw InputError(where, fmt::format("a {} range [low, high] with low < high", axis), fmt::format("[{}, {}]", (*range)[0], (*range)[1]));
   for (const PlotSeries& s : plot.series) {
     const std::string which = "series '" + s.name + "'";
     if (s.x.size() != s.y.size()) throw InputError(where, "as many x as y values in " + which, fmt::format("{} x and {} y values", s.x.size(), s.y.size()));
     if (s.x.empty()) throw InputError(where, "values in " + which, "an empty series");
+    if (s.segments && s.x.size() % 2 != 0)
+      throw InputError(where, "an even number of points in " + which + " (drawn as segments, two points each)", fmt::format("{}", s.x.size()));
     for (std::size_t i = 0; i < s.x.size(); ++i)
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
         throw InputError(where, "finite values in " + which, fmt::format("({}, {}) at point {}", s.x[i], s.y[i], i + 1));
@@ -165,70 +171,106 @@ void check_plot(const LinePlot& plot) {
   }
 }
 
-std::string gnuplot_script(const LinePlot& plot, const fs::path& data_file, const fs::path& png) {
+void check_figure(const PanelFigure& figure) {
+  const InputLocation where{"", 0, "figure '" + figure.title + "'"};
+  if (figure.rows < 1 || figure.columns < 1) throw InputError(where, "at least one row and one column of panels", fmt::format("{} x {}", figure.rows, figure.columns));
+  if (figure.panels.empty() || figure.panels.size() > static_cast<std::size_t>(figure.rows * figure.columns))
+    throw InputError(where, fmt::format("1 to {} panels", figure.rows * figure.columns), fmt::format("{}", figure.panels.size()));
+  if (figure.width < 100 || figure.width > 10000 || figure.height < 100 || figure.height > 10000)
+    throw InputError(where, "a size of 100 to 10000 pixels", fmt::format("{} x {}", figure.width, figure.height));
+  for (const LinePlot& p : figure.panels) check_plot(p);
+}
+
+namespace {
+
+std::string terminal_commands(int width, int height, const fs::path& png) {
   std::string s;
-  s += "# framedyn line plot\n";
   // pngcairo draws anti-aliased lines; gnuplot-nox also has libgd's png.
   s += "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n";
-  s += fmt::format("  set terminal pngcairo size {},{} noenhanced font 'Sans,11' linewidth 1.2 background '#ffffff'\n", plot.width, plot.height);
+  s += fmt::format("  set terminal pngcairo size {},{} noenhanced font 'Sans,11' linewidth 1.2 background '#ffffff'\n", width, height);
   s += "} else {\n";
-  s += fmt::format("  set terminal png size {},{} noenhanced background '#ffffff'\n", plot.width, plot.height);
+  s += fmt::format("  set terminal png size {},{} noenhanced background '#ffffff'\n", width, height);
   s += "}\n";
   s += "set encoding utf8\n";
   s += "set output " + quoted(fs::absolute(png).string()) + "\n";
+  return s;
+}
+
+// The commands that draw one plot from the data file's blocks first_block,
+// first_block + 1, ... (one per series). Every setting a previous panel of a
+// multiplot may have changed is set again.
+std::string plot_commands(const LinePlot& plot, const fs::path& data_file, std::size_t first_block) {
+  std::string s;
   s += "set title " + quoted(plot.title) + " font ',13'\n";
   s += "set xlabel " + quoted(axis_title(plot.x_label, plot.x_unit)) + "\n";
   s += "set ylabel " + quoted(axis_title(plot.y_label, plot.y_unit)) + "\n";
   s += "set style line 100 lc rgb '#d0d0d0' lw 1 dt 1\n";
   s += "set grid xtics ytics linestyle 100, linestyle 100\n";
   s += "set border lw 1\n";
-  s += "set key below horizontal center Left reverse samplen 3 spacing 1.2 width 2\n";
+  if (plot.key) s += "set key below horizontal center Left reverse samplen 3 spacing 1.2 width 2\n";
+  else s += "unset key\n";
   s += "set datafile separator ','\n";
   s += "set format y '%.6g'\n";
   s += "set format x '%.6g'\n";
+  s += "unset logscale\n";
   if (plot.log_x) s += "set logscale x\nset mxtics 10\n";
   if (plot.log_y) s += "set logscale y\nset format y '%.3g'\n";
-  if (plot.mark_points) {
-    // A little room so that the first and last markers are not cut by the border.
+  s += plot.equal_axes ? "set size ratio -1\n" : "set size noratio\n";
+  s += "set autoscale\n";
+  if (plot.x_range) s += fmt::format("set xrange [{:.17g}:{:.17g}]\n", (*plot.x_range)[0], (*plot.x_range)[1]);
+  if (plot.y_range) s += fmt::format("set yrange [{:.17g}:{:.17g}]\n", (*plot.y_range)[0], (*plot.y_range)[1]);
+  if (plot.mark_points || plot.equal_axes) {
+    // A little room so that the first and last markers (or a view's outer members) are not cut by the border.
     s += "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
   } else {
+    s += "set offsets 0, 0, 0, 0\n";
     s += "set autoscale xfix\n";
   }
   s += "plot ";
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& ser = plot.series[i];
     const std::size_t k = i % (sizeof(kColours) / sizeof(kColours[0]));
+    const std::string colour = ser.colour.empty() ? std::string(kColours[k]) : ser.colour;
     if (i > 0) s += ", \\\n     ";
-    s += fmt::format("{} index {} using 1:2", i == 0 ? quoted(fs::absolute(data_file).string()) : std::string("''"), i);
+    s += fmt::format("{} index {} using 1:2", quoted(fs::absolute(data_file).string()), first_block + i);
     if (plot.mark_points)
-      s += fmt::format(" with linespoints lw 2 pt {} ps 1.3 lc rgb '{}'", kPointTypes[k], kColours[k]);
+      s += fmt::format(" with linespoints lw 2 pt {} ps 1.3 lc rgb '{}'", kPointTypes[k], colour);
     else
-      s += fmt::format(" with lines lw 1.5 lc rgb '{}'", kColours[k]);
+      s += fmt::format(" with lines lw 1.5 lc rgb '{}'", colour);
     s += ser.name.empty() ? std::string(" notitle") : " title " + quoted(ser.name);
   }
-  s += "\nunset output\n";
+  s += "\n";
   return s;
 }
 
-void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnuplot) {
-  check_plot(plot);
+// One block per series (gnuplot's "index"), blocks apart by two blank lines;
+// a segments series has one blank line after each pair (a break in the line).
+void write_series(std::ofstream& out, const std::vector<const PlotSeries*>& series) {
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const PlotSeries& ser = *series[i];
+    out << (i > 0 ? "\n\n" : "") << "# " << ser.name << "\n";
+    for (std::size_t p = 0; p < ser.x.size(); ++p) {
+      out << fmt::format("{:.17g},{:.17g}\n", ser.x[p], ser.y[p]);
+      if (ser.segments && p % 2 == 1 && p + 1 < ser.x.size()) out << "\n";
+    }
+  }
+}
+
+// Writes the data and the script into a scratch folder and runs gnuplot on it.
+void render(const std::vector<const PlotSeries*>& series, const std::string& title, const std::function<std::string(const fs::path&)>& script_for,
+            const fs::path& png, const std::string& gnuplot) {
   ScratchDir scratch;
   const fs::path data = scratch.path() / "plot.csv", script = scratch.path() / "plot.gp", log = scratch.path() / "gnuplot.log";
   auto gate = hold_output_gate();  // for the files below; released before gnuplot runs
   {
-    // One block per series (gnuplot's "index"), blocks apart by two blank lines.
     std::ofstream out(data, std::ios::binary);
-    for (std::size_t i = 0; i < plot.series.size(); ++i) {
-      const PlotSeries& ser = plot.series[i];
-      out << (i > 0 ? "\n\n" : "") << "# " << ser.name << "\n";
-      for (std::size_t p = 0; p < ser.x.size(); ++p) out << fmt::format("{:.17g},{:.17g}\n", ser.x[p], ser.y[p]);
-    }
+    write_series(out, series);
     out.close();
     if (!out) throw PlotError("cannot write the plot data " + data.string());
   }
   {
     std::ofstream out(script, std::ios::binary);
-    out << gnuplot_script(plot, data, png);
+    out << script_for(data);
     out.close();
     if (!out) throw PlotError("cannot write the plot script " + script.string());
   }
@@ -238,9 +280,42 @@ void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnu
   const int status = run_program(gnuplot, {script.string()}, log);
   std::string message = read_text(log);
   while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-  if (status != 0) throw PlotError(fmt::format("gnuplot failed (exit status {}) drawing '{}': {}", status, plot.title, message));
+  if (status != 0) throw PlotError(fmt::format("gnuplot failed (exit status {}) drawing '{}': {}", status, title, message));
   if (!fs::exists(png, ec) || fs::file_size(png, ec) == 0)
-    throw PlotError(fmt::format("gnuplot wrote no image {} for '{}': {}", png.string(), plot.title, message));
+    throw PlotError(fmt::format("gnuplot wrote no image {} for '{}': {}", png.string(), title, message));
+}
+
+}  // namespace
+
+std::string gnuplot_script(const LinePlot& plot, const fs::path& data_file, const fs::path& png) {
+  return "# framedyn line plot\n" + terminal_commands(plot.width, plot.height, png) + plot_commands(plot, data_file, 0) + "unset output\n";
+}
+
+std::string gnuplot_script(const PanelFigure& figure, const fs::path& data_file, const fs::path& png) {
+  std::string s = "# framedyn figure of panels\n" + terminal_commands(figure.width, figure.height, png);
+  s += fmt::format("set multiplot layout {},{} rowsfirst title {} font ',14'\n", figure.rows, figure.columns, quoted(figure.title));
+  std::size_t block = 0;
+  for (const LinePlot& p : figure.panels) {
+    s += plot_commands(p, data_file, block);
+    block += p.series.size();
+  }
+  s += "unset multiplot\nunset output\n";
+  return s;
+}
+
+void write_png(const LinePlot& plot, const fs::path& png, const std::string& gnuplot) {
+  check_plot(plot);
+  std::vector<const PlotSeries*> series;
+  for (const PlotSeries& s : plot.series) series.push_back(&s);
+  render(series, plot.title, [&](const fs::path& data) { return gnuplot_script(plot, data, png); }, png, gnuplot);
+}
+
+void write_png(const PanelFigure& figure, const fs::path& png, const std::string& gnuplot) {
+  check_figure(figure);
+  std::vector<const PlotSeries*> series;
+  for (const LinePlot& p : figure.panels)
+    for (const PlotSeries& s : p.series) series.push_back(&s);
+  render(series, figure.title, [&](const fs::path& data) { return gnuplot_script(figure, data, png); }, png, gnuplot);
 }
 
 bool gnuplot_available(const std::string& gnuplot) {

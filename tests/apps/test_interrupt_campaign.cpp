@@ -181,6 +181,7 @@ TEST_F(InterruptCampaign, ThirtyTwoInterruptsLeaveEarlierResultsOrCompleteNewOne
   ASSERT_TRUE(all_names.count(".framedyn-manifest"));
   ASSERT_TRUE(all_names.count("frame_response_00200.vtu"));
   ASSERT_TRUE(all_names.count("fig25_rail_bending_moment.png"));
+  ASSERT_TRUE(all_names.count("frame_mode_shapes.png"));
   const std::size_t total_files = all_names.size();
 
   std::vector<Trigger> triggers;

@@ -132,7 +132,7 @@ TEST(LinePlot, BadPlotsAreInputErrorsBeforeGnuplotRuns) {
 
 TEST(LinePlot, LogarithmicAxesForSpectra) {
   report::LinePlot p = sine_plot();
-  EXPECT_EQ(report::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png").find("logscale"), std::string::npos);
+  EXPECT_EQ(report::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png").find("\nset logscale"), std::string::npos);
   p.log_x = true;
   p.log_y = true;
   const std::string s = report::gnuplot_script(p, "/tmp/d.csv", "/tmp/p.png");
