@@ -24,7 +24,7 @@ SnCurve iiw(double fat_mpa, double m, double knee_cycles, IiwVariant variant, co
   const double s0 = fat_mpa * kPascalsPerMegapascal;
   const double knee = s0 * std::pow(kReferenceCycles / knee_cycles, 1.0 / m);  // F.5
   const bool va = variant == IiwVariant::variable_amplitude;
-  const std::string name = fmt::format("IIW FAT{}, {} stress, m = {}, knee at {:g} cycles, {}", number(fat_mpa), stress, number(m), knee_cycles,
+  const std::string name = fmt::format("IIW FAT{}, {} stress, m = {}, knee at 1e{} cycles, {}", number(fat_mpa), stress, number(m), std::lround(std::log10(knee_cycles)),
                                        va ? "m = 22 beyond (variable amplitude)" : "no damage beyond (constant amplitude)");
   return SnCurve(name, kIiw, {{s0, kReferenceCycles}, {knee, knee_cycles}}, m, va ? std::optional<double>(22.0) : std::nullopt);
 }

@@ -89,7 +89,7 @@ StressSeries read_stress_series(const std::string& path, const std::string& colu
       if (column.empty()) {
         if (stress_cols.size() != 1)
           throw InputError({path, n, "--column"}, "--column naming one of the stress columns (" + listed + ")",
-                           fmt::format("none, and {} stress columns", stress_cols.size()));
+                           fmt::format("no --column (the file has {} stress columns)", stress_cols.size()));
         col = stress_cols.front();
       }
       s.header = headers[static_cast<std::size_t>(col)];
