@@ -20,7 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kPsi = 4.4482216152605 / (0.0254 * 0.0254);  // Pa per psi (lbf and inch exact)
 
 // 50 periods of 40 + 50 cos(2 pi k / 20) MPa (range 100 MPa), 20 samples a period, peaks sampled
-// exactly, with a time column; values divided by `per_mpa` (1 for MPa, 1e6 / kPsi for psi).
+// exactly, with a time column; values divided by `per_mpa`, the unit in MPa (1 for MPa, 6.894757e-3 for psi).
 std::string series(const std::string& unit, double per_mpa) {
   std::string text = "# strain gauge SG1, rear rail\ntime [s],sg1 [" + unit + "]\n";
   char line[96];
@@ -41,7 +41,7 @@ nlohmann::json run(const TempDir& dir, const std::string& file, const std::strin
 TEST(RainflowCommand, SeriesInPsiAndInMpaGiveTheSameDamageAsNOverN) {
   TempDir dir;
   std::ofstream(dir / "mpa.csv") << series("MPa", 1.0);
-  std::ofstream(dir / "psi.csv") << series("psi", 1e6 / kPsi);
+  std::ofstream(dir / "psi.csv") << series("psi", kPsi / 1e6);
   const nlohmann::json a = run(dir, "mpa.csv", "--out mpa_out"), b = run(dir, "psi.csv", "--out psi_out");
   // 50 periods of 100 MPa: 100 half cycles (each range holds the start) = 50 cycles, and
   // D = 50 / N(100 MPa) with IIW FAT90: N = 2e6 (90/100)^3 = 1.458e6.

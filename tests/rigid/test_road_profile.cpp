@@ -71,7 +71,9 @@ TEST(Iso8608RoadProfile, EachClassDoublesTheRmsOfTheOneBefore) {
     const RoadProfile p(options(road_class_from_letter(letter), 100.0));
     const double rms = std::sqrt(sampled_mean_square(p, 1024));
     EXPECT_NEAR(iso8608_gd_n0(road_class_from_letter(letter)), 16e-6 * std::pow(4.0, letter - 'A'), 1e-18);
-    if (letter > 'A') EXPECT_NEAR(rms / previous, 2.0, 1e-12) << "class " << letter;
+    if (letter > 'A') {
+      EXPECT_NEAR(rms / previous, 2.0, 1e-12) << "class " << letter;
+    }
     previous = rms;
   }
   EXPECT_THROW(road_class_from_letter('I'), std::invalid_argument);
