@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/cell_text.h"
 #include "core/error.h"
 #include "core/number_text.h"
 #include "core/stress_unit.h"
@@ -17,13 +18,8 @@ namespace framedyn::fatigue {
 namespace {
 
 using core::InputError;
-
-std::string trim(const std::string& s) {
-  const std::size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const std::size_t b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
+using core::parse_number;
+using core::trim;
 
 std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> cells;
@@ -46,13 +42,6 @@ void split_header(const std::string& h, std::string& name, std::string& unit) {
   }
   name = trim(h.substr(0, open));
   unit = trim(h.substr(open + 1, h.size() - open - 2));
-}
-
-bool parse_number(const std::string& t, double& value) {
-  if (t.empty()) return false;
-  char* end = nullptr;
-  value = std::strtod(t.c_str(), &end);
-  return end == t.c_str() + t.size() && std::isfinite(value);
 }
 
 }  // namespace
