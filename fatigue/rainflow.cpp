@@ -47,7 +47,8 @@ void RainflowCounter::turning_point(double x) {
     } else {
       // Step 4 (and, in a block closed at its extreme, Y at S too: it closes at the block's end).
       emit(stack_[n - 3], stack_[n - 2], 1.0);
-      stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(n - 3), stack_.begin() + static_cast<std::ptrdiff_t>(n - 1));
+      stack_[n - 3] = stack_[n - 1];  // Y's two points go; X's end stays
+      stack_.resize(n - 2);
     }
   }
 }
