@@ -49,13 +49,15 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
   const std::string kind = error.get_name(), text = error.what();
   std::string rest;
   // A std::string, not what()'s pointer into the temporary error (freed at the end of the return).
+  // Every command, as main registers them.
+  static const char* const kCommands = "a command: modes, static, harmonic, random, run, frame-response, sweep or rainflow (framedyn --help)";
   const auto located = [](const std::string& key, const std::string& expected, const std::string& found) -> std::string {
     return core::InputError(command_line(key), expected, found).what();
   };
   if (kind == "RequiredError") {
     // An unknown command is not an extra argument to CLI11 but a missing command.
     if (text == "A subcommand is required")
-      return located("", "a command: modes, static, harmonic, random, run, frame-response or sweep (framedyn --help)",
+      return located("", kCommands,
                      first_argument.empty() || first_argument[0] == '-' ? std::string("none") : "'" + first_argument + "'");
     const std::size_t at = text.rfind(" is required");
     if (at != std::string::npos) {
@@ -66,7 +68,7 @@ std::string command_line_message(const CLI::ParseError& error, const CLI::App* c
   // CLI11 names an extras error after the subcommand, not "ExtrasError": match the text.
   if (after(text, "The following argument was not expected: ", rest) || after(text, "The following arguments were not expected: ", rest))
     return located("", command ? fmt::format("the options of framedyn {} ({})", command->get_name(), help_of(command))
-                               : std::string("a command: modes, static, harmonic, random, run, frame-response or sweep (framedyn --help)"),
+                               : std::string(kCommands),
                    "'" + rest + "'");
   if (kind == "ConversionError" && after(text, "Could not convert: ", rest)) {
     const std::size_t eq = rest.find(" = ");

@@ -17,5 +17,6 @@ void add_sweep_command(CLI::App& app, std::function<int()>& run);
 void add_frame_response_command(CLI::App& app, std::function<int()>& run);  // frame_response_command.cpp
 void add_harmonic_command(CLI::App& app, std::function<int()>& run);        // harmonic_command.cpp
 void add_random_command(CLI::App& app, std::function<int()>& run);          // random_command.cpp
+void add_rainflow_command(CLI::App& app, std::function<int()>& run);        // rainflow_command.cpp
 
 }  // namespace framedyn::apps

@@ -261,6 +261,9 @@ Row cli_row(const std::string& id, const std::string& args, const std::string& w
   return {id, {{"frame.inp", kMesh}, {"study.yaml", kStudy2D}}, args, where, expected_found};
 }
 
+// A stress history for `framedyn rainflow` (a time column and one stress column in MPa).
+const std::string kSeries = "time [s],sg1 [MPa]\n0,10\n0.1,50\n0.2,-20\n0.3,40\n";
+
 std::vector<Row> rows() {
   const std::string kSection = "*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT\n0.05, 0.1\n";
   const std::string kData = "*BOUNDARY\n";  // extra keywords go before the supports
@@ -568,6 +571,16 @@ std::vector<Row> rows() {
        "random frame.inp --psd psd.csv -z 0.02 --inertia-relief --no-figures --out results", "command line: --inertia-relief", true},
       // ---- progress and verbosity (apps/progress.cpp, apps/command_line.cpp)
       cli_row("CLI-38", "static frame.inp --out results -v -q", "command line: --quiet"),
+      // ---- framedyn rainflow (fatigue/stress_series.cpp, apps/rainflow_command.cpp)
+      cli_row("CLI-41", "rainflow nothere.csv --out results", "nothere.csv", false),
+      {"CLI-42", {{"series.csv", kSeries}}, "rainflow series.csv --column strain --out results", "series.csv:1: --column", true},
+      {"CLI-43", {{"series.csv", edit(kSeries, "sg1 [MPa]", "sg1 [bar]")}}, "rainflow series.csv --out results", "series.csv:1: sg1 [bar]", true},
+      {"CLI-44", {{"series.csv", edit(kSeries, "0.2,-20", "0.2,-2O")}}, "rainflow series.csv --out results", "series.csv:4: sg1 [MPa]", true},
+      {"CLI-45", {{"series.csv", edit(kSeries, "0.3,40", "0.1,40")}}, "rainflow series.csv --out results", "series.csv:5: time [s]", true},
+      {"CLI-46", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT --out results", "command line: --sn", true},
+      {"CLI-47", {{"series.csv", edit(kSeries, "0.1,50", "0.1")}}, "rainflow series.csv --out results", "series.csv:3", true},
+      {"CLI-48", {{"series.csv", edit(edit(kSeries, "sg1 [MPa]", "sg1 [MPa],sg2 [MPa]"), "0,10", "0,10,12")}}, "rainflow series.csv --out results",
+       "series.csv:1: --column", true},
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

@@ -1,0 +1,110 @@
+// ISO 8608 rough ground (docs/validation.md V14.8): the generated profile's mean square over
+// one period against the integral of the standard's PSD over the generated band, the classes'
+// ordering (each class doubles the RMS), the rear axle seeing the front's profile one
+// wheelbase later, and a seed giving the same ground every time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "rigid/road_profile.h"
+
+namespace {
+
+using namespace framedyn::rigid;
+
+RoadProfileOptions options(RoadClass c, double length, std::uint64_t seed = 8608) {
+  RoadProfileOptions o;
+  o.road_class = c;
+  o.length = length;
+  o.seed = seed;
+  return o;
+}
+
+// Mean square of h sampled at M points over one period L.
+double sampled_mean_square(const RoadProfile& p, int M) {
+  double s = 0.0;
+  for (int j = 0; j < M; ++j) {
+    const double h = p.height(p.options().length * j / M);
+    s += h * h;
+  }
+  return s / M;
+}
+
+TEST(Iso8608RoadProfile, MeanSquareOverOnePeriodIsTheIntegralOfThePsdOverTheBand) {
+  // Class C (Gd(n0) = 256e-6 m^3), L = 200 m: lines k/200 from 0.015 to 2.83 cycle/m (564 lines).
+  const RoadProfile p(options(RoadClass::C, 200.0));
+  ASSERT_EQ(p.lines().size(), 564u);
+  EXPECT_EQ(iso8608_gd_n0(RoadClass::C), 256e-6);
+  // Sampled at M = 2048 > 2 k_max = 1132 points a period, the cosines are orthogonal: the
+  // sampled mean square is sum A_k^2 / 2 to round-off.
+  EXPECT_NEAR(sampled_mean_square(p, 2048), p.mean_square(), 1e-10 * p.mean_square());
+  // sum A_k^2 / 2 = sum Gd(n_k) dn is the midpoint rule for the integral of Gd = c n^-2 over
+  // the band. Gd is convex, so the rule falls short, by at most sum Gd''(n_k - dn/2) dn^3 / 24
+  // (2.3 % here, from the lowest lines, where dn / n = 1/3) and to leading order by
+  // sum Gd''(n_k) dn^3 / 24 (to within (dn / n_1)^2 = 11 % of itself).
+  const double dn = 1.0 / 200.0, c = 256e-6 * 0.01;
+  double bound = 0.0, leading = 0.0;
+  for (const RoadProfile::Line& l : p.lines()) {
+    bound += 6.0 * c * std::pow(l.n - dn / 2, -4) * dn * dn * dn / 24.0;
+    leading += 6.0 * c * std::pow(l.n, -4) * dn * dn * dn / 24.0;
+  }
+  const double shortfall = p.psd_integral() - p.mean_square();
+  EXPECT_GE(shortfall, 0.0);
+  EXPECT_LE(shortfall, bound);
+  EXPECT_LT(bound, 0.03 * p.psd_integral());  // RMS within 1.2 % of the band integral's root
+  EXPECT_NEAR(shortfall, leading, 0.11 * leading);
+  std::printf("class C, L = 200 m: mean square %.6g m^2, band integral %.6g m^2, shortfall %.4g (bound %.4g, leading order %.4g)\n", p.mean_square(),
+              p.psd_integral(), shortfall, bound, leading);
+  // The band's integral by hand: c (1/a - 1/b), a = 3/200 - dn/2, b = 566/200 + dn/2.
+  EXPECT_NEAR(p.psd_integral(), c * (1.0 / (0.015 - dn / 2) - 1.0 / (2.83 + dn / 2)), 1e-12 * p.psd_integral());
+  // The lines' PSD is the standard's at every line: A_k^2 / (2 dn) = Gd(n0) (n_k / n0)^-2.
+  for (const RoadProfile::Line& l : p.lines()) EXPECT_NEAR(l.amplitude * l.amplitude / (2 * dn), 256e-6 * std::pow(l.n / 0.1, -2), 1e-12 * 256e-6 * std::pow(l.n / 0.1, -2));
+}
+
+TEST(Iso8608RoadProfile, EachClassDoublesTheRmsOfTheOneBefore) {
+  // Gd(n0) grows by 4 from class to class (A 16e-6 ... H 262144e-6 m^3), so with the same
+  // phases the heights, and the RMS, double.
+  double previous = 0.0;
+  for (char letter = 'A'; letter <= 'H'; ++letter) {
+    const RoadProfile p(options(road_class_from_letter(letter), 100.0));
+    const double rms = std::sqrt(sampled_mean_square(p, 1024));
+    EXPECT_NEAR(iso8608_gd_n0(road_class_from_letter(letter)), 16e-6 * std::pow(4.0, letter - 'A'), 1e-18);
+    if (letter > 'A') {
+      EXPECT_NEAR(rms / previous, 2.0, 1e-12) << "class " << letter;
+    }
+    previous = rms;
+  }
+  EXPECT_THROW(road_class_from_letter('I'), std::invalid_argument);
+}
+
+TEST(Iso8608RoadProfile, RearTiresSeeTheFrontProfileOneWheelbaseLater) {
+  const double v = 4.0, wheelbase = 2.5;
+  const RoughGroundInput input(RoadProfile(options(RoadClass::D, 100.0)), v, wheelbase);
+  const double scale = std::sqrt(input.profile().mean_square());
+  for (double t : {3.0, 7.25, 11.5}) {
+    const AxleGroundInputs now = input.at(t), later = input.at(t + wheelbase / v);
+    // x = v (t + wheelbase / v) - wheelbase is v t to round-off (1e-14 m): the same ground.
+    EXPECT_NEAR(later.rear_height, now.front_height, 1e-9 * scale);
+    EXPECT_NEAR(later.rear_velocity, now.front_velocity, 1e-9 * v);
+  }
+  // The vertical velocity is v dh/dx: against a central difference of the height over time
+  // (step 1e-5 s; truncation (2 pi n_max v)^2 dt^2 / 6 < 1e-6 relative, round-off < 1e-9 / dt).
+  const double t = 5.0, dt = 1e-5;
+  const double fd = (input.at(t + dt).front_height - input.at(t - dt).front_height) / (2 * dt);
+  EXPECT_NEAR(input.at(t).front_velocity, fd, 1e-5 * std::abs(fd) + 1e-9);
+  // Lines k / 100 from k = 2 (0.011 * 100 = 1.1 rounds up) to 283: the input's band is n v.
+  EXPECT_DOUBLE_EQ(input.lowest_frequency(), 2.0 / 100.0 * v);
+  EXPECT_DOUBLE_EQ(input.highest_frequency(), 283.0 / 100.0 * v);
+}
+
+TEST(Iso8608RoadProfile, ASeedGivesTheSameGroundAndAnotherSeedAnother) {
+  const RoadProfile a(options(RoadClass::B, 50.0, 1)), b(options(RoadClass::B, 50.0, 1)), c(options(RoadClass::B, 50.0, 2));
+  for (double x : {0.0, 1.7, 33.3}) {
+    EXPECT_EQ(a.height(x), b.height(x));
+    EXPECT_NE(a.height(x), c.height(x));
+  }
+}
+
+}  // namespace
