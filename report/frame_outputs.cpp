@@ -278,6 +278,7 @@ void add_hot_spots(nlohmann::ordered_json& j, const FrameStudyResults& r, const 
   for (const coupling::HotSpot& x : h.by_normal_range) by_range.push_back(spot(x));
   j["hot_spots"] = by_vm;
   j["hot_spots_by_normal_stress_range"] = by_range;
+  if (h.peak.point_name.empty()) return;  // no section points (GENERAL sections only): no peak to name
   const bool in_startup = h.startup_times > 0 && h.peak.time < h.window.from;
   j["peak_von_mises"] = {{"value", stress(h.peak.von_mises_total)},
                          {"unit", S},
