@@ -293,7 +293,7 @@ void add_hot_spots(nlohmann::ordered_json& j, const FrameStudyResults& r, const 
       {"startup_peak_von_mises", {{"value", stress(h.startup_peak.von_mises_total)}, {"unit", S}}},
       {"steady_peak_von_mises", {{"value", stress(h.steady_peak.von_mises_total)}, {"unit", S}}},
       {"static_state", r.static_forces.empty() ? "zero: no static state computed, total = dynamic" : "static section forces added: total = static + dynamic"},
-      {"stress_histories_in_memory", {{"value", static_cast<double>(h.memory_bytes) / 1.0e6}, {"unit", "MB"}}},
+      {"stress_histories_in_memory_bytes", h.memory_bytes},
       {"ranked_by", "each station's worst section point; ties within 1e-6 go to the lower station, point and time"}};
 }
 
