@@ -246,6 +246,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                  rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment),
                  rail.peak_bending_moment.point.x() * lf, u.label(Quantity::length), rail.peak_bending_moment.time,
                  u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), 100.0 * rail.bending_share);
+    print_hot_spot_line(f, u);
   }
   if (figures) {
     std::string list;
