@@ -163,6 +163,20 @@ TEST(ISection, TransverseShearFollowsVQOverIt) {
   EXPECT_LT(rel(shear_at(s, "web centre", forces(0, 0, v, 40.0, 0, 0)), v * q_centre / (i * tw) + 40.0 * tw / s.torsion_constant), 1e-12);
 }
 
+// A channel (h 200, b 75, t_f 11.4, t_w 8.5 mm) under V along 2: the same
+// V Q / (I t_w) at the web centre, Q of a flange b t_f (h - t_f)/2 and the
+// half web; the flange tips carry none (the shear-centre offset is not modelled).
+TEST(ChannelSection, TransverseShearAtTheWebCentreIsVQOverIt) {
+  const double h = 0.2, b = 0.075, tf = 0.0114, tw = 0.0085, v = 5.0e4;
+  const fem::SectionProperties s = fem::channel_section(h, b, tf, tw);
+  const double i = b * h * h * h / 12 - (b - tw) * std::pow(h - 2 * tf, 3) / 12;
+  const fem::SectionForces f = forces(0, 0, v, 0, 0, 0);
+  const double q = b * tf * (h - tf) / 2 + tw * (h / 2 - tf) * (h / 2 - tf) / 2;
+  EXPECT_LT(rel(shear_at(s, "web centre", f), v * q / (i * tw)), 1e-12);
+  EXPECT_EQ(shear_at(s, "flange tip +2", f), 0.0);
+  EXPECT_EQ(shear_at(s, "flange tip -2", f), 0.0);
+}
+
 // The box's webs under V along 2 (symmetric box): the closed cell's flow is
 // zero on the axis of symmetry, so at the neutral axis tau = V Q / (I 2 t)
 // with Q the midline half-section's first moment; the flanges' middles carry none.
