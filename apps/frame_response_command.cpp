@@ -81,6 +81,8 @@ int run_frame_response(const FrameResponseOptions& opt) {
     fmt::print("{}: peak normal stress {:.5g} {} {}; bending share {:.1f} %\n", rail.spec.name, u.from_si(rail.peak_normal_stress.value, Quantity::stress),
                u.label(Quantity::stress), at(rail.peak_normal_stress), 100.0 * rail.bending_share);
   }
+  if (!r.rails.empty()) fmt::print("\n");
+  print_hot_spot_line(r, u);
   for (const coupling::NodalHistory& h : r.nodal) {
     fmt::print("\n{}: peak displacement {:.5g} {} ({} of node {}), t = {:.4g} s\n", h.spec.name, h.peak_displacement.value * lf, u.label(Quantity::length),
                fem::dof_name(h.peak_displacement.dof), h.peak_displacement.node_id, h.peak_displacement.time);

@@ -207,7 +207,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     // Every load on the frame (points 24-31 and the attachment's at point 19).
     const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
     progress.stage("frame transient (pipeline)");
-    frame = coupling::run_frame_study(*study.frame_response, &loads);
+    frame = coupling::run_frame_study(*study.frame_response, &loads, r.steady.operation.reached_at);
     progress.stage("writing results (frame)");
     report::write_frame_outputs(*frame, *study.frame_response, folder, progress.step_callback());
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
@@ -256,6 +256,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                  rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment),
                  rail.peak_bending_moment.point.x() * lf, u.label(Quantity::length), rail.peak_bending_moment.time,
                  u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), 100.0 * rail.bending_share);
+    print_hot_spot_line(f, u);
   }
   if (figures) {
     std::string list;

@@ -78,6 +78,18 @@ nlohmann::ordered_json steady_json(const coupling::SteadyReport& st, const core:
   return j;
 }
 
+void print_hot_spot_line(const coupling::FrameStudyResults& f, const core::UnitSystem& u) {
+  const coupling::HotSpotReport& h = f.hot_spots;
+  if (h.peak.point_name.empty() || h.peak.station >= f.stress.stations.size()) return;
+  using core::Quantity;
+  const coupling::StressStation& st = f.stress.stations[h.peak.station];
+  fmt::print("peak von Mises stress {:.5g} {} at {} element {} station {} ({}), X = {:.4g} {}, t = {:.4f} s; steady from {:.4g} s ({}): "
+             "steady peak {:.5g} {}\n",
+             u.from_si(h.peak.von_mises_total, Quantity::stress), u.label(Quantity::stress), st.set, st.element_id, st.station, h.peak.point_name,
+             u.from_si(st.point.x(), Quantity::length), u.label(Quantity::length), h.peak.time, h.window.from, h.window.source,
+             u.from_si(h.steady_peak.von_mises_total, Quantity::stress), u.label(Quantity::stress));
+}
+
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at, const core::UnitSystem& units) {
   nlohmann::ordered_json j;
   j["reached_at"] = reached_at ? nlohmann::ordered_json{{"value", *reached_at}, {"unit", "s"}} : nlohmann::ordered_json(nullptr);

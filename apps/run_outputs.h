@@ -39,6 +39,9 @@ nlohmann::ordered_json steady_json(const coupling::SteadyReport& steady, const c
 // frame.steady (the pipeline): each rail's peak |normal stress| (its series
 // is the largest magnitude over the rail's stations) and resultant bending
 // moment over the start-up and over steady operation, split at `reached_at`.
+// The console's line on the frame's peak von Mises stress and the steady window of its hot spots
+// (docs/theory/coupling.md section 10); nothing without section points.
+void print_hot_spot_line(const coupling::FrameStudyResults& frame, const core::UnitSystem& units);
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at,
                                          const core::UnitSystem& units);
 

@@ -116,7 +116,7 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir, FrameDefaults defaults) {
   f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                "direct_substeps", "convert_units", "mesh_loads"});
+                "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
   const bool pipeline = defaults == FrameDefaults::pipeline;
   FrameStudyRequest r;
   r.file = f.file();
@@ -234,6 +234,16 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     if (r.stations < 2) throw f.error("stations", "at least 2 stations per element (the ends)", std::to_string(r.stations));
   }
   r.pvd = f.boolean_or("pvd", false);
+  if (f.has("steady_from")) r.steady_from = f.non_negative("steady_from", core::Quantity::time);
+  if (f.has("yield_strength")) r.yield_strength = f.positive("yield_strength", core::Quantity::stress);
+  const std::string histories = f.text_or("stress_histories", "none");
+  if (histories == "none") r.stress_histories = FrameStudyRequest::StressHistoryOutput::none;
+  else if (histories == "hot_spots") r.stress_histories = FrameStudyRequest::StressHistoryOutput::hot_spots;
+  else if (histories == "all") r.stress_histories = FrameStudyRequest::StressHistoryOutput::all;
+  else
+    throw f.error("stress_histories",
+                  "none, hot_spots (the top stations' worst points) or all (every station and section point) for frame_stress_histories.csv",
+                  quoted(histories));
   if (f.has("direct_substeps")) {
     r.direct_substeps = f.integer("direct_substeps");
     if (r.direct_substeps < 1) throw f.error("direct_substeps", "an integer >= 1", std::to_string(r.direct_substeps));
@@ -279,7 +289,7 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
   return model;
 }
 
-FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given) {
+FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, std::optional<double> rigid_steady_from) {
   const auto start = std::chrono::steady_clock::now();
   FrameStudyResults out;
   out.model = read_frame_mesh(q);
@@ -430,12 +440,43 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   for (const NodeOutputSpec& o : q.node_outputs) out.nodal.push_back(nodal_history(model, o, out.response, rates ? &*rates : nullptr));
   for (const RailSpec& rail : q.rails)
     out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations) : SectionHistory{});
+  // Stress histories at every station and section point, and the hot spots (docs/theory/coupling.md section 10).
+  {
+    std::vector<SectionHistory> computed(q.rails.size());
+    std::vector<SetHistory> sets;
+    for (std::size_t k = 0; k < q.rails.size(); ++k) {
+      const SectionHistory* h = &out.sections[k];
+      if (h->element_ids.empty()) {
+        computed[k] = section_history(model, out.response.displacement, q.rails[k].element_set, q.stations);
+        h = &computed[k];
+      }
+      sets.push_back({q.rails[k].name, h->element_ids, h->station_index, out.rails[k].station_points, &h->values});
+    }
+    out.stress = stress_histories(model, out.response.times, sets);
+  }
+  // No static state yet: static_forces stays empty (zero), total = dynamic.
+  out.hot_spots = find_hot_spots(out.stress, steady_window(rigid_steady_from, q.steady_from, out.response.times), 10, &out.static_forces);
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
 std::vector<core::Warning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
   std::vector<core::Warning> out;
+  // A von Mises stress above the yield strength the study declares (the total: static + dynamic).
+  if (q.yield_strength && r.hot_spots.peak.von_mises_total > *q.yield_strength && r.hot_spots.peak.station < r.stress.stations.size()) {
+    const core::UnitSystem& u = q.units;
+    const HotSpot& p = r.hot_spots.peak;
+    const StressStation& st = r.stress.stations[p.station];
+    const std::string S = u.label(core::Quantity::stress);
+    out.push_back({"stress_above_yield",
+                   fmt::format("{}: the peak von Mises stress {:.5g} {} (element {}, station {}, {}, X = {:.4g} {}, t = {:.4g} s) exceeds the yield "
+                               "strength {:.5g} {} (frame.yield_strength): the elastic frame model no longer holds there",
+                               st.set, u.from_si(p.von_mises_total, core::Quantity::stress), S, st.element_id, st.station, p.point_name,
+                               u.from_si(st.point.x(), core::Quantity::length), u.label(core::Quantity::length), p.time,
+                               u.from_si(*q.yield_strength, core::Quantity::stress), S),
+                   {{"peak_von_mises", u.from_si(p.von_mises_total, core::Quantity::stress), S},
+                    {"yield_strength", u.from_si(*q.yield_strength, core::Quantity::stress), S}}});
+  }
   // Only the study's clamp is artificial: free-free has no support, and the mesh's own *BOUNDARY is what
   // its author says holds the structure (a portal frame's feet).
   const bool clamp = q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped;

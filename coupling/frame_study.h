@@ -20,6 +20,9 @@
 //       tip: {node_set: TIP}
 //     pvd: true                            # ParaView time series
 //     mesh_loads: constant                 # the mesh's *CLOAD/*DLOAD: constant loads throughout | none
+//     steady_from: 0.5                     # s: steady operation from (else the rigid model's report, else the last half)
+//     stress_histories: hot_spots          # none | hot_spots | all: frame_stress_histories.csv
+//     yield_strength: 36000                # stress: warn when a von Mises stress exceeds it
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -45,6 +48,7 @@
 #include "core/warnings.h"
 #include "coupling/frame_balance.h"
 #include "coupling/frame_parts.h"
+#include "coupling/hot_spots.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
 #include "coupling/output_sets.h"
@@ -108,6 +112,12 @@ struct FrameStudyRequest {
   std::string structure_part;                  // the frame part the mesh models ("" without a vehicle model)
   std::string structure_source;                // "mesh": the vehicle model took the structure's mass from the mesh
   std::vector<std::string> parts_carried_by_mesh;
+  // Hot spots and stress histories (coupling/hot_spots.h): where steady operation
+  // starts when the rigid-body model does not say (s), which histories to write,
+  // and the yield strength a von Mises stress is checked against (Pa).
+  std::optional<double> steady_from;
+  enum class StressHistoryOutput { none, hot_spots, all } stress_histories = StressHistoryOutput::none;
+  std::optional<double> yield_strength;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
   core::InputLocation where(const std::string& key) const;
@@ -137,6 +147,14 @@ struct FrameStudyResults {
   Eigen::VectorXd constant_load;
   int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
   int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
+  // Stress histories at every station and section point of the element-set
+  // outputs (dynamic section forces, single precision) and their hot spots
+  // (docs/theory/coupling.md section 10). `static_forces`: the static
+  // section forces per stress station, added to the dynamic ones (total =
+  // static + dynamic); empty: zero (no static state computed).
+  StressHistories stress;
+  std::vector<fem::SectionForces> static_forces;
+  HotSpotReport hot_spots;
 };
 
 // The study's mesh, refused (naming frame.mesh) when it is in other units than
@@ -144,11 +162,14 @@ struct FrameStudyResults {
 fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 
 // Runs the study. `loads` replaces the request's load-history file (e.g. the
-// loads the rigid-body run just recovered). Throws core::InputError for a
+// loads the rigid-body run just recovered); `rigid_steady_from` is where the
+// rigid-body model's steady report puts the start of steady operation (s),
+// which the hot spots take before the study's frame.steady_from. Throws core::InputError for a
 // support or output set the mesh lacks (naming the study's key and the mesh
 // file) or a load point the mesh cannot take, core::NumericalError for a
 // failed solve.
-FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr);
+FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr,
+                                  std::optional<double> rigid_steady_from = std::nullopt);
 
 // The names of the supports and the method as a study file spells them.
 const char* supports_name(FrameSupports supports);
@@ -161,7 +182,8 @@ const char* method_name(FrameMethod method);
 // set's peak normal stress or resultant bending moment lies on an element
 // with a clamped node (at the clamp or within one element of it), where the
 // clamp's reaction sets the stress. One warning per output set when both
-// peaks share the element.
+// peaks share the element. `stress_above_yield`: the peak von Mises stress
+// exceeds the study's frame.yield_strength.
 std::vector<core::Warning> frame_warnings(const FrameStudyResults& results, const FrameStudyRequest& request);
 
 }  // namespace framedyn::coupling

@@ -14,6 +14,7 @@
 #include "fem/quadratic_beam_element.h"
 #include "coupling/frame_parts.h"
 #include "fem/section_forces.h"
+#include "fem/section_stress.h"
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
@@ -29,6 +30,50 @@ using coupling::MappedLoadPoint;
 using coupling::RailPeak;
 using coupling::RailRecovery;
 using coupling::SectionHistory;
+
+namespace {
+
+// frame_stress_histories.csv (frame.stress_histories: hot_spots or all): per
+// location (station and section point), one row per output time, of the
+// total state (static + dynamic; docs/theory/coupling.md section 10).
+void write_stress_histories(const FrameStudyResults& r, const FrameStudyRequest& q, const core::ResultsFolder& folder) {
+  using Output = FrameStudyRequest::StressHistoryOutput;
+  if (q.stress_histories == Output::none) return;
+  const coupling::StressHistories& h = r.stress;
+  std::vector<std::pair<std::size_t, int>> locations;  // (station, point)
+  if (q.stress_histories == Output::all) {
+    for (std::size_t s = 0; s < h.stations.size(); ++s)
+      for (std::size_t p = 0; p < h.points[static_cast<std::size_t>(h.stations[s].section)].size(); ++p) locations.emplace_back(s, static_cast<int>(p));
+  } else {
+    for (const auto* list : {&r.hot_spots.by_von_mises, &r.hot_spots.by_normal_range})
+      for (const coupling::HotSpot& x : *list)
+        if (std::find(locations.begin(), locations.end(), std::pair{x.station, x.point}) == locations.end()) locations.emplace_back(x.station, x.point);
+  }
+  const core::UnitSystem& u = q.units;
+  using core::Quantity;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), sf = 1.0 / u.to_si_factor(Quantity::stress);
+  const std::string L = u.label(Quantity::length), S = u.label(Quantity::stress);
+  report::CsvTable t({report::column("time", u.label(Quantity::time)), "set", "element", "station", report::column("X", L), report::column("Y", L),
+                      report::column("Z", L), "point", report::column("normal_stress", S), report::column("shear_stress", S),
+                      report::column("von_mises", S)});
+  for (const auto& [s, p] : locations) {
+    const coupling::StressStation& st = h.stations[s];
+    const std::size_t sec = static_cast<std::size_t>(st.section);
+    const fem::SectionPoint& point = h.points[sec][static_cast<std::size_t>(p)];
+    const fem::SectionForces fs = r.static_forces.empty() ? fem::SectionForces{} : r.static_forces[s];
+    for (Eigen::Index j = 0; j < h.times.size(); ++j) {
+      const fem::SectionForces d = h.forces_at(s, j);
+      fem::SectionForces f = fs;
+      f.n += d.n, f.vy += d.vy, f.vz += d.vz, f.t += d.t, f.my += d.my, f.mz += d.mz;
+      const fem::PointStress ps = fem::point_stress(h.sections[sec], point, f);
+      t.row().add(h.times(j)).add(st.set).add(st.element_id).add(st.station).add(st.point.x() * lf).add(st.point.y() * lf).add(st.point.z() * lf)
+          .add(point.name).add(ps.normal * sf).add(ps.shear * sf).add(ps.von_mises * sf);
+    }
+  }
+  folder.write_text("frame_stress_histories.csv", t.str());
+}
+
+}  // namespace
 
 void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q, const core::ResultsFolder& folder,
                          const std::function<void(int, int)>& written) {
@@ -119,6 +164,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
       }
     folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
   }
+  write_stress_histories(r, q, folder);
   if (!q.pvd) return;
   // ParaView time series: one VTU per output time, a PVD collection naming them.
   const fem::FrameModel& m = r.model;
@@ -197,6 +243,62 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   pvd += "  </Collection>\n</VTKFile>\n";
   folder.write_text("frame_response.pvd", pvd);
 }
+
+namespace {
+
+// frame.hot_spots, frame.hot_spots_by_normal_stress_range, frame.peak_von_mises and
+// frame.hot_spot_window (docs/theory/coupling.md section 10), in the study's units.
+void add_hot_spots(nlohmann::ordered_json& j, const FrameStudyResults& r, const FrameStudyRequest& q) {
+  using nlohmann::ordered_json;
+  using core::Quantity;
+  const core::UnitSystem& u = q.units;
+  const coupling::HotSpotReport& h = r.hot_spots;
+  const std::string S = u.label(Quantity::stress), L = u.label(Quantity::length), T = u.label(Quantity::time);
+  const auto stress = [&](double v) { return u.from_si(v, Quantity::stress); };
+  const auto where = [&](const coupling::HotSpot& x) {
+    const coupling::StressStation& st = r.stress.stations[x.station];
+    return ordered_json{{"set", st.set},
+                        {"element", st.element_id},
+                        {"station", st.station},
+                        {"X", {{"value", u.from_si(st.point.x(), Quantity::length)}, {"unit", L}}},
+                        {"Y", {{"value", u.from_si(st.point.y(), Quantity::length)}, {"unit", L}}},
+                        {"Z", {{"value", u.from_si(st.point.z(), Quantity::length)}, {"unit", L}}},
+                        {"point", x.point_name}};
+  };
+  const auto spot = [&](const coupling::HotSpot& x) {
+    ordered_json o = where(x);
+    o["von_mises"] = {{"static", stress(x.von_mises_static)}, {"dynamic", stress(x.von_mises_dynamic)}, {"total", stress(x.von_mises_total)}, {"unit", S}};
+    o["normal_stress_range"] = {{"value", stress(x.normal_stress_range)}, {"unit", S}};
+    o["time"] = {{"value", x.time}, {"unit", T}};
+    o["startup_peak_von_mises"] = {{"value", stress(x.startup_peak_von_mises)}, {"unit", S}, {"time", {{"value", x.startup_time}, {"unit", T}}}};
+    return o;
+  };
+  if (r.stress.stations.empty()) return;
+  ordered_json by_vm = ordered_json::array(), by_range = ordered_json::array();
+  for (const coupling::HotSpot& x : h.by_von_mises) by_vm.push_back(spot(x));
+  for (const coupling::HotSpot& x : h.by_normal_range) by_range.push_back(spot(x));
+  j["hot_spots"] = by_vm;
+  j["hot_spots_by_normal_stress_range"] = by_range;
+  if (h.peak.point_name.empty()) return;  // no section points (GENERAL sections only): no peak to name
+  const bool in_startup = h.startup_times > 0 && h.peak.time < h.window.from;
+  j["peak_von_mises"] = {{"value", stress(h.peak.von_mises_total)},
+                         {"unit", S},
+                         {"where", where(h.peak)},
+                         {"when", {{"value", h.peak.time}, {"unit", T}}},
+                         {"in", in_startup ? "start-up" : "steady operation"}};
+  j["hot_spot_window"] = {
+      {"steady_from", {{"value", h.window.from}, {"unit", T}}},
+      {"source", h.window.source},
+      {"startup_times", h.startup_times},
+      {"steady_times", h.steady_times},
+      {"startup_peak_von_mises", {{"value", stress(h.startup_peak.von_mises_total)}, {"unit", S}}},
+      {"steady_peak_von_mises", {{"value", stress(h.steady_peak.von_mises_total)}, {"unit", S}}},
+      {"static_state", r.static_forces.empty() ? "zero: no static state computed, total = dynamic" : "static section forces added: total = static + dynamic"},
+      {"stress_histories_in_memory_bytes", h.memory_bytes},
+      {"ranked_by", "each station's worst section point; ties within 1e-6 go to the lower station, point and time"}};
+}
+
+}  // namespace
 
 nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStudyRequest& q) {
   using nlohmann::ordered_json;
@@ -355,6 +457,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     outputs[h.spec.name] = o;
   }
   j["outputs"] = outputs;
+  add_hot_spots(j, r, q);
   return j;
 }
 

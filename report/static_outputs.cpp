@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 
+#include "fem/section_stress.h"
 #include "report/csv_writer.h"
 #include "report/vtu_writer.h"
 
@@ -92,10 +93,14 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
   folder.write_text("reactions.csv", reac.str());
 
   CsvTable sec({"element", "station", column("x", L), column("X", L), column("Y", L), column("Z", L), column("N", F), column("Vy", F),
-                column("Vz", F), column("T", M), column("My", M), column("Mz", M), column("fiber_stress_max", S), column("fiber_stress_min", S)});
+                column("Vz", F), column("T", M), column("My", M), column("Mz", M), column("fiber_stress_max", S), column("fiber_stress_min", S),
+                column("von_mises_max", S), column("shear_max", S)});
   std::vector<double> cell_max(model.beams.size(), 0.0);
   std::map<int, std::size_t> beam_pos;
   for (std::size_t i = 0; i < model.beams.size(); ++i) beam_pos[model.beams[i].id] = i;
+  // The section points of every section (fem/section_stress.h): von Mises and |tau| over them, per station.
+  std::vector<std::vector<fem::SectionPoint>> points;
+  for (const fem::SectionAssignment& a : model.sections) points.push_back(fem::section_points(a.properties));
   for (const fem::StationResult& s : stations) {
     const auto [smax, smin] = fiber_extremes(s);
     const double peak = std::max(std::abs(smax), std::abs(smin));
@@ -104,6 +109,13 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     sec.row().add(s.element_id).add(s.station).add(s.x * lf).add(s.point.x() * lf).add(s.point.y() * lf).add(s.point.z() * lf);
     sec.add(s.forces.n * ff).add(s.forces.vy * ff).add(s.forces.vz * ff).add(s.forces.t * mf).add(s.forces.my * mf).add(s.forces.mz * mf);
     sec.add(s.fiber_stress.empty() ? 0.0 : smax * sf).add(s.fiber_stress.empty() ? 0.0 : smin * sf);
+    const std::size_t section = static_cast<std::size_t>(model.beams[beam_pos[s.element_id]].section);
+    double von_mises = 0.0, shear = 0.0;  // 0 for a GENERAL section (no points)
+    for (const fem::PointStress& p : fem::point_stresses(model.sections[section].properties, points[section], s.forces)) {
+      von_mises = std::max(von_mises, p.von_mises);
+      shear = std::max(shear, p.shear);
+    }
+    sec.add(von_mises * sf).add(shear * sf);
   }
   folder.write_text("section_forces.csv", sec.str());
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -194,7 +195,22 @@ TEST(Cli, StaticCantileverTipDeflectionB31) {
   EXPECT_NEAR(std::stod(reactions[0].at("fy [N]")), -kPy, 1e-6 * kPy);
   EXPECT_NEAR(std::stod(reactions[0].at("my [N*m]")), kPz * kL, 1e-6 * kPz * kL);
 
-  EXPECT_EQ(read_csv(out / "section_forces.csv").size(), 4u * 3u);  // 4 elements, 3 stations
+  const auto sections = read_csv(out / "section_forces.csv");
+  EXPECT_EQ(sections.size(), 4u * 3u);  // 4 elements, 3 stations
+  // At the root (element 1, station 0): Pz bends about local 2 (a along n1 = -z), Py about local 1 (b along n2 = +y).
+  // Corners: sigma = Py L (b/2) / I11 + Pz L (a/2) / I22 and no shear; mid-sides: one moment's stress with 1.5 V / A
+  // (fem/section_stress.h); von_mises_max is the largest of these, shear_max 1.5 max(Py, Pz) / A.
+  {
+    const double i11 = kA * kB * kB * kB / 12, i22 = kB * kA * kA * kA / 12, area = kA * kB;
+    const double corner = kPy * kL * (kB / 2) / i11 + kPz * kL * (kA / 2) / i22;
+    const double side_y = std::hypot(kPz * kL * (kA / 2) / i22, std::sqrt(3.0) * 1.5 * kPy / area);  // sides x1 = +-a/2
+    const double side_z = std::hypot(kPy * kL * (kB / 2) / i11, std::sqrt(3.0) * 1.5 * kPz / area);  // sides x2 = +-b/2
+    const double von_mises = std::max({corner, side_y, side_z});
+    ASSERT_EQ(sections[0].at("element"), "1");
+    ASSERT_EQ(sections[0].at("station"), "0");
+    EXPECT_NEAR(std::stod(sections[0].at("von_mises_max [Pa]")), von_mises, 1e-6 * von_mises);
+    EXPECT_NEAR(std::stod(sections[0].at("shear_max [Pa]")), 1.5 * kPz / area, 1e-6 * 1.5 * kPz / area);
+  }
   const nlohmann::json j = nlohmann::json::parse(read_file(out / "summary.json"));
   EXPECT_EQ(j.at("framedyn").at("command"), "static");
   EXPECT_EQ(j.at("frame").at("max_displacement").at("node"), 5);

@@ -475,6 +475,7 @@ std::vector<Row> rows() {
                 "radius_of_gyration: 18", "cab.radius_of_gyration"),
       frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
       frame_row("STUDY-90", "  stations: 3\n", "  stations: 3\n  mesh_loads: gravity\n", "mesh_loads:", "frame.mesh_loads"),
+      frame_row("STUDY-102", "  stations: 3\n", "  stations: 3\n  stress_histories: yes\n", "stress_histories:", "frame.stress_histories"),
       // ---- the frame structure's mass from the frame mesh (coupling/frame_mass_source.cpp)
       study_row("STUDY-96", kStructurePart, "{name: frame_structure, from: frame_mesh}", "from: frame_mesh", "frame.parts[0].from", kStudy3D),
       structure_row("STUDY-97", kStructurePart, "{name: tubes, weight: 565.6, position: [27.5, 0, 0], radii_of_gyration: [14, 30.3, 33.5]}",

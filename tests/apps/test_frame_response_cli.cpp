@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -121,6 +122,59 @@ TEST(FrameResponseCommand, MissingOutputSetExitsOneNamingStudyLineMeshAndSet) {
             std::string::npos)
       << log;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+// frame.stress_histories: hot_spots writes frame_stress_histories.csv for the
+// hot spots' points (theory/coupling.md section 10): one row per location and
+// output time, units in the header; the summary's top hot spot is the largest
+// von Mises stress of that CSV over steady operation (the last half of the
+// record: the study gives no steady_from); a yield strength below it warns.
+TEST(FrameResponseCommand, StressHistoriesOnRequestHoldTheTopHotSpotsPeak) {
+  framedyn::testing::TempDir dir;
+  std::string study = slurp(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway.yaml");
+  study.replace(study.find("mesh: ../meshes/portal_frame.inp") + 6, 26, std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/portal_frame.inp");
+  study.replace(study.find("loads: portal_frame_sway_loads.csv") + 7, 27, std::string(FRAMEDYN_SOURCE_DIR) + "/examples/portal_frame_sway_loads.csv");
+  study.replace(study.find("  stations: 3\n"), 14, "  stations: 3\n  stress_histories: hot_spots\n  yield_strength: 1.0e5\n");
+  const auto file = dir.write("s.yaml", study);
+  const std::string cmd = kBinary + " frame-response " + file.string() + " -o " + (dir / "out").string() + " > " + (dir / "log").string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / "log");
+  const nlohmann::json summary = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+  const nlohmann::json& j = summary["frame"];
+  EXPECT_EQ(j["hot_spot_window"]["source"], "last half of the record");
+  EXPECT_NEAR(j["hot_spot_window"]["steady_from"]["value"].get<double>(), 0.5, 1e-12);
+  ASSERT_EQ(j["hot_spots"].size(), 10u);
+  std::vector<std::string> locations;
+  for (const char* list : {"hot_spots", "hot_spots_by_normal_stress_range"})
+    for (const auto& h : j[list]) {
+      const std::string key = h["set"].get<std::string>() + "," + std::to_string(h["element"].get<int>()) + "," + std::to_string(h["station"].get<int>()) +
+                              "," + h["point"].get<std::string>();
+      if (std::find(locations.begin(), locations.end(), key) == locations.end()) locations.push_back(key);
+    }
+  std::istringstream csv(slurp(dir / "out" / "frame_stress_histories.csv"));
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time [s],set,element,station,X [m],Y [m],Z [m],point,normal_stress [Pa],shear_stress [Pa],von_mises [Pa]");
+  const nlohmann::json& top = j["hot_spots"][0];
+  const std::string top_key = top["set"].get<std::string>() + "," + std::to_string(top["element"].get<int>()) + "," +
+                              std::to_string(top["station"].get<int>());
+  int rows = 0;
+  double steady_max = 0.0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<std::string> c;
+    std::istringstream cells(line);
+    for (std::string x; std::getline(cells, x, ',');) c.push_back(x);
+    ASSERT_EQ(c.size(), 11u) << line;
+    if (c[1] + "," + c[2] + "," + c[3] == top_key && c[7] == top["point"].get<std::string>() && std::stod(c[0]) >= 0.5 - 1e-9)
+      steady_max = std::max(steady_max, std::stod(c[10]));
+  }
+  EXPECT_EQ(rows, static_cast<int>(locations.size()) * 501);  // 1 s every 2 ms
+  const double peak = top["von_mises"]["total"].get<double>();
+  EXPECT_NEAR(steady_max, peak, 1e-6 * peak);
+  EXPECT_EQ(top["von_mises"]["static"].get<double>(), 0.0);
+  bool warned = false;
+  for (const auto& w : summary["warnings"]) warned = warned || w["code"] == "stress_above_yield";
+  EXPECT_EQ(warned, j["peak_von_mises"]["value"].get<double>() > 1.0e5);
 }
 
 }  // namespace

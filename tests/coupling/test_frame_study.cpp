@@ -8,6 +8,8 @@
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
+#include "fem/section_forces.h"
+#include "fem/section_stress.h"
 #include "report/frame_outputs.h"
 #include "tests/support/temp_dir.h"
 
@@ -118,6 +120,43 @@ TEST(FrameStudyInput, StrictErrorsNameKeyAndLine) {
   EXPECT_NE(error_of("  modes: 0\n").find("frame.modes"), std::string::npos);
   EXPECT_NE(error_of("  damping: {modal_ratio: 1.5}\n").find("[0, 1)"), std::string::npos);
   EXPECT_NE(error_of("  stations: 1\n").find("s.yaml:"), std::string::npos);
+}
+
+// The hot spots of a frame study (coupling/hot_spots.h): the steady start
+// from the rigid model's report before frame.steady_from; the top hot spot's
+// von Mises stress recomputed from the displacements in double precision
+// (fem::beam_stations, fem::point_stress) at its time; and no corner stress
+// above the peak von Mises (sigma_vM >= |sigma| at every point).
+TEST(FrameStudy, HotSpotsTakeTheSteadyStartInOrderAndMatchARecomputationFromTheDisplacements) {
+  framedyn::testing::TempDir dir;
+  dir.write("loads.csv", load_file());
+  const auto q = coupling::read_frame_study(
+      dir.write("hs.yaml", study("  supports: fixed_rear_end\n  modes: 20\n  stations: 5\n  steady_from: 0.15\n")).string());
+  const coupling::FrameStudyResults own = coupling::run_frame_study(q);
+  EXPECT_EQ(own.hot_spots.window.from, 0.15);
+  EXPECT_EQ(own.hot_spots.window.source, "frame.steady_from");
+  const coupling::FrameStudyResults r = coupling::run_frame_study(q, nullptr, 0.08);
+  EXPECT_EQ(r.hot_spots.window.from, 0.08);
+  EXPECT_EQ(r.hot_spots.window.source, "rigid-body model's steady report");
+  EXPECT_EQ(r.hot_spots.startup_times, 80u);  // t = 0 .. 0.079 s at 1 kHz
+  ASSERT_EQ(r.hot_spots.by_von_mises.size(), 10u);
+  const coupling::HotSpot& top = r.hot_spots.by_von_mises.front();
+  const coupling::StressStation& st = r.stress.stations[top.station];
+  Eigen::Index j = 0;
+  while (std::abs(r.response.times(j) - top.time) > 1e-12) ++j;
+  const int b = r.model.beam_index(st.element_id);
+  const fem::StationResult at = fem::beam_stations(r.model, b, r.response.displacement.col(j), 5)[static_cast<std::size_t>(st.station)];
+  const fem::SectionProperties& sec = r.model.sections[static_cast<std::size_t>(st.section)].properties;
+  const double recomputed = fem::point_stress(sec, fem::section_points(sec)[static_cast<std::size_t>(top.point)], at.forces).von_mises;
+  std::cout << "[ measured ] top hot spot " << st.set << " element " << st.element_id << " station " << st.station << " " << top.point_name
+            << ": " << top.von_mises_total << " Pa at t = " << top.time << " s; recomputed in double " << recomputed << " Pa\n";
+  // Single-precision section forces: 1e-6 relative.
+  EXPECT_NEAR(top.von_mises_total, recomputed, 1e-6 * recomputed);
+  EXPECT_EQ(top.von_mises_total, top.von_mises_dynamic);  // no static state: total = dynamic
+  for (std::size_t k = 1; k < r.hot_spots.by_von_mises.size(); ++k)
+    EXPECT_GE(r.hot_spots.by_von_mises[k - 1].von_mises_total, r.hot_spots.by_von_mises[k].von_mises_total * (1 - 1e-6));
+  for (const coupling::RailRecovery& rail : r.rails)
+    EXPECT_GE(r.hot_spots.peak.von_mises_total, std::abs(rail.peak_normal_stress.value) * (1 - 1e-6)) << rail.spec.name;
 }
 
 }  // namespace

@@ -1,0 +1,148 @@
+// Hot spots from stress histories (coupling/hot_spots.h, docs/theory/coupling.md
+// section 10) on hand-made histories whose answers are known by construction:
+//  - the ranking by steady peak von Mises and by normal-stress range, with an
+//    exact tie going to the lower station;
+//  - the start-up / steady split where the steady report (or frame.steady_from,
+//    or half the record) puts it;
+//  - static = 0 gives total = dynamic; a static axial force adds N / A;
+//  - the yield-strength warning.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <vector>
+
+#include "coupling/frame_study.h"
+#include "coupling/hot_spots.h"
+#include "fem/beam_section.h"
+#include "fem/section_stress.h"
+
+namespace {
+
+namespace coupling = framedyn::coupling;
+namespace fem = framedyn::fem;
+
+constexpr double kA = 0.05, kB = 0.1;          // RECT, m
+const double kI11 = kA * kB * kB * kB / 12;   // bending about 1 by My: sigma = My x2 / I11
+
+// Stations 0..n-1 of one RECT section, times 0, 0.01, ..., with My(station, time) from `moment`.
+template <typename F>
+coupling::StressHistories histories(int stations, int times, F moment) {
+  coupling::StressHistories h;
+  h.sections = {fem::rectangle_section(kA, kB, 0.3)};
+  h.points = {fem::section_points(h.sections[0])};
+  h.times = Eigen::VectorXd::LinSpaced(times, 0.0, 0.01 * (times - 1));
+  h.forces = Eigen::MatrixXf::Zero(6 * stations, times);
+  for (int s = 0; s < stations; ++s) {
+    h.stations.push_back({"rail", 100 + s, 0, Eigen::Vector3d(s, 0, 0), 0});
+    for (int j = 0; j < times; ++j) h.forces(6 * s + 4, j) = static_cast<float>(moment(s, h.times(j)));
+  }
+  return h;
+}
+
+// Station 0 swings +-M (range 2 M c / I, peak M c / I); station 1 sits at
+// 1.5 M plus a small ripple (the largest peak, a small range); station 2 is
+// station 1 exactly (a tie: station 1 ranks first); station 3 is small.
+TEST(HotSpots, RankedBySteadyPeakVonMisesAndByNormalStressRangeWithTiesToTheLowerStation) {
+  const double m = 1000.0, c = kB / 2;
+  const auto moment = [&](int s, double t) {
+    const double wave = std::sin(2 * 3.14159265358979 * 5 * t);
+    if (s == 0) return m * wave;
+    if (s == 1 || s == 2) return 1.5 * m + 0.1 * m * wave;
+    return 0.2 * m * wave;
+  };
+  const coupling::StressHistories h = histories(4, 201, moment);
+  const coupling::HotSpotReport r = coupling::find_hot_spots(h, {0.0, "test"}, 3);
+  ASSERT_EQ(r.by_von_mises.size(), 3u);
+  EXPECT_EQ(r.by_von_mises[0].station, 1u);
+  EXPECT_EQ(r.by_von_mises[1].station, 2u);
+  EXPECT_EQ(r.by_von_mises[2].station, 0u);
+  // Corners carry no shear: von Mises = |sigma| = 1.6 M c / I at the peak of the ripple (float storage: 1e-6).
+  EXPECT_NEAR(r.by_von_mises[0].von_mises_total, 1.6 * m * c / kI11, 1e-6 * 1.6 * m * c / kI11);
+  // Among the tied corners (+1+2 and -1+2 see the same sigma; -2 corners the same magnitude) the first listed.
+  EXPECT_EQ(r.by_von_mises[0].point_name, h.points[0][static_cast<std::size_t>(r.by_von_mises[0].point)].name);
+  EXPECT_EQ(r.by_von_mises[0].point, 0);
+  ASSERT_EQ(r.by_normal_range.size(), 3u);
+  EXPECT_EQ(r.by_normal_range[0].station, 0u);
+  EXPECT_NEAR(r.by_normal_range[0].normal_stress_range, 2 * m * c / kI11, 1e-6 * 2 * m * c / kI11);
+  EXPECT_EQ(r.by_normal_range[1].station, 3u);  // 0.4 M against the ripple stations' 0.2 M
+  // The first of equal peaks in time (the ripple peaks every 0.2 s from t = 0.05 s).
+  EXPECT_NEAR(r.by_von_mises[0].time, 0.05, 1e-12);
+}
+
+// A start-up spike at t = 0.1 s, then a steady swing: the steady peak ignores
+// the spike, the start-up peak is the spike, and the split sits at `from`.
+TEST(HotSpots, StartUpAndSteadyPeaksSplitWhereTheSteadyReportSays) {
+  const double m = 500.0, c = kB / 2;
+  const auto moment = [&](int, double t) { return (std::abs(t - 0.1) < 1e-9 ? 4 * m : 0.0) + m * std::sin(2 * 3.14159265358979 * 5 * t); };  // the swing's peaks at t = 0.05 + 0.1 k, on the samples
+  const coupling::StressHistories h = histories(1, 101, moment);  // t = 0 .. 1 s
+  // The rigid model's report wins over frame.steady_from, which wins over half the record.
+  EXPECT_EQ(coupling::steady_window(0.3, 0.6, h.times).from, 0.3);
+  EXPECT_EQ(coupling::steady_window(0.3, 0.6, h.times).source, "rigid-body model's steady report");
+  EXPECT_EQ(coupling::steady_window(std::nullopt, 0.6, h.times).from, 0.6);
+  EXPECT_EQ(coupling::steady_window(std::nullopt, std::nullopt, h.times).from, 0.5);
+  EXPECT_EQ(coupling::steady_window(std::nullopt, std::nullopt, h.times).source, "last half of the record");
+  const coupling::HotSpotReport r = coupling::find_hot_spots(h, coupling::steady_window(0.3, std::nullopt, h.times));
+  EXPECT_EQ(r.startup_times, 30u);  // t = 0 .. 0.29
+  EXPECT_EQ(r.steady_times, 71u);   // t = 0.30 .. 1.00
+  EXPECT_NEAR(r.startup_peak.von_mises_total, 4 * m * c / kI11, 1e-6 * 4 * m * c / kI11);
+  EXPECT_NEAR(r.startup_peak.time, 0.1, 1e-12);
+  EXPECT_NEAR(r.steady_peak.von_mises_total, m * c / kI11, 1e-6 * m * c / kI11);
+  EXPECT_GE(r.steady_peak.time, 0.3);
+  EXPECT_NEAR(r.peak.time, 0.1, 1e-12);  // the whole record's peak is the spike
+  EXPECT_NEAR(r.by_von_mises[0].startup_peak_von_mises, r.startup_peak.von_mises_total, 1e-9 * r.startup_peak.von_mises_total);
+}
+
+// Total = static + dynamic: with no static state (or a zero one) the total is
+// the dynamic stress; a static axial force N adds N / A at every point.
+TEST(HotSpots, ZeroStaticStateGivesTotalEqualToDynamicAndAStaticForceAdds) {
+  const double m = 800.0, c = kB / 2, n = 2.0e5;
+  const coupling::StressHistories h = histories(2, 51, [&](int s, double t) { return (s + 1) * m * std::cos(7 * t); });
+  const coupling::HotSpotReport none = coupling::find_hot_spots(h, {0.2, "test"});
+  const std::vector<fem::SectionForces> zero(2);
+  const coupling::HotSpotReport zeros = coupling::find_hot_spots(h, {0.2, "test"}, 10, &zero);
+  ASSERT_EQ(none.by_von_mises.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(none.by_von_mises[k].von_mises_total, zeros.by_von_mises[k].von_mises_total);
+    EXPECT_EQ(none.by_von_mises[k].von_mises_total, none.by_von_mises[k].von_mises_dynamic);
+    EXPECT_EQ(none.by_von_mises[k].von_mises_static, 0.0);
+  }
+  std::vector<fem::SectionForces> axial(2);
+  for (fem::SectionForces& f : axial) f.n = n;
+  const coupling::HotSpotReport with = coupling::find_hot_spots(h, {0.2, "test"}, 10, &axial);
+  const coupling::HotSpot& top = with.by_von_mises[0];
+  EXPECT_EQ(top.station, 1u);
+  EXPECT_NEAR(top.von_mises_static, n / (kA * kB), 1e-9 * n / (kA * kB));
+  // The worst point is the tension side: N / A + |My| c / I at the largest |My| after t = 0.2 s.
+  double peak_moment = 0.0;
+  for (Eigen::Index j = 0; j < h.times.size(); ++j)
+    if (h.times(j) >= 0.2) peak_moment = std::max(peak_moment, 2 * m * std::abs(std::cos(7 * h.times(j))));
+  EXPECT_NEAR(top.von_mises_total, n / (kA * kB) + peak_moment * c / kI11, 1e-6 * top.von_mises_total);
+  EXPECT_NEAR(top.von_mises_dynamic, peak_moment * c / kI11, 1e-6 * top.von_mises_total);
+  // The range is the dynamic one: the static part cancels.
+  EXPECT_NEAR(with.by_normal_range[0].normal_stress_range, none.by_normal_range[0].normal_stress_range, 1e-6 * top.von_mises_total);
+}
+
+// The yield warning: only with frame.yield_strength, only when the peak total von Mises exceeds it.
+TEST(HotSpots, AStressAboveTheDeclaredYieldStrengthWarns) {
+  coupling::FrameStudyResults r;
+  r.stress = histories(1, 11, [](int, double t) { return 1000.0 * t; });
+  r.hot_spots = coupling::find_hot_spots(r.stress, {0.0, "test"});
+  coupling::FrameStudyRequest q;
+  q.supports = coupling::FrameSupports::free_free_inertia_relief;
+  const auto codes = [&] {
+    std::vector<std::string> c;
+    for (const auto& w : coupling::frame_warnings(r, q)) c.push_back(w.code);
+    return c;
+  };
+  EXPECT_TRUE(codes().empty());
+  const double peak = r.hot_spots.peak.von_mises_total;  // 100 N m * c / I = 1.2 MPa
+  q.yield_strength = 1.01 * peak;
+  EXPECT_TRUE(codes().empty());
+  q.yield_strength = 0.99 * peak;
+  ASSERT_EQ(codes().size(), 1u);
+  EXPECT_EQ(codes()[0], "stress_above_yield");
+}
+
+}  // namespace
