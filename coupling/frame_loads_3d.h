@@ -35,6 +35,17 @@ std::vector<std::string> frame_load_point_names();
 
 FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajectory& trajectory);
 
+// The static frame loads: the same load points at the vehicle model's static
+// equilibrium under gravity (rigid/contact_statics.h, Eqs. 11.1-11.4), one
+// sample at t = 0. Each attached body's weight (reel, axles, plow), the static
+// contact forces SF_e (zero for a contact the statics released and for the soil,
+// which carries nothing statically under unilateral contacts) and the cab
+// mounts' static forces; no acceleration, shaker or chain force (their mean is
+// in the dynamic loads, which are measured from this equilibrium). With the
+// frame assembly's own weight these loads balance (docs/theory/coupling.md,
+// section 11).
+FrameLoads3D static_frame_loads_3d(const rigid::Machine3D& machine);
+
 // Every load the vehicle model puts on the frame, as one history: points
 // 24-31, then the attachment's (`direct`: P19_PLOW_SWING_PIN, or
 // P19_CHAIN_PIN and BOOM_SOIL). This is what the frame model is loaded with

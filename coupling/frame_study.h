@@ -20,6 +20,7 @@
 //       tip: {node_set: TIP}
 //     pvd: true                            # ParaView time series
 //     mesh_loads: constant                 # the mesh's *CLOAD/*DLOAD: constant loads throughout | none
+//     dead_load: true                      # pipeline only: static state (gravity, static loads) + dynamic
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -44,6 +45,7 @@
 #include "core/units.h"
 #include "core/warnings.h"
 #include "coupling/frame_balance.h"
+#include "coupling/frame_dead_load.h"
 #include "coupling/frame_parts.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
@@ -92,6 +94,15 @@ struct FrameStudyRequest {
   // throughout, the response starting from the static equilibrium under them
   // (frame-response's default; the pipeline's loads come from the vehicle model).
   bool mesh_loads = false;
+  // Static plus dynamic (docs/theory/coupling.md, section 11): the frame
+  // model's static state under gravity and the vehicle model's static loads,
+  // added to the dynamic response at every section point. The pipeline's
+  // default (frame_response.dead_load: false for the thesis's dynamic-only
+  // stresses); a frame-response study has no key (mesh_loads: constant there).
+  bool dead_load = false;
+  // m/s^2 in the frame model's axes: the vehicle model's axes, whose Z is
+  // vertical whatever the ground slope (the ground, not gravity, is inclined).
+  Eigen::Vector3d gravity{0.0, 0.0, -9.80665};
   // Output sets: element sets (section forces and stresses; the rails in the
   // pipeline) and node sets (nodal histories), in the study's order.
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
@@ -136,6 +147,9 @@ struct FrameStudyResults {
   Eigen::VectorXd constant_load;
   int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
   int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
+  // With request.dead_load: the static state (gravity and the static loads),
+  // whose section forces per output station the section-stress code takes.
+  std::optional<FrameStaticState> static_state;
 };
 
 // The study's mesh, refused (naming frame.mesh) when it is in other units than
@@ -147,7 +161,9 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 // support or output set the mesh lacks (naming the study's key and the mesh
 // file) or a load point the mesh cannot take, core::NumericalError for a
 // failed solve.
-FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr);
+// `static_loads` (with request.dead_load): the static loads at the same load
+// points as the history (one row; static_frame_loads_3d), null for gravity alone.
+FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr, const LoadHistory* static_loads = nullptr);
 
 // The names of the supports and the method as a study file spells them.
 const char* supports_name(FrameSupports supports);
