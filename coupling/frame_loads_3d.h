@@ -5,8 +5,8 @@
 // laws on the attached body with its own inertia taken out (reel, front axle,
 // rear axle) or from the mount elements (Eqs. 3.13-3.15). Loads are ON the
 // frame, in the fixed vehicle axes, moments about the load point. Dynamic
-// parts only, as in the 2-D frame loads (the static weight distribution is
-// left out). The plow's or chain's loads on the frame at point 19 are
+// parts (the motion about the static equilibrium), as in the 2-D frame loads;
+// the static parts at the same points are static_frame_loads_3d (below). The plow's or chain's loads on the frame at point 19 are
 // returned too (`direct`), so that the frame's free body can be checked.
 // docs/theory/coupling.md, "3-D frame loads".
 #pragma once
