@@ -349,8 +349,8 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     ordered_json where = {{"rail", st.peak_output}, {"element", st.peak_normal_stress.element_id}, {"station", st.peak_normal_stress.station},
                           {"fiber", st.peak_normal_stress.fiber}, {"x", quantity(st.peak_normal_stress.point.x() * lf, L)}};
     s["peak_normal_stress"] = {{"value", u.from_si(st.peak_normal_stress.value, Quantity::stress)}, {"unit", u.label(Quantity::stress)}, {"where", where}};
-    s["residual"] = {{"force", st.force_residual},
-                     {"moment", st.moment_residual},
+    s["residual"] = {{"relative_force", st.force_residual},
+                     {"relative_moment", st.moment_residual},
                      {"meaning", "|resultant force| / weight and |resultant moment about the c.g.| / (weight x the model's largest extent) of gravity "
                                  "plus the static loads (Eq. 11.3): round-off when the frame model carries the vehicle model's frame assembly"}};
     s["free_rigid_motions"] = st.free_rigid_motions;

@@ -124,8 +124,8 @@ TEST_F(OffsetPlowingPipeline, StaticStateBalancesAndTheTotalPeakIsReportedBeside
   ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
   const nlohmann::json& frame = summary_["frame"];
   ASSERT_TRUE(frame.contains("static"));
-  EXPECT_LT(frame["static"]["residual"]["force"].get<double>(), 1e-9);
-  EXPECT_LT(frame["static"]["residual"]["moment"].get<double>(), 1e-9);
+  EXPECT_LT(frame["static"]["residual"]["relative_force"].get<double>(), 1e-9);
+  EXPECT_LT(frame["static"]["residual"]["relative_moment"].get<double>(), 1e-9);
   EXPECT_EQ(frame["static"]["gravity"]["unit"], "in/s^2");
   EXPECT_NEAR(frame["static"]["gravity"]["value"][2].get<double>(), -9.80665 / 0.0254, 1e-9);
   // The frame model's weight is the vehicle model's frame assembly's (tubes and parts, 2,465.65 lbf).
