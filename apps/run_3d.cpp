@@ -207,7 +207,8 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     // Every load on the frame (points 24-31 and the attachment's at point 19).
     const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
     progress.stage("frame transient (pipeline)");
-    frame = coupling::run_frame_study(*study.frame_response, &loads, r.steady.operation.reached_at);
+    const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
+    frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at);
     progress.stage("writing results (frame)");
     report::write_frame_outputs(*frame, *study.frame_response, folder, progress.step_callback());
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
@@ -256,6 +257,17 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                  rail.spec.name, u.from_si(rail.peak_bending_moment.value, Quantity::moment), u.label(Quantity::moment),
                  rail.peak_bending_moment.point.x() * lf, u.label(Quantity::length), rail.peak_bending_moment.time,
                  u.from_si(rail.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), 100.0 * rail.bending_share);
+    if (f.static_state) {
+      const coupling::FrameStaticState& st = *f.static_state;
+      fmt::print("static state (gravity and the static loads): peak normal stress {:.5g} {} on {} at X = {:.4g} {}; balance residual {:.1e} (force), "
+                 "{:.1e} (moment)\n",
+                 u.from_si(st.peak_normal_stress.value, Quantity::stress), u.label(Quantity::stress), st.peak_output,
+                 st.peak_normal_stress.point.x() * lf, u.label(Quantity::length), st.force_residual, st.moment_residual);
+      for (const coupling::RailRecovery& rail : f.rails)
+        fmt::print("{}: peak total (static + dynamic) normal stress {:.5g} {} at X = {:.4g} {}, t = {:.4f} s\n", rail.spec.name,
+                   u.from_si(rail.peak_total_normal_stress.value, Quantity::stress), u.label(Quantity::stress),
+                   rail.peak_total_normal_stress.point.x() * lf, u.label(Quantity::length), rail.peak_total_normal_stress.time);
+    }
     print_hot_spot_line(f, u);
   }
   if (figures) {

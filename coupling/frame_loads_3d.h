@@ -5,8 +5,8 @@
 // laws on the attached body with its own inertia taken out (reel, front axle,
 // rear axle) or from the mount elements (Eqs. 3.13-3.15). Loads are ON the
 // frame, in the fixed vehicle axes, moments about the load point. Dynamic
-// parts only, as in the 2-D frame loads (the static weight distribution is
-// left out). The plow's or chain's loads on the frame at point 19 are
+// parts (the motion about the static equilibrium), as in the 2-D frame loads;
+// the static parts at the same points are static_frame_loads_3d (below). The plow's or chain's loads on the frame at point 19 are
 // returned too (`direct`), so that the frame's free body can be checked.
 // docs/theory/coupling.md, "3-D frame loads".
 #pragma once
@@ -34,6 +34,17 @@ struct FrameLoads3D {
 std::vector<std::string> frame_load_point_names();
 
 FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajectory& trajectory);
+
+// The static frame loads: the same load points at the vehicle model's static
+// equilibrium under gravity (rigid/contact_statics.h, Eqs. 11.1-11.4), one
+// sample at t = 0. Each attached body's weight (reel, axles, plow), the static
+// contact forces SF_e (zero for a contact the statics released and for the soil,
+// which carries nothing statically under unilateral contacts) and the cab
+// mounts' static forces; no acceleration, shaker or chain force (their mean is
+// in the dynamic loads, which are measured from this equilibrium). With the
+// frame assembly's own weight these loads balance (docs/theory/coupling.md,
+// section 11).
+FrameLoads3D static_frame_loads_3d(const rigid::Machine3D& machine);
 
 // Every load the vehicle model puts on the frame, as one history: points
 // 24-31, then the attachment's (`direct`: P19_PLOW_SWING_PIN, or

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <algorithm>
+#include <map>
 
 #include "core/error.h"
 #include "fem/inp_reader.h"
@@ -115,9 +116,14 @@ core::InputLocation FrameStudyRequest::where(const std::string& key) const {
 }
 
 FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path& dir, FrameDefaults defaults) {
-  f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
   const bool pipeline = defaults == FrameDefaults::pipeline;
+  // dead_load in the pipeline only: the static loads come from the vehicle model.
+  if (pipeline)
+    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
+                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load"});
+  else
+    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
+                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -185,6 +191,11 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   if (mesh_loads != "constant" && mesh_loads != "none")
     throw f.error("mesh_loads", "constant (the mesh's *CLOAD and *DLOAD act throughout, from their static equilibrium) or none", quoted(mesh_loads));
   r.mesh_loads = mesh_loads == "constant";
+  r.dead_load = pipeline && f.boolean_or("dead_load", true);
+  // The static state has gravity and the vehicle model's static loads: the mesh's own would count twice.
+  if (r.dead_load && r.mesh_loads)
+    throw f.error("mesh_loads", "mesh_loads: none with the dead load on (the static state already applies gravity and the static loads), or dead_load: false",
+                  "mesh_loads: constant");
   for (const char* key : {"supports", "support_set", "modes", "loads", "mesh"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
@@ -289,7 +300,8 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
   return model;
 }
 
-FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, std::optional<double> rigid_steady_from) {
+FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, const LoadHistory* static_loads,
+                                  std::optional<double> rigid_steady_from) {
   const auto start = std::chrono::steady_clock::now();
   FrameStudyResults out;
   out.model = read_frame_mesh(q);
@@ -436,7 +448,21 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     out.frequencies_hz = out.response.frequencies_hz;
     if (!q.node_outputs.empty()) rates = modal_rates(frame, basis, in, mo);
   }
-  out.rails = recover_rails(model, out.response.times, out.response.displacement, q.rails, q.stations);
+  // Static plus dynamic (section 11): the static state on the same model, supports and load mapping.
+  std::vector<std::vector<std::vector<double>>> static_stress;
+  if (q.dead_load) {
+    Eigen::VectorXd components;
+    if (static_loads) {
+      bool same = static_loads->points.size() == out.loads.points.size() && static_loads->times.size() >= 1;
+      for (std::size_t p = 0; same && p < out.loads.points.size(); ++p) same = static_loads->points[p].name == out.loads.points[p].name;
+      if (!same) throw std::logic_error("the static loads are not at the load history's points");
+      components = static_loads->component_matrix().col(0);
+    }
+    out.static_state = frame_static_state(model, q.gravity, static_loads ? &out.mapping.distribution : nullptr, static_loads ? &components : nullptr,
+                                          q.rails, q.stations);
+    for (const StaticStations& st : out.static_state->outputs) static_stress.push_back(st.fiber_stress);
+  }
+  out.rails = recover_rails(model, out.response.times, out.response.displacement, q.rails, q.stations, q.dead_load ? &static_stress : nullptr);
   for (const NodeOutputSpec& o : q.node_outputs) out.nodal.push_back(nodal_history(model, o, out.response, rates ? &*rates : nullptr));
   for (const RailSpec& rail : q.rails)
     out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations) : SectionHistory{});
@@ -454,7 +480,20 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     }
     out.stress = stress_histories(model, out.response.times, sets);
   }
-  // No static state yet: static_forces stays empty (zero), total = dynamic.
+  // The static section forces at every stress station (total = static + dynamic), matched by
+  // (output, element, station); without a static state static_forces stays empty (zero).
+  if (out.static_state) {
+    std::map<std::tuple<std::string, int, int>, fem::SectionForces> by_station;
+    for (const StaticStations& st : out.static_state->outputs)
+      for (std::size_t i = 0; i < st.forces.size(); ++i) by_station[{st.output, st.element_ids[i], st.station[i]}] = st.forces[i];
+    out.static_forces.reserve(out.stress.stations.size());
+    for (const StressStation& st : out.stress.stations) {
+      const auto at = by_station.find({st.set, st.element_id, st.station});
+      if (at == by_station.end())
+        throw std::logic_error(fmt::format("no static section forces at {} element {} station {}", st.set, st.element_id, st.station));
+      out.static_forces.push_back(at->second);
+    }
+  }
   out.hot_spots = find_hot_spots(out.stress, steady_window(rigid_steady_from, q.steady_from, out.response.times), 10, &out.static_forces);
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -23,6 +23,7 @@
 //     steady_from: 0.5                     # s: steady operation from (else the rigid model's report, else the last half)
 //     stress_histories: hot_spots          # none | hot_spots | all: frame_stress_histories.csv
 //     yield_strength: 36000                # stress: warn when a von Mises stress exceeds it
+//     dead_load: true                      # pipeline only: static state (gravity, static loads) + dynamic
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -47,6 +48,7 @@
 #include "core/units.h"
 #include "core/warnings.h"
 #include "coupling/frame_balance.h"
+#include "coupling/frame_dead_load.h"
 #include "coupling/frame_parts.h"
 #include "coupling/hot_spots.h"
 #include "coupling/load_history.h"
@@ -96,6 +98,15 @@ struct FrameStudyRequest {
   // throughout, the response starting from the static equilibrium under them
   // (frame-response's default; the pipeline's loads come from the vehicle model).
   bool mesh_loads = false;
+  // Static plus dynamic (docs/theory/coupling.md, section 11): the frame
+  // model's static state under gravity and the vehicle model's static loads,
+  // added to the dynamic response at every section point. The pipeline's
+  // default (frame_response.dead_load: false for the thesis's dynamic-only
+  // stresses); a frame-response study has no key (mesh_loads: constant there).
+  bool dead_load = false;
+  // m/s^2 in the frame model's axes: the vehicle model's axes, whose Z is
+  // vertical whatever the ground slope (the ground, not gravity, is inclined).
+  Eigen::Vector3d gravity{0.0, 0.0, -9.80665};
   // Output sets: element sets (section forces and stresses; the rails in the
   // pipeline) and node sets (nodal histories), in the study's order.
   std::vector<RailSpec> rails = {{"left_rail", "LEFT_RAIL"}, {"right_rail", "RIGHT_RAIL"}};
@@ -147,11 +158,14 @@ struct FrameStudyResults {
   Eigen::VectorXd constant_load;
   int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
   int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
+  // With request.dead_load: the static state (gravity and the static loads),
+  // whose section forces per output station the section-stress code takes.
+  std::optional<FrameStaticState> static_state;
   // Stress histories at every station and section point of the element-set
   // outputs (dynamic section forces, single precision) and their hot spots
   // (docs/theory/coupling.md section 10). `static_forces`: the static
-  // section forces per stress station, added to the dynamic ones (total =
-  // static + dynamic); empty: zero (no static state computed).
+  // section forces per stress station (from static_state), added to the
+  // dynamic ones (total = static + dynamic); empty: zero (no static state).
   StressHistories stress;
   std::vector<fem::SectionForces> static_forces;
   HotSpotReport hot_spots;
@@ -168,7 +182,10 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 // support or output set the mesh lacks (naming the study's key and the mesh
 // file) or a load point the mesh cannot take, core::NumericalError for a
 // failed solve.
-FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr,
+// `static_loads` (with request.dead_load): the static loads at the same load
+// points as the history (one row; static_frame_loads_3d), null for gravity alone.
+// `rigid_steady_from`: when the vehicle model reached steady operation (s), for the hot spots.
+FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr, const LoadHistory* static_loads = nullptr,
                                   std::optional<double> rigid_steady_from = std::nullopt);
 
 // The names of the supports and the method as a study file spells them.

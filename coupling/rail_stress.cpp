@@ -22,12 +22,15 @@ void update(RailPeak& p, double v, double t, int element, int station, const Eig
 }  // namespace
 
 std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eigen::VectorXd& times,
-                                        const Eigen::MatrixXd& u, const std::vector<RailSpec>& rails, int stations) {
+                                        const Eigen::MatrixXd& u, const std::vector<RailSpec>& rails, int stations,
+                                        const std::vector<std::vector<std::vector<double>>>* static_stress) {
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
   if (u.rows() != model.dof_count() || u.cols() != times.size())
     throw std::invalid_argument("the displacement history does not match the model or the times");
   std::vector<RailRecovery> out;
+  if (static_stress && static_stress->size() != rails.size()) throw std::invalid_argument("recover_rails: one static stress set per rail");
   for (const RailSpec& spec : rails) {
+    const std::vector<std::vector<double>>* statics = static_stress ? &(*static_stress)[out.size()] : nullptr;
     std::string key = spec.element_set;
     for (char& c : key) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     const auto set = model.element_sets.find(key);
@@ -62,6 +65,14 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
     const Eigen::Index ns = static_cast<Eigen::Index>(r.station_points.size());
     r.envelope_bending_moment = r.envelope_mz = r.envelope_my = r.envelope_normal_stress = Eigen::VectorXd::Zero(ns);
     r.series_bending_moment = r.series_normal_stress = Eigen::VectorXd::Zero(times.size());
+    Eigen::MatrixXd total;  // stations x times: max |sigma_s + sigma_d(t)| over the section points
+    if (statics) {
+      if (statics->size() != static_cast<std::size_t>(ns)) throw std::invalid_argument("recover_rails: the static stresses do not match the stations");
+      r.static_normal_stress = Eigen::VectorXd::Zero(ns);
+      for (Eigen::Index k = 0; k < ns; ++k)
+        for (double v : (*statics)[static_cast<std::size_t>(k)]) r.static_normal_stress(k) = std::max(r.static_normal_stress(k), std::abs(v));
+      total = Eigen::MatrixXd::Zero(ns, times.size());
+    }
     for (Eigen::Index j = 0; j < times.size(); ++j) {
       const Eigen::VectorXd uj = u.col(j);
       const double t = times(j);
@@ -98,6 +109,7 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
           update(r.peak_mz, sf.mz, t, beam.id, s, x);
           const std::vector<double> sigma = fem::fiber_stresses(sec, sf);
           for (std::size_t c = 0; c < sigma.size(); ++c) {
+            if (statics) total(k, j) = std::max(total(k, j), std::abs((*statics)[static_cast<std::size_t>(k)].at(c) + sigma[c]));
             const double a = std::abs(sigma[c]);
             r.envelope_normal_stress(k) = std::max(r.envelope_normal_stress(k), a);
             r.series_normal_stress(j) = std::max(r.series_normal_stress(j), a);
@@ -112,6 +124,43 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
           }
         }
       }
+    }
+    if (statics) {
+      r.envelope_total_normal_stress = total.rowwise().maxCoeff();
+      r.series_total_normal_stress = total.colwise().maxCoeff().transpose();
+      // The peak by a stable rule: the first station, then the earliest time, within 1e-6 relative of the largest.
+      const double largest = total.size() > 0 ? total.maxCoeff() : 0.0;
+      bool found = false;
+      for (Eigen::Index k = 0; k < ns && !found; ++k)
+        for (Eigen::Index j = 0; j < times.size() && !found; ++j) {
+          if (total(k, j) < largest * (1.0 - 1e-6)) continue;
+          found = true;
+          // The signed total at the section point of largest magnitude there.
+          const std::vector<double>& st = (*statics)[static_cast<std::size_t>(k)];
+          const std::size_t e = static_cast<std::size_t>(k / stations);
+          const int s_index = static_cast<int>(k % stations);
+          const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(beams[e])];
+          const Eigen::VectorXd uj = u.col(j);
+          fem::SectionForces sf;
+          fem::SectionProperties sec;
+          if (beam.is_quadratic()) {
+            sf = fem::beam_stations(model, beams[e], uj, stations)[static_cast<std::size_t>(s_index)].forces;
+            sec = fem::section_geometry(model, beam.section, fem::BeamTheory::timoshenko).data.section;
+          } else {
+            const fem::BeamGeometry& g = geometry[e];
+            sf = fem::section_forces_at(fem::element_end_forces(g, beam, uj), (static_cast<double>(s_index) / (stations - 1)) * g.data.length);
+            sec = g.data.section;
+          }
+          const std::vector<double> sigma = fem::fiber_stresses(sec, sf);
+          std::size_t best = 0;
+          for (std::size_t c = 0; c < sigma.size(); ++c)
+            if (std::abs(st.at(c) + sigma[c]) >= total(k, j) * (1.0 - 1e-6)) {
+              best = c;
+              break;
+            }
+          r.peak_total_normal_stress = {st.at(best) + sigma[best], times(j), beam.id, s_index, r.station_points[static_cast<std::size_t>(k)],
+                                        static_cast<int>(best)};
+        }
     }
     const double denom = std::abs(r.axial_stress_at_peak) + std::abs(r.bending_stress_at_peak);
     r.bending_share = denom > 0.0 ? std::abs(r.bending_stress_at_peak) / denom : 0.0;

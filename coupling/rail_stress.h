@@ -55,12 +55,24 @@ struct RailRecovery {
   double axial_stress_at_peak = 0.0;             // N / A there, Pa
   double bending_stress_at_peak = 0.0;           // My x2 / I11 - Mz x1 / I22 there, Pa
   double bending_share = 0.0;                    // |bending| / (|axial| + |bending|) at the peak (Eq. C.7)
+  // With a static state (coupling/frame_dead_load.h; empty without): total =
+  // static + dynamic at every section point before the envelope (Eq. 11.4).
+  Eigen::VectorXd static_normal_stress;          // per station: max |sigma_s| over the section points, Pa
+  Eigen::VectorXd envelope_total_normal_stress;  // per station: max over time and points of |sigma_s + sigma_d(t)|, Pa
+  Eigen::VectorXd series_total_normal_stress;    // per output time: max over stations and points, Pa
+  // Largest |total|; among values within 1e-6 relative of it, the first station
+  // (set order) and then the earliest time: no round-off near-tie picks the place.
+  RailPeak peak_total_normal_stress;
+  bool has_static() const { return static_normal_stress.size() > 0; }
 };
 
 // `displacement`: all DOFs x outputs (m, rad), `times` its output times.
 // Throws core::InputError (key "rails.<name>") for an element set the mesh
 // does not have or that holds no beam element.
+// `static_stress` (optional): per rail, per station (the order above), the
+// static normal stress at each section point (Pa; StaticStations::fiber_stress).
 std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eigen::VectorXd& times,
-                                        const Eigen::MatrixXd& displacement, const std::vector<RailSpec>& rails, int stations);
+                                        const Eigen::MatrixXd& displacement, const std::vector<RailSpec>& rails, int stations,
+                                        const std::vector<std::vector<std::vector<double>>>* static_stress = nullptr);
 
 }  // namespace framedyn::coupling

@@ -356,6 +356,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     q.structure_part = sources.structure_part;
     q.structure_source = "mesh";
     q.parts_carried_by_mesh = sources.carried_by_mesh;
+    q.gravity = Eigen::Vector3d(0.0, 0.0, -p.gravity);  // the vehicle model's axes: Z vertical, the ground (not gravity) sloped
     s.frame_response = q;
   } else {
     for (std::size_t i = 0; i < study_parts.size(); ++i)
@@ -422,6 +423,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   }
   if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(machine, tr));
   r.frame_loads = frame_loads_3d(machine, tr);
+  r.static_frame_loads = static_frame_loads_3d(machine);
   assess_response(study, machine, r);  // steady operation, validity warnings (issue 15)
   return r;
 }

@@ -71,6 +71,7 @@ struct RigidResults3D {
   std::optional<double> average_peak_cutting_force;  // N: each shaker cycle's largest, averaged (as RigidResults)
   std::optional<double> average_peak_backing_force;  // N
   std::optional<FrameLoads3D> frame_loads;           // with a response
+  std::optional<FrameLoads3D> static_frame_loads;    // with a response: the same points at the static equilibrium (static_frame_loads_3d)
   std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
   std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
   std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)

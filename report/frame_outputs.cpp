@@ -93,11 +93,19 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   }
   // The parts the frame model carried, as an .inp fragment to include after the mesh (coupling/frame_parts.h).
   if (!r.parts.empty()) folder.write_text("frame_parts.inp", coupling::frame_parts_inp(r.model, r.parts));
+  // With the dead load (static plus dynamic, coupling/frame_dead_load.h): static and total columns after the dynamic ones.
+  const bool statics = !r.rails.empty() && r.rails.front().has_static();
+  const std::string S = u.label(Quantity::stress);
   if (!r.rails.empty()) {
-    report::CsvTable t({"rail", "element", "station", report::column("X", u.label(Quantity::length)), report::column("Y", u.label(Quantity::length)),
-                      report::column("Z", u.label(Quantity::length)), report::column("max_bending_moment", u.label(Quantity::moment)),
-                      report::column("max_abs_Mz", u.label(Quantity::moment)), report::column("max_abs_My", u.label(Quantity::moment)),
-                      report::column("max_abs_normal_stress", u.label(Quantity::stress))});
+    std::vector<std::string> h = {"rail", "element", "station", report::column("X", u.label(Quantity::length)), report::column("Y", u.label(Quantity::length)),
+                                  report::column("Z", u.label(Quantity::length)), report::column("max_bending_moment", u.label(Quantity::moment)),
+                                  report::column("max_abs_Mz", u.label(Quantity::moment)), report::column("max_abs_My", u.label(Quantity::moment)),
+                                  report::column("max_abs_normal_stress", S)};
+    if (statics) {
+      h.push_back(report::column("static_max_abs_normal_stress", S));
+      h.push_back(report::column("total_max_abs_normal_stress", S));
+    }
+    report::CsvTable t(h);
     for (const RailRecovery& rail : r.rails)
       for (std::size_t k = 0; k < rail.station_points.size(); ++k) {
         const Eigen::Index i = static_cast<Eigen::Index>(k);
@@ -105,6 +113,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
             .add(rail.station_points[k].x() * lf).add(rail.station_points[k].y() * lf).add(rail.station_points[k].z() * lf)
             .add(rail.envelope_bending_moment(i) * mf).add(rail.envelope_mz(i) * mf).add(rail.envelope_my(i) * mf)
             .add(rail.envelope_normal_stress(i) * sf);
+        if (statics) t.add(rail.static_normal_stress(i) * sf).add(rail.envelope_total_normal_stress(i) * sf);
       }
     folder.write_text("frame_rails_envelope.csv", t.str());
   }
@@ -112,12 +121,19 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     std::vector<std::string> h = {T};
     for (const RailRecovery& rail : r.rails) {
       h.push_back(report::column(rail.spec.name + ".max_bending_moment", u.label(Quantity::moment)));
-      h.push_back(report::column(rail.spec.name + ".max_abs_normal_stress", u.label(Quantity::stress)));
+      h.push_back(report::column(rail.spec.name + ".max_abs_normal_stress", S));
     }
+    if (statics)
+      for (const RailRecovery& rail : r.rails) {
+        h.push_back(report::column(rail.spec.name + ".static_max_abs_normal_stress", S));
+        h.push_back(report::column(rail.spec.name + ".total_max_abs_normal_stress", S));
+      }
     report::CsvTable t(h);
     for (Eigen::Index j = 0; j < r.response.times.size(); ++j) {
       t.row().add(r.response.times(j));
       for (const RailRecovery& rail : r.rails) t.add(rail.series_bending_moment(j) * mf).add(rail.series_normal_stress(j) * sf);
+      if (statics)
+        for (const RailRecovery& rail : r.rails) t.add(rail.static_normal_stress.maxCoeff() * sf).add(rail.series_total_normal_stress(j) * sf);
     }
     folder.write_text("frame_rails_series.csv", t.str());
   }
@@ -423,6 +439,38 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
       rails[rail.spec.name] = {{"peak_normal_stress", peak(rail.peak_normal_stress, rail.peak_normal_stress.value, Quantity::stress, rail.spec.name)},
                                {"bending_share", rail.bending_share}};
     j["rails"] = rails;
+  }
+  // Static plus dynamic (docs/theory/coupling.md, section 11).
+  if (r.static_state) {
+    const coupling::FrameStaticState& st = *r.static_state;
+    ordered_json s;
+    s["gravity"] = {{"value", {u.from_si(st.gravity.x(), Quantity::acceleration) + 0.0, u.from_si(st.gravity.y(), Quantity::acceleration) + 0.0,
+                               u.from_si(st.gravity.z(), Quantity::acceleration) + 0.0}},
+                    {"unit", u.label(Quantity::acceleration)}};
+    s["weight"] = quantity(u.from_si(st.weight, Quantity::force), u.label(Quantity::force));
+    ordered_json where = {{"rail", st.peak_output}, {"element", st.peak_normal_stress.element_id}, {"station", st.peak_normal_stress.station},
+                          {"fiber", st.peak_normal_stress.fiber}, {"x", quantity(st.peak_normal_stress.point.x() * lf, L)}};
+    s["peak_normal_stress"] = {{"value", u.from_si(st.peak_normal_stress.value, Quantity::stress)}, {"unit", u.label(Quantity::stress)}, {"where", where}};
+    s["residual"] = {{"relative_force", st.force_residual},
+                     {"relative_moment", st.moment_residual},
+                     {"meaning", "|resultant force| / weight and |resultant moment about the c.g.| / (weight x the model's largest extent) of gravity "
+                                 "plus the static loads (Eq. 11.3): round-off when the frame model carries the vehicle model's frame assembly"}};
+    s["free_rigid_motions"] = st.free_rigid_motions;
+    j["static"] = s;
+    const RailRecovery* most = nullptr;  // the first rail whose total peak is within 1e-6 relative of the largest
+    double largest = 0.0;
+    for (const RailRecovery& rail : r.rails) largest = std::max(largest, std::abs(rail.peak_total_normal_stress.value));
+    for (const RailRecovery& rail : r.rails)
+      if (!most && std::abs(rail.peak_total_normal_stress.value) >= largest * (1.0 - 1e-6)) most = &rail;
+    if (most) {
+      ordered_json total = peak(most->peak_total_normal_stress, most->peak_total_normal_stress.value, Quantity::stress, most->spec.name);
+      total["fiber"] = most->peak_total_normal_stress.fiber;
+      total["meaning"] = "static + dynamic at every section point (Eq. 11.4); peak_normal_stress is the dynamic part alone";
+      j["peak_total_normal_stress"] = total;
+      for (const RailRecovery& rail : r.rails)
+        j["rails"][rail.spec.name]["peak_total_normal_stress"] =
+            peak(rail.peak_total_normal_stress, rail.peak_total_normal_stress.value, Quantity::stress, rail.spec.name);
+    }
   }
   // Every output set by its name: where and when each quantity peaks.
   auto set_peak = [&](const RailPeak& p, Quantity qty) {

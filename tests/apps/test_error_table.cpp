@@ -482,6 +482,12 @@ std::vector<Row> rows() {
                     "name: tubes", "frame.parts"),
       structure_row("STUDY-98", kStructurePart, kStructurePart, "name: frame_structure", "frame.parts[0]"),
       study_row("STUDY-99", kStructurePart, "{name: frame_structure, from: mesh}", "from: mesh", "frame.parts[0].from", kStudy3D),
+      [] {  // the mesh's own loads with the dead load on: gravity twice
+        const std::string text = edit(kStudy3D, "analysis:\n",
+                                      "frame_response: {mesh: frame.inp, mesh_loads: constant}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-106", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "mesh_loads", "frame_response.mesh_loads")};
+      }(),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

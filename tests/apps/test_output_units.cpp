@@ -364,7 +364,8 @@ const std::set<std::string> kDimensionlessKeys = {
     "station", "frame_node", "fiber", "window_periods", "max_period_multiple", "period_multiple", "index",
     // ratios and fractions
     "damping_ratio", "tension_fraction", "lift_off_fraction", "bending_share", "ratio", "relative_error", "residual_max", "tolerance",
-    "singular_values", "regularization_weight", "mac", "shape_weight", "load_factor_rms", "share"};
+    "singular_values", "regularization_weight", "mac", "shape_weight", "load_factor_rms", "share",
+    "relative_force", "relative_moment"};
 // Objects whose every member is a dimensionless number (shares and fractions by coordinate or direction).
 const std::set<std::string> kDimensionlessMaps = {"energy_share", "effective_mass_fraction", "effective_mass_fraction_sum", "relative_change",
                                                   "relative_spread", "unresolved"};

@@ -118,6 +118,31 @@ TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned)
   EXPECT_EQ(near, (std::vector<double>{2, 3})) << summary_["warnings"].dump();
 }
 
+// Static plus dynamic (the dead load, on by default; theory/coupling.md section 11): the
+// static state balances to round-off, and the total peak sits beside the dynamic one.
+TEST_F(OffsetPlowingPipeline, StaticStateBalancesAndTheTotalPeakIsReportedBesideTheDynamicOne) {
+  ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
+  const nlohmann::json& frame = summary_["frame"];
+  ASSERT_TRUE(frame.contains("static"));
+  EXPECT_LT(frame["static"]["residual"]["relative_force"].get<double>(), 1e-9);
+  EXPECT_LT(frame["static"]["residual"]["relative_moment"].get<double>(), 1e-9);
+  EXPECT_EQ(frame["static"]["gravity"]["unit"], "in/s^2");
+  EXPECT_NEAR(frame["static"]["gravity"]["value"][2].get<double>(), -9.80665 / 0.0254, 1e-9);
+  // The frame model's weight is the vehicle model's frame assembly's (tubes and parts, 2,465.65 lbf).
+  EXPECT_NEAR(frame["static"]["weight"]["value"].get<double>(), frame["total_mass"]["value"].get<double>() * 9.80665 / 0.0254,
+              1e-9 * frame["static"]["weight"]["value"].get<double>());
+  ASSERT_TRUE(frame.contains("peak_total_normal_stress"));
+  EXPECT_EQ(frame["peak_total_normal_stress"]["unit"], "psi");
+  // The total at the place and time of its peak differs from the dynamic value there by at most the static envelope.
+  const double total = std::abs(frame["peak_total_normal_stress"]["value"].get<double>());
+  const double dynamic = std::abs(frame["peak_normal_stress"]["value"].get<double>());
+  const double static_peak = std::abs(frame["static"]["peak_normal_stress"]["value"].get<double>());
+  EXPECT_LE(total, dynamic + static_peak + 1e-9 * total);
+  EXPECT_GE(total, dynamic - static_peak - 1e-9 * total);
+  const std::string envelope = slurp(*dir_ / "out" / "frame_rails_envelope.csv");
+  EXPECT_NE(envelope.find("static_max_abs_normal_stress [psi],total_max_abs_normal_stress [psi]"), std::string::npos);
+}
+
 TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) {
   ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
   // The frame_response block of examples/offset_plowing.yaml, as a frame study on the written loads; its mesh the
