@@ -135,7 +135,7 @@ TEST(FrameStudy, HotSpotsTakeTheSteadyStartInOrderAndMatchARecomputationFromTheD
   const coupling::FrameStudyResults own = coupling::run_frame_study(q);
   EXPECT_EQ(own.hot_spots.window.from, 0.15);
   EXPECT_EQ(own.hot_spots.window.source, "frame.steady_from");
-  const coupling::FrameStudyResults r = coupling::run_frame_study(q, nullptr, 0.08);
+  const coupling::FrameStudyResults r = coupling::run_frame_study(q, nullptr, nullptr, 0.08);
   EXPECT_EQ(r.hot_spots.window.from, 0.08);
   EXPECT_EQ(r.hot_spots.window.source, "rigid-body model's steady report");
   EXPECT_EQ(r.hot_spots.startup_times, 80u);  // t = 0 .. 0.079 s at 1 kHz
