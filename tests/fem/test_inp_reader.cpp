@@ -985,7 +985,7 @@ std::vector<ErrorCase> error_cases() {
       {"CoordinateNan", kUnits + "*NODE\n1, 0, NaN, 0\n", "1, 0, NaN, 0", "*NODE", {"found 'NaN'"}},
       {"CoordinateOverflow", kUnits + "*NODE\n1, 1e999, 0, 0\n", "1, 1e999, 0, 0", "*NODE", {"found '1e999'"}},
       // ---- *ELEMENT
-      {"ElementTypeC3D8", kUnits + kNodes + "*ELEMENT, TYPE=C3D8\n1, 1, 2, 3, 1, 2, 3, 1, 2\n", "*ELEMENT, TYPE=C3D8", "*ELEMENT", {"expected TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1 or SPRING2", "found TYPE=C3D8"}},
+      {"ElementTypeC3D8", kUnits + kNodes + "*ELEMENT, TYPE=C3D8\n1, 1, 2, 3, 1, 2, 3, 1, 2\n", "*ELEMENT, TYPE=C3D8", "*ELEMENT", {"expected TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1, SPRING2 or DCOUP3D", "found TYPE=C3D8"}},
       {"ElementB32WithTwoNodes", kUnits + kNodes + "*ELEMENT, TYPE=B32\n1, 1, 2\n", "1, 1, 2", "*ELEMENT", {"expected element number and 3 node number(s) for B32", "found '1, 1, 2'"}},
       {"ElementB32RWithARepeatedNode", kUnits + kNodes + "*ELEMENT, TYPE=B32R\n1, 1, 2, 1\n", "1, 1, 2, 1", "*ELEMENT", {"expected three different nodes (end, midside, end)", "found element 1 on nodes 1, 2, 1"}},
       {"ElementTypeLowerCase", kUnits + kNodes + "*ELEMENT, TYPE=t3d2\n1, 1, 2\n", "*ELEMENT, TYPE=t3d2", "*ELEMENT", {"found TYPE=T3D2"}},
