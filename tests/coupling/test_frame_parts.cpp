@@ -197,10 +197,10 @@ TEST(FrameParts, FreeFrameUnderTheDAlembertForcesOfARigidAccelerationIsUnstresse
 TEST(FrameParts, APartEquallyFarFromTwoNodesHangsFromTheLowerNodeNumber) {
   fem::FrameModel model = small_frame();
   // (0.6, 0, 0.1): 0.2236 m from node 2 (0.4) and node 3 (0.8) alike.
-  const auto mounted = coupling::mount_frame_parts(model, {{"tank", 10.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  const auto mounted = coupling::mount_frame_parts(model, std::vector<rigid::RigidPart3D>{{"tank", 10.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(mounted[0].frame_node)].id, 2);
   // Never another part's c.g. node: a second part at the first's c.g. hangs from a beam node too.
-  const auto second = coupling::mount_frame_parts(model, {{"tank2", 5.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  const auto second = coupling::mount_frame_parts(model, std::vector<rigid::RigidPart3D>{{"tank2", 5.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(second[0].frame_node)].id, 2);
 }
 
@@ -267,16 +267,28 @@ TEST(FrameParts, DistributingCouplingFollowsARigidMotionExactlyAndAddsNoStiffnes
   }
   EXPECT_LT((resultant - force).norm(), 1e-12 * force.norm());
   EXPECT_LT((about_origin - (moment + two_parts()[0].cg.cross(force))).norm(), 1e-12 * force.norm());
-  // Over the centroid (0.7, 0, 0) of mounts 2, 4, 5, 6 (X 0.4, 1.2, 0.8, 0.8), a vertical force goes 1/4 to each mount.
-  fem::FrameModel centred = small_frame();
-  coupling::FramePart at_centroid = engine_on_four_mounts();
-  at_centroid.part.cg = Vector3d(0.7, 0.0, 0.0);
-  const auto placed = coupling::mount_frame_parts(centred, {at_centroid});
-  const fem::DofMap centred_dofs = fem::make_dof_map(centred);
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(centred.dof_count());
-  g(6 * placed[0].mass_node + 2) = -400.0;
-  fem::fold_slave_forces(centred_dofs.links, g);
-  for (int id : {2, 4, 5, 6}) EXPECT_NEAR(g(6 * centred.node_index(id) + 2), -100.0, 1e-12) << "node " << id;
+  // Mounts 2, 4, 5, 6 (X 0.4, 1.2, 0.8, 0.8) have their centroid at (0.8, 0, 0): a vertical 400 N there goes 1/4 to each
+  // mount. At (0.7, 0, 0) it adds the moment 400 N x 0.1 m about Y, which only the rail mounts 2 and 4 (arms -+0.4 m)
+  // resist, by least squares +-M r / sum r^2 = 40 x 0.4 / 0.32 = 50 N: 150 N at node 2, 50 N at node 4, 100 N at 5 and 6.
+  const auto vertical_shares = [&](double x) {
+    fem::FrameModel centred = small_frame();
+    coupling::FramePart at = engine_on_four_mounts();
+    at.part.cg = Vector3d(x, 0.0, 0.0);
+    const auto placed = coupling::mount_frame_parts(centred, {at});
+    const fem::DofMap centred_dofs = fem::make_dof_map(centred);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(centred.dof_count());
+    g(6 * placed[0].mass_node + 2) = -400.0;
+    fem::fold_slave_forces(centred_dofs.links, g);
+    std::vector<double> shares;
+    for (int id : {2, 4, 5, 6}) shares.push_back(g(6 * centred.node_index(id) + 2));
+    return shares;
+  };
+  const std::vector<double> over_centroid = vertical_shares(0.8), ahead = vertical_shares(0.7);
+  const double hand_centroid[4] = {-100, -100, -100, -100}, hand_ahead[4] = {-150, -50, -100, -100};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(over_centroid[i], hand_centroid[i], 1e-12) << "mount " << i;
+    EXPECT_NEAR(ahead[i], hand_ahead[i], 1e-12) << "mount " << i;
+  }
 }
 
 TEST(FrameParts, MountsOnOneLineOrTwiceAtANodeOrOffTheBeamsAreRefusedNamingTheEntry) {
