@@ -291,6 +291,26 @@ TEST(FrameParts, DistributingCouplingFollowsARigidMotionExactlyAndAddsNoStiffnes
   }
 }
 
+TEST(FrameParts, PartsOnMountsWrittenAsDistributingCouplingsReadBackAsTheSameModel) {
+  // frame_parts.inp writes a coupled part as *ELEMENT, TYPE=DCOUP3D + *DISTRIBUTING COUPLING; the reader gives it back.
+  fem::FrameModel model = small_frame();
+  const auto mounted = coupling::mount_frame_parts(model, {engine_on_four_mounts()});
+  const std::string fragment = coupling::frame_parts_inp(model, mounted);
+  EXPECT_NE(fragment.find("*DISTRIBUTING COUPLING, ELSET=ENGINE_MOUNTS\n2, 1\n4, 1\n5, 1\n6, 1\n"), std::string::npos) << fragment;
+  const fem::FrameModel back = fem::read_inp_text(kFrame + fragment, "frame.inp", ".");
+  ASSERT_EQ(back.distributing_couplings.size(), 1u);
+  std::vector<int> ids;
+  for (int n : back.distributing_couplings[0].mount_nodes) ids.push_back(back.nodes[static_cast<std::size_t>(n)].id);
+  EXPECT_EQ(ids, (std::vector<int>{2, 4, 5, 6}));
+  fem::AssemblyOptions full;
+  full.storage = fem::Storage::full;
+  const Eigen::MatrixXd m_run(fem::assemble(model, fem::make_dof_map(model), full).mass);
+  const Eigen::MatrixXd m_back(fem::assemble(back, fem::make_dof_map(back), full).mass);
+  ASSERT_EQ(m_run.rows(), m_back.rows());
+  // 17 significant digits in the file: the same matrix to round-off.
+  EXPECT_LT((m_run - m_back).cwiseAbs().maxCoeff(), 1e-13 * m_run.cwiseAbs().maxCoeff());
+}
+
 TEST(FrameParts, MountsOnOneLineOrTwiceAtANodeOrOffTheBeamsAreRefusedNamingTheEntry) {
   // Nodes 1, 2, 4 lie on the rail: their rigid fit leaves the rotation about the rail free.
   coupling::FramePart p = engine_on_four_mounts();

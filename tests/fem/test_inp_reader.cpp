@@ -948,6 +948,15 @@ std::vector<ErrorCase> error_cases() {
   return {
       // ---- keywords and parameters
       {"UnknownKeyword", kModel + "*SURFACE, NAME=S\n", "*SURFACE, NAME=S", "*SURFACE", {"expected a keyword framedyn reads", "found *SURFACE"}},
+      // ---- distributing couplings (DCOUP3D + *DISTRIBUTING COUPLING; fem/rigid_links.h, Eqs. R.6-R.8)
+      {"DistributingCouplingElementWithoutCoupling", kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n", "9, 9", "*ELEMENT",
+       {"expected a *DISTRIBUTING COUPLING for element 9 of type DCOUP3D", "found none"}},
+      {"DistributingCouplingMountsOnOneLine",
+       kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n*DISTRIBUTING COUPLING, ELSET=C\n1, 1\n2, 1\n3, 1\n",
+       "*DISTRIBUTING COUPLING, ELSET=C", "*DISTRIBUTING COUPLING", {"expected mounts that do not all lie on one line", "found nodes 1, 2, 3"}},
+      {"DistributingCouplingNegativeWeight",
+       kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n*DISTRIBUTING COUPLING, ELSET=C\n1, -1\n", "1, -1",
+       "*DISTRIBUTING COUPLING", {"expected a positive weight", "found -1"}},
       {"UnknownKeywordInsideStep", kModel + "*STEP\n*TEMPERATURE\n1, 100.\n*END STEP\n", "*TEMPERATURE", "*TEMPERATURE", {"found *TEMPERATURE"}},
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
