@@ -88,7 +88,7 @@ FrameMassSources frame_mass_from_mesh(const std::vector<StudyFramePart>& parts, 
       continue;
     }
     out.vehicle_parts.push_back(parts[i].part);
-    out.mounted.push_back(parts[i].part);
+    out.mounted.push_back({parts[i].part, parts[i].mounts, parts[i].mounts_where});
   }
   return out;
 }

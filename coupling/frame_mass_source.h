@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "coupling/frame_parts.h"
 #include "fem/frame_model.h"
 #include "rigid/machine_3d.h"
 
@@ -32,11 +33,13 @@ struct StudyFramePart {
   bool from_mesh = false;       // `from: frame_mesh`
   bool has_values = true;       // mass, position and inertia given in the study
   core::InputLocation where;    // the part's entry, for messages
+  std::vector<PartMount> mounts;     // where the frame model joins it (coupling/frame_parts.h); empty: its nearest frame node
+  core::InputLocation mounts_where;  // the `mounts` key
 };
 
 struct FrameMassSources {
   std::vector<rigid::RigidPart3D> vehicle_parts;    // the vehicle model's frame.parts, the structure's values from the mesh
-  std::vector<rigid::RigidPart3D> mounted;          // the parts the frame model adds (all but the structure and the carried)
+  std::vector<FramePart> mounted;                   // the parts the frame model adds (all but the structure and the carried), with their mounts
   std::vector<std::string> carried_by_mesh;         // parts the mesh's own *MASS elements already hold
   std::string structure_part;                       // the part the mesh models
   rigid::RigidPart3D structure;                     // its values from the mesh

@@ -2,10 +2,13 @@
 #include "coupling/frame_parts.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+
+#include "fem/rigid_links.h"
 
 namespace framedyn::coupling {
 
@@ -30,7 +33,30 @@ int nearest_frame_node(const fem::FrameModel& model, const Eigen::Vector3d& x) {
   return best;
 }
 
+namespace {
+
+// The beam node a mount names: its number (STUDY-111 when no beam element uses it) or the node nearest its point.
+int mount_node(const fem::FrameModel& model, const PartMount& m, const std::string& mesh_name) {
+  if (m.by_point) return nearest_frame_node(model, m.point);
+  const int i = model.node_index(m.node);
+  bool on_beam = false;
+  if (i >= 0)
+    for (const fem::BeamElement& b : model.beams) on_beam = on_beam || b.node_a == i || b.node_b == i || b.node_m == i;
+  if (!on_beam)
+    throw core::InputError(m.where, fmt::format("a node number of {} that a beam element uses", mesh_name),
+                           fmt::format("node {}{}", m.node, i < 0 ? ", not in the mesh" : ", on no beam element"));
+  return i;
+}
+
+}  // namespace
+
 std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::vector<rigid::RigidPart3D>& parts) {
+  std::vector<FramePart> without_mounts;
+  for (const rigid::RigidPart3D& p : parts) without_mounts.push_back({p, {}, {}});
+  return mount_frame_parts(model, without_mounts);
+}
+
+std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::vector<FramePart>& parts, const std::string& mesh_name) {
   std::vector<MountedPart> out;
   if (parts.empty()) return out;
   // New node and element numbers above the mesh's.
@@ -40,11 +66,53 @@ std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::ve
   for (const fem::PointMass& m : model.point_masses) element_id = std::max(element_id, m.element_id);
   for (const fem::Spring& s : model.springs) element_id = std::max(element_id, s.element_id);
   constexpr double kOnNode = 1e-6;  // m: a c.g. this close to the frame node is on it
-  for (const rigid::RigidPart3D& p : parts) {
+  // The mounts resolve against the mesh's beam nodes only: resolve them all before any c.g. node is added.
+  std::vector<std::vector<int>> mounts(parts.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    for (std::size_t i = 0; i < parts[k].mounts.size(); ++i) {
+      const int n = mount_node(model, parts[k].mounts[i], mesh_name);
+      for (std::size_t j = 0; j < i; ++j)
+        if (mounts[k][j] == n)
+          throw core::InputError(parts[k].mounts[i].where, "mounts at distinct nodes of " + mesh_name,
+                                 fmt::format("mounts[{}] and mounts[{}] both at node {}", j, i, model.nodes[static_cast<std::size_t>(n)].id));
+      mounts[k].push_back(n);
+    }
+  }
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const rigid::RigidPart3D& p = parts[k].part;
     if (!(p.mass > 0.0)) throw std::invalid_argument("frame part " + p.name + ": no mass");
     MountedPart m;
     m.part = p;
-    m.frame_node = nearest_frame_node(model, p.cg);
+    if (mounts[k].size() >= 2) {
+      // A distributing coupling from the mounts to a new node at the c.g. (Eqs. 9.5-9.6).
+      m.frame_node = mounts[k].front();
+      m.mount_nodes = mounts[k];
+      m.linked = true;
+      model.nodes.push_back({++node_id, p.cg});
+      m.mass_node = static_cast<int>(model.nodes.size()) - 1;
+      fem::DistributingCoupling c;
+      c.reference_node = m.mass_node;
+      c.mount_nodes = mounts[k];
+      c.weights.assign(mounts[k].size(), 1.0);
+      c.source = "frame part " + p.name;
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (int n : mounts[k]) centroid += model.nodes[static_cast<std::size_t>(n)].position / static_cast<double>(mounts[k].size());
+      m.arm = (p.cg - centroid).norm();
+      try {
+        (void)fem::distributing_coupling_rows(model, c);
+      } catch (const std::invalid_argument&) {
+        std::string ids;
+        for (std::size_t i = 0; i < mounts[k].size(); ++i) ids += (i ? ", " : "") + std::to_string(model.nodes[static_cast<std::size_t>(mounts[k][i])].id);
+        throw core::InputError(parts[k].mounts_where,
+                               "one mount, or mounts that do not all lie on one line (their least-squares rigid motion must fix the part's rotation)",
+                               fmt::format("{} mounts on one line, nodes {}", mounts[k].size(), ids));
+      }
+      model.distributing_couplings.push_back(c);
+      model.point_masses.push_back({++element_id, m.mass_node, p.mass, p.inertia});
+      out.push_back(m);
+      continue;
+    }
+    m.frame_node = mounts[k].empty() ? nearest_frame_node(model, p.cg) : mounts[k].front();
     m.arm = (p.cg - model.nodes[static_cast<std::size_t>(m.frame_node)].position).norm();
     m.linked = m.arm > kOnNode;
     if (m.linked) {
@@ -92,7 +160,13 @@ std::string frame_parts_inp(const fem::FrameModel& model, const std::vector<Moun
                        u.from_si(m.part.mass, Quantity::mass));
     out += fmt::format("*ELEMENT, TYPE=ROTARYI, ELSET={}_INERTIA\n{}, {}\n*ROTARY INERTIA, ELSET={}_INERTIA\n{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}\n",
                        set, ++element_id, at.id, set, j(0, 0), j(1, 1), j(2, 2), j(0, 1), j(0, 2), j(1, 2));
-    if (m.linked) out += fmt::format("*MPC\nBEAM, {}, {}\n", at.id, model.nodes[static_cast<std::size_t>(m.frame_node)].id);
+    if (!m.mount_nodes.empty()) {
+      // A distributing coupling as Abaqus and CalculiX write it: a DCOUP3D element on the reference node, its mounts and weights.
+      out += fmt::format("*ELEMENT, TYPE=DCOUP3D, ELSET={}_MOUNTS\n{}, {}\n*DISTRIBUTING COUPLING, ELSET={}_MOUNTS\n", set, ++element_id, at.id, set);
+      for (int n : m.mount_nodes) out += fmt::format("{}, 1\n", model.nodes[static_cast<std::size_t>(n)].id);
+    } else if (m.linked) {
+      out += fmt::format("*MPC\nBEAM, {}, {}\n", at.id, model.nodes[static_cast<std::size_t>(m.frame_node)].id);
+    }
   }
   return out;
 }
@@ -115,12 +189,19 @@ FramePartsSummary frame_parts_summary(const fem::FrameModel& model, const std::v
   s.parts = ordered_json::array();
   for (const MountedPart& m : parts) {
     const int frame_id = model.nodes[static_cast<std::size_t>(m.frame_node)].id;
+    std::vector<int> mount_ids;
+    for (int n : m.mount_nodes) mount_ids.push_back(model.nodes[static_cast<std::size_t>(n)].id);
+    if (mount_ids.empty()) mount_ids.push_back(frame_id);
+    const std::string ids = fmt::format("{}", fmt::join(mount_ids, ", "));
     s.parts.push_back({{"name", m.part.name},
                        {"mass", {{"value", u.from_si(m.part.mass, Quantity::mass)}, {"unit", Mu}}},
                        {"cg", point(m.part.cg)},
                        {"inertia_about_cg", tensor(m.part.inertia)},
                        {"frame_node", frame_id},
-                       {"joined_by", m.linked ? fmt::format("rigid link from node {} to node {} at the c.g.", frame_id,
+                       {"mount_nodes", mount_ids},
+                       {"joined_by", !m.mount_nodes.empty() ? fmt::format("distributing coupling from mounts {} (equal weights) to node {} at the c.g.",
+                                                                          ids, model.nodes[static_cast<std::size_t>(m.mass_node)].id)
+                                     : m.linked ? fmt::format("rigid link from node {} to node {} at the c.g.", frame_id,
                                                             model.nodes[static_cast<std::size_t>(m.mass_node)].id)
                                               : fmt::format("point mass on node {} (the c.g. is on it)", frame_id)},
                        {"arm", {{"value", m.arm * lf}, {"unit", L}}}});

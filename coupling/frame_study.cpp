@@ -364,7 +364,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   check_load_points_on_mesh(model, out.mapping, out.loads, q, loads_file);
   // The frame assembly's parts, after the loads are mapped (a load point reaches frame nodes, never a part's c.g.
   // node): their nodes are numbered after the mesh's, so the distribution gains zero rows for them.
-  out.parts = mount_frame_parts(model, q.parts);
+  out.parts = mount_frame_parts(model, q.parts, mesh_name);
   out.mapping.distribution.conservativeResize(model.dof_count(), out.mapping.distribution.cols());
   out.mass = frame_rigid_body_mass(model);
 

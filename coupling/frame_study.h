@@ -116,10 +116,10 @@ struct FrameStudyRequest {
   // name a line: the key's own line, or the block's when the key was left to
   // its default.
   std::map<std::string, core::InputLocation> key_locations;
-  // The frame assembly's parts the frame model carries as masses on rigid links
-  // (coupling/frame_parts.h, SI); a 3-D study sets them from its frame.parts less
+  // The frame assembly's parts the frame model carries as masses on rigid links or
+  // distributing couplings to their mounts (coupling/frame_parts.h, SI); a 3-D study sets them from its frame.parts less
   // the frame structure the mesh models (coupling/frame_mass_source.h). Empty: the mesh alone.
-  std::vector<rigid::RigidPart3D> parts;
+  std::vector<FramePart> parts;
   std::string structure_part;                  // the frame part the mesh models ("" without a vehicle model)
   std::string structure_source;                // "mesh": the vehicle model took the structure's mass from the mesh
   std::vector<std::string> parts_carried_by_mesh;

@@ -10,6 +10,7 @@
 
 #include "coupling/study_blocks.h"
 #include "coupling/yaml_input.h"
+#include "fem/frame_model.h"
 
 namespace framedyn::coupling {
 
@@ -94,6 +95,38 @@ rigid::SpringDamperValues* tire_spring(rigid::Tire3D& t, const std::string& dir)
   if (dir == "longitudinal") return &t.longitudinal;
   if (dir == "lateral") return &t.lateral;
   return nullptr;
+}
+
+// A frame part's `mounts`: 1 to kMaxCouplingMounts entries, each a node number of the frame
+// mesh or a point [X, Y, Z] (the nearest beam node); used by the frame model only
+// (coupling/frame_parts.h). Node numbers and lines are checked against the mesh there.
+void read_part_mounts(const YamlMap& a, StudyFramePart& sp) {
+  const YAML::Node list = a.node()["mounts"];
+  const std::string expected = fmt::format("a list of 1 to {} mounts, each a node number of the frame mesh or a point [X, Y, Z]", fem::kMaxCouplingMounts);
+  sp.mounts_where = a.location("mounts");
+  if (!list.IsSequence() || list.size() == 0 || list.size() > static_cast<std::size_t>(fem::kMaxCouplingMounts))
+    throw a.error("mounts", expected, list.IsSequence() ? fmt::format("{} mounts", list.size()) : describe(list));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const YAML::Node item = list[i];
+    PartMount m;
+    m.where = {a.file(), item.Mark().line + 1, fmt::format("{}.mounts[{}]", a.path(), i)};
+    bool ok = false;
+    if (item.IsScalar()) {
+      const std::string t = item.Scalar();
+      ok = !t.empty() && t.size() < 10 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; }) && std::stoi(t) > 0;
+      if (ok) m.node = std::stoi(t);
+    } else if (item.IsSequence() && item.size() == 3) {
+      ok = true;
+      for (std::size_t k = 0; k < 3 && ok; ++k) {
+        double v = 0.0;
+        ok = item[k].IsScalar() && parse_number(item[k], v) && std::isfinite(v);
+        m.point(static_cast<Eigen::Index>(k)) = a.units().to_si(v, Quantity::length);
+      }
+      m.by_point = true;
+    }
+    if (!ok) throw core::InputError(m.where, expected, describe(item));
+    sp.mounts.push_back(m);
+  }
 }
 
 }  // namespace
@@ -245,8 +278,9 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
       sp.has_values = a.has("mass") || a.has("weight");
     }
     if (sp.has_values) {
-      a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from"});
+      a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from", "mounts"});
       sp.part = part(a, a.text("name"));
+      if (a.has("mounts")) read_part_mounts(a, sp);
     } else {
       a.allow_only({"name", "from"});
       sp.part.name = a.text("name");
@@ -349,8 +383,13 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     FrameStudyRequest q = read_frame_block(block, std::filesystem::path(file).parent_path());
     q.name = s.name;
     // One source of truth for the frame structure's mass: the mesh (Eq. 9.4); the other parts go onto the frame model.
-    const FrameMassSources sources =
-        frame_mass_from_mesh(study_parts, read_frame_mesh(q), q.mesh.string(), frame.location("parts"), s.units);
+    const fem::FrameModel mesh = read_frame_mesh(q);
+    const FrameMassSources sources = frame_mass_from_mesh(study_parts, mesh, q.mesh.string(), frame.location("parts"), s.units);
+    {
+      // The parts' mounts against the mesh now (STUDY-111..113), so that a wrong node costs no vehicle run.
+      fem::FrameModel probe = mesh;
+      (void)mount_frame_parts(probe, sources.mounted, q.mesh.string());
+    }
     p.frame.parts = sources.vehicle_parts;
     q.parts = sources.mounted;
     q.structure_part = sources.structure_part;

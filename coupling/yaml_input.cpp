@@ -125,7 +125,6 @@ std::vector<YamlMap> YamlMap::list_of_maps(const std::string& key) const {
   return out;
 }
 
-namespace {
 bool parse_number(const YAML::Node& n, double& v) {
   if (!n.IsScalar()) return false;
   const std::string s = n.Scalar();
@@ -133,6 +132,8 @@ bool parse_number(const YAML::Node& n, double& v) {
   v = std::strtod(s.c_str(), &end);
   return !s.empty() && end == s.c_str() + s.size() && std::isfinite(v);
 }
+
+namespace {
 
 // The largest magnitude of a value in SI units: 1e308 lbf/in is finite in the
 // file and inf in N/m, and beyond 1e300 the machine's matrices (sums of

@@ -73,4 +73,7 @@ YAML::Node load_yaml_file(const std::string& file);
 // How a node looks, for messages: "a list", "the text 'abc'", ...
 std::string describe(const YAML::Node& node);
 
+// A scalar that is a finite number, read into `v` (no units).
+bool parse_number(const YAML::Node& n, double& v);
+
 }  // namespace framedyn::coupling

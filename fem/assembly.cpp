@@ -133,8 +133,9 @@ std::array<int, 12> element_dofs(const BeamElement& beam) {
 
 // The equations a global DOF acts on and with which factor: its own equation
 // (factor 1) if free, its free masters' (Eq. R.1 coefficients) if a slave of a
-// rigid link, none if constrained. Returns the count (at most 4).
-int equation_terms(const DofMap& dofs, int g, std::array<int, 4>& eq, std::array<double, 4>& factor) {
+// rigid link or a distributing coupling, none if constrained. Returns the count
+// (at most kMaxSlaveMasters).
+int equation_terms(const DofMap& dofs, int g, std::array<int, kMaxSlaveMasters>& eq, std::array<double, kMaxSlaveMasters>& factor) {
   const int f = dofs.free_index[static_cast<std::size_t>(g)];
   if (f >= 0) {
     eq[0] = f;
@@ -156,8 +157,8 @@ int equation_terms(const DofMap& dofs, int g, std::array<int, 4>& eq, std::array
 // T^T m T scattered (Eq. R.2) for elements that touch slave DOFs.
 template <int N>
 void scatter_linked(Triplets& out, const Eigen::Matrix<double, N, N>& m, const std::array<int, N>& global, const DofMap& dofs, Storage storage) {
-  std::array<std::array<int, 4>, N> eq;
-  std::array<std::array<double, 4>, N> factor;
+  std::array<std::array<int, kMaxSlaveMasters>, N> eq;
+  std::array<std::array<double, kMaxSlaveMasters>, N> factor;
   std::array<int, N> count;
   for (int i = 0; i < N; ++i)
     count[static_cast<std::size_t>(i)] = equation_terms(dofs, global[static_cast<std::size_t>(i)], eq[static_cast<std::size_t>(i)], factor[static_cast<std::size_t>(i)]);

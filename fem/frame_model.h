@@ -119,6 +119,20 @@ struct RigidLink {
   std::string source;              // where it was defined ("*RIGID BODY at f.inp:12"), for messages
 };
 
+// A distributing coupling (RBE3-like; docs/theory/fem.md, "Distributing
+// couplings", Eqs. R.6-R.8): the reference node follows the weighted
+// least-squares rigid motion of the mount nodes' translations, so a mass on
+// it reaches the mounts as forces in proportion to the weights and the
+// coupling adds no stiffness between the mounts. The mounts must not all lie
+// on one line (their rigid fit would leave a rotation undetermined).
+struct DistributingCoupling {
+  int reference_node = 0;          // index into nodes: its six DOFs follow the mounts
+  std::vector<int> mount_nodes;    // indices into nodes, at most kMaxCouplingMounts
+  std::vector<double> weights;     // one per mount, > 0 (uniform: all 1)
+  std::string source;              // what defined it ("frame part engine"), for messages
+};
+inline constexpr int kMaxCouplingMounts = 8;
+
 struct FrameModel {
   std::vector<Node> nodes;
   std::vector<BeamElement> beams;
@@ -129,6 +143,7 @@ struct FrameModel {
   std::vector<NodalLoad> loads;                // *CLOAD, and GRAV on point masses
   std::vector<ElementLoad> element_loads;     // *DLOAD on beams (see fem/distributed_loads.h)
   std::vector<RigidLink> rigid_links;
+  std::vector<DistributingCoupling> distributing_couplings;
   std::map<std::string, std::vector<int>> node_sets;     // upper-case name -> node indices
   std::map<std::string, std::vector<int>> element_sets;  // upper-case name -> element ids (beams and others)
   core::UnitSystem units = core::UnitSystem::si();       // the unit system the input was written in

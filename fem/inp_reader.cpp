@@ -350,6 +350,12 @@ struct RawRigidLink {  // *RIGID BODY (one per node set) or one *MPC BEAM line
   InputLocation where;
 };
 
+struct RawCoupling {  // *DISTRIBUTING COUPLING, ELSET= (of DCOUP3D elements on the reference node)
+  std::string elset;
+  std::vector<std::pair<std::string, double>> mounts;  // node number or node set name, weight
+  InputLocation where;
+};
+
 struct RawElementProperty {  // *MASS, *ROTARY INERTIA, *SPRING
   std::string keyword, elset;
   std::vector<double> values;
@@ -453,6 +459,7 @@ class Parser {
   std::vector<RawLoad> loads_;
   std::vector<RawElementProperty> properties_;
   std::vector<RawRigidLink> rigid_links_;
+  std::vector<RawCoupling> couplings_;
   std::optional<int> frequency_count_;
   bool in_step_ = false;
   int steps_ = 0;
@@ -483,6 +490,7 @@ class Parser {
   void apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const;
   void rigid_body(const Block& b);
   void mpc(const Block& b);
+  void distributing_coupling(const Block& b);
   void build_rigid_links(FrameModel& model) const;
   FrameModel build(const core::UnitSystem& units);
   std::vector<int> set_members(const std::string& name, bool nodes, const InputLocation& where) const;
@@ -520,9 +528,9 @@ void Parser::element(const Block& b) {
   std::size_t node_count = 0;
   if (type == "B31" || type == "B33" || type == "SPRING2") node_count = 2;
   else if (type == "B32" || type == "B32R") node_count = 3;  // end, midside, end
-  else if (type == "MASS" || type == "ROTARYI" || type == "SPRING1") node_count = 1;
+  else if (type == "MASS" || type == "ROTARYI" || type == "SPRING1" || type == "DCOUP3D") node_count = 1;
   else
-    throw InputError(b.keyword.where, "TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1 or SPRING2 (framedyn reads beam models)",
+    throw InputError(b.keyword.where, "TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1, SPRING2 or DCOUP3D (framedyn reads beam models)",
                      "TYPE=" + type);
   std::vector<int>* set = nullptr;
   std::vector<Where>* set_where = nullptr;
@@ -865,6 +873,25 @@ void Parser::mpc(const Block& b) {
   }
 }
 
+// *DISTRIBUTING COUPLING, ELSET= (Abaqus, CalculiX): the DCOUP3D element(s) of the
+// set sit on the reference node; data lines "node or node set, weight" (weight
+// 1 when left out) are the mounts (fem/rigid_links.h, Eqs. R.6-R.8).
+void Parser::distributing_coupling(const Block& b) {
+  check_params(b.keyword, {"ELSET"});
+  RawCoupling c;
+  c.where = b.keyword.where;
+  c.elset = upper(required_param(b.keyword, "ELSET"));
+  if (b.data.empty()) throw InputError(b.keyword.where, "data lines 'mount node or node set, weight'", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    if (f.empty() || f.size() > 2 || f[0].empty()) throw InputError(at(l, b.keyword), "mount node or node set, weight", "'" + l.text + "'");
+    const double w = f.size() == 2 && !f[1].empty() ? parse_double(f[1], at(l, b.keyword), "a weight") : 1.0;
+    if (!(w > 0.0)) throw InputError(at(l, b.keyword), "a positive weight", f[1]);
+    c.mounts.emplace_back(f[0], w);
+  }
+  couplings_.push_back(c);
+}
+
 // Resolves node numbers and sets, then checks the links against each other
 // and the supports (rigid_link_constraints), each error at its line.
 void Parser::build_rigid_links(FrameModel& model) const {
@@ -890,10 +917,26 @@ void Parser::build_rigid_links(FrameModel& model) const {
     link.source = core::format_location(raw.where);
     model.rigid_links.push_back(std::move(link));
   }
+  std::vector<InputLocation> coupling_where;
+  for (const RawCoupling& raw : couplings_)
+    for (int id : model.element_sets.at(raw.elset)) {
+      DistributingCoupling c;
+      c.reference_node = model.node_index(elements_[element_index_.at(id)].node_ids[0]);
+      for (const auto& [target, weight] : raw.mounts)
+        for (int n : nodes_of(target, raw.where, "mount node")) {
+          c.mount_nodes.push_back(n);
+          c.weights.push_back(weight);
+        }
+      c.source = core::format_location(raw.where);
+      model.distributing_couplings.push_back(std::move(c));
+      coupling_where.push_back(raw.where);
+    }
   try {
     (void)rigid_link_constraints(model);
   } catch (const RigidLinkError& e) {
     throw InputError(rigid_links_[static_cast<std::size_t>(e.link())].where, e.expected(), e.found());
+  } catch (const DistributingCouplingError& e) {
+    throw InputError(coupling_where[static_cast<std::size_t>(e.coupling())], e.expected(), e.found());
   }
   if (model.rigid_links.empty()) return;
   // T^T K T multiplies what acts on a tied node by up to (1 + |d|)^2 (Eq. R.2):
@@ -1205,13 +1248,14 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*MASS" || k == "*ROTARY INERTIA" || k == "*SPRING") element_property(b);
     else if (k == "*RIGID BODY") rigid_body(b);
     else if (k == "*MPC") mpc(b);
+    else if (k == "*DISTRIBUTING COUPLING") distributing_coupling(b);
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
-                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *RIGID BODY, *MPC, *INCLUDE, "
+                       "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *RIGID BODY, *MPC, *DISTRIBUTING COUPLING, *INCLUDE, "
                        "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
@@ -1427,9 +1471,20 @@ FrameModel Parser::build(const core::UnitSystem& units) {
       }
     }
   }
+  // A DCOUP3D element's property is its *DISTRIBUTING COUPLING (build_rigid_links).
+  for (const RawCoupling& c : couplings_) {
+    auto set_it = model.element_sets.find(c.elset);
+    if (set_it == model.element_sets.end()) throw InputError(c.where, "ELSET naming a defined element set of DCOUP3D elements", c.elset);
+    for (int id : set_it->second) {
+      const RawElement& e = elements_[element_index_[id]];
+      if (e.type != "DCOUP3D") throw InputError(c.where, "DCOUP3D elements in ELSET " + c.elset, fmt::format("element {} of type {}", id, e.type));
+      if (!has_property.insert(id).second) throw InputError(c.where, "one coupling per DCOUP3D element", fmt::format("element {} twice", id));
+    }
+  }
   for (const RawElement& e : elements_)
     if (e.type != "B31" && e.type != "B33" && e.type != "B32" && e.type != "B32R" && !has_property.count(e.id))
-      throw InputError(e.where, "a *MASS, *ROTARY INERTIA or *SPRING for element " + std::to_string(e.id) + " of type " + e.type, "none");
+      throw InputError(e.where, (e.type == "DCOUP3D" ? "a *DISTRIBUTING COUPLING for element " : "a *MASS, *ROTARY INERTIA or *SPRING for element ") +
+                                  std::to_string(e.id) + " of type " + e.type, "none");
 
   apply_section_extras(model, units);
   apply_releases(model);

@@ -43,6 +43,9 @@ FreeRigidMotions free_rigid_motions(const FrameModel& model) {
   // a rigid motion of the reference node moves the tied nodes rigidly with it.
   for (const RigidLink& link : model.rigid_links)
     for (int s : link.slave_nodes) parts.join(link.reference_node, s);
+  // A distributing coupling's reference node moves with its mounts (Eqs. R.6-R.8 are exact for rigid motions).
+  for (const DistributingCoupling& c : model.distributing_couplings)
+    for (int m : c.mount_nodes) parts.join(c.reference_node, m);
   out.part_of_node.assign(static_cast<std::size_t>(nn), -1);
   std::vector<int> root_part(static_cast<std::size_t>(nn), -1);
   for (int i = 0; i < nn; ++i) {

@@ -12,6 +12,9 @@
 // Slave DOFs are neither free nor constrained: DofMap numbers only the
 // masters, and a *BOUNDARY on a slave DOF is refused (it would overconstrain
 // the link).
+// A distributing coupling (FrameModel::distributing_couplings, Eqs. R.6-R.8)
+// is one more kind of slave row: each of its reference node's six DOFs is a
+// combination of the mounts' translations (up to 3 x kMaxCouplingMounts masters).
 #pragma once
 
 #include <Eigen/Dense>
@@ -25,12 +28,15 @@
 
 namespace framedyn::fem {
 
+// At most this many masters per slave DOF: a coupling's mounts' translations.
+inline constexpr int kMaxSlaveMasters = 3 * kMaxCouplingMounts;
+
 // One slave DOF: u[dof] = sum_k coefficient[k] u[master[k]], k < count.
 struct SlaveDof {
   int dof = 0;                       // global DOF
   int count = 0;
-  std::array<int, 4> master{};       // global DOFs of the reference node
-  std::array<double, 4> coefficient{};
+  std::array<int, kMaxSlaveMasters> master{};       // global DOFs of the reference node (or of the mounts)
+  std::array<double, kMaxSlaveMasters> coefficient{};
 };
 
 // The rows of T that are not identity rows.
@@ -55,11 +61,31 @@ class RigidLinkError : public std::invalid_argument {
   std::string expected_, found_;
 };
 
-// Builds T's slave rows from model.rigid_links. Throws RigidLinkError for a
-// node index out of range, a slave that is its own reference, a node slave
-// of two links, a chain (a reference node that is a slave of another link),
-// or a *BOUNDARY on a slave DOF.
+// A distributing coupling that cannot be used (index into model.distributing_couplings).
+class DistributingCouplingError : public std::invalid_argument {
+ public:
+  DistributingCouplingError(int coupling, const std::string& source, std::string expected, std::string found);
+  int coupling() const { return coupling_; }
+  const std::string& expected() const { return expected_; }
+  const std::string& found() const { return found_; }
+
+ private:
+  int coupling_;
+  std::string expected_, found_;
+};
+
+// Builds T's slave rows from model.rigid_links and model.distributing_couplings.
+// Throws RigidLinkError for a node index out of range, a slave that is its own
+// reference, a node slave of two links, a chain (a reference node that is a
+// slave of another link), or a *BOUNDARY on a slave DOF; DistributingCouplingError
+// for a distributing coupling that is not 1..kMaxCouplingMounts distinct mounts
+// with positive weights off one line, or whose nodes are tied otherwise.
 RigidLinkConstraints rigid_link_constraints(const FrameModel& model);
+
+// The rows of Eqs. R.6-R.8 for one coupling: rows[k] (k = 0..5, the reference
+// node's ux..rz) times the mounts' translations stacked [u_1; u_2; ...].
+// Throws std::invalid_argument for mounts on one line (or all at one point).
+Eigen::MatrixXd distributing_coupling_rows(const FrameModel& model, const DistributingCoupling& coupling);
 
 // u = T u_m on all-DOF vectors (Eq. R.3): each slave entry is set from its
 // masters' entries (free or prescribed), in place. Columns of a matrix each.

@@ -241,6 +241,16 @@ Row structure_row(const std::string& id, const std::string& from, const std::str
   return {id, {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q", at("study.yaml", text, marker, key)};
 }
 
+// kStudy3D's engine with `mounts` (coupling/frame_parts.h) and a frame_response on the shipped frame, free-free.
+const std::string kEngine = "{name: engine, weight: 850, position: [40, 0, 14], radii_of_gyration: [12, 14, 14]}";
+Row mounts_row(const std::string& id, const std::string& mounts, const std::string& key) {
+  const std::string text =
+      edit(edit(edit(kStudy3D, kStructurePart, "{name: frame_structure, from: frame_mesh}"), kEngine,
+                "{name: engine, weight: 850, position: [40, 0, 14], radii_of_gyration: [12, 14, 14], mounts: " + mounts + "}"),
+           "analysis:\n", "frame_response: {mesh: frame.inp, supports: none}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+  return {id, {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q", at("study.yaml", text, "name: engine", key)};
+}
+
 Row frame_row(const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key) {
   const std::string text = edit(kFrameStudy, from, to);
   return {id,
@@ -488,6 +498,11 @@ std::vector<Row> rows() {
         return Row{"STUDY-106", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
                    at("study.yaml", text, "mesh_loads", "frame_response.mesh_loads")};
       }(),
+      // ---- a frame part's mounts on the frame mesh (coupling/rigid_study_3d.cpp, frame_parts.cpp)
+      mounts_row("STUDY-110", "[12, left]", "frame.parts[1].mounts[1]"),
+      mounts_row("STUDY-111", "[12, 34, 14, 99]", "frame.parts[1].mounts[3]"),
+      mounts_row("STUDY-112", "[12, 13, 14]", "frame.parts[1].mounts"),
+      mounts_row("STUDY-113", "[12, 34, [31, -15, 0]]", "frame.parts[1].mounts[2]"),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.

@@ -110,12 +110,12 @@ TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned)
   for (const nlohmann::json& w : summary_["warnings"]) at_support = at_support || w["code"] == "peak_at_artificial_support";
   EXPECT_TRUE(at_support) << summary_["warnings"].dump();
   EXPECT_NE(slurp(*dir_ / "run.log").find("framedyn: warning [peak_at_artificial_support]: left_rail: the peak normal stress"), std::string::npos);
-  // The shaker, 18.33 Hz, lies within 10 % of the clamped frame model's elastic modes 2 and 3 (16.98 and 18.79 Hz,
-  // +7.9 % and -2.4 %): the run says that its stresses are set by the modal damping there.
+  // The shaker, 18.33 Hz, lies within 10 % of the clamped frame model's elastic mode 2 (18.43 Hz, -0.5 %; with the
+  // parts on their mounts): the run says that its stresses are set by the modal damping there.
   std::vector<double> near;
   for (const nlohmann::json& w : summary_["warnings"])
     if (w["code"] == "shaker_near_frame_mode") near.push_back(w["figures"]["mode"]["value"].get<double>());
-  EXPECT_EQ(near, (std::vector<double>{2, 3})) << summary_["warnings"].dump();
+  EXPECT_EQ(near, (std::vector<double>{2})) << summary_["warnings"].dump();
 }
 
 // Static plus dynamic (the dead load, on by default; theory/coupling.md section 11): the

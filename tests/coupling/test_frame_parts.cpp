@@ -15,17 +15,29 @@
 //    model under the same loads is stressed (the parts' inertia is missing);
 //  - the frame node a part hangs from is the nearest beam node, a tie going to
 //    the lowest node number;
+//  - a part on several mounts (a distributing coupling, Eqs. 9.5-9.6, R.6-R.8)
+//    follows a rigid motion of the frame exactly, adds no stiffness (the
+//    reduced stiffness matrix is the bare frame's, entry for entry), keeps the
+//    hand-summed rigid-body mass, and passes a load at its c.g. to its mounts
+//    with the load's resultant and moment (statics), 1/N each when the c.g. is
+//    over the mounts' centroid;
+//  - the rigid-only 3-D studies of the shipped machine (examples/r100_*.yaml),
+//    which have no mesh to take the structure from, carry the mesh's mass, c.g.
+//    and radii of gyration (to the digits they print);
 //  - the mesh as the source of the frame structure's mass (Eq. 9.4): a study
 //    part that disagrees with the mesh is refused, one that agrees is replaced
 //    by the mesh's values, a part the mesh carries is not counted twice.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "coupling/frame_balance.h"
 #include "coupling/frame_mass_source.h"
 #include "coupling/frame_parts.h"
+#include "coupling/rigid_study_3d.h"
 #include "fem/assembly.h"
 #include "fem/beam_element.h"
 #include "fem/inp_reader.h"
@@ -185,11 +197,163 @@ TEST(FrameParts, FreeFrameUnderTheDAlembertForcesOfARigidAccelerationIsUnstresse
 TEST(FrameParts, APartEquallyFarFromTwoNodesHangsFromTheLowerNodeNumber) {
   fem::FrameModel model = small_frame();
   // (0.6, 0, 0.1): 0.2236 m from node 2 (0.4) and node 3 (0.8) alike.
-  const auto mounted = coupling::mount_frame_parts(model, {{"tank", 10.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  const auto mounted = coupling::mount_frame_parts(model, std::vector<rigid::RigidPart3D>{{"tank", 10.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(mounted[0].frame_node)].id, 2);
   // Never another part's c.g. node: a second part at the first's c.g. hangs from a beam node too.
-  const auto second = coupling::mount_frame_parts(model, {{"tank2", 5.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
+  const auto second = coupling::mount_frame_parts(model, std::vector<rigid::RigidPart3D>{{"tank2", 5.0, Vector3d(0.6, 0.0, 0.1), rigid::inertia_tensor(0.1, 0.1, 0.1)}});
   EXPECT_EQ(model.nodes[static_cast<std::size_t>(second[0].frame_node)].id, 2);
+}
+
+// The engine of two_parts() on four mounts: nodes 2 and 4 on the rail, 5 and 6 at the cross member's ends.
+coupling::FramePart engine_on_four_mounts() {
+  coupling::FramePart p{two_parts()[0], {}, {"study.yaml", 9, "frame.parts[0].mounts"}};
+  for (int n : {2, 4, 5, 6}) p.mounts.push_back({n, false, Vector3d::Zero(), {"study.yaml", 9, "frame.parts[0].mounts"}});
+  return p;
+}
+
+TEST(FrameParts, DistributingCouplingFollowsARigidMotionExactlyAndAddsNoStiffness) {
+  fem::FrameModel model = small_frame();
+  const fem::FrameModel bare = small_frame();
+  const std::vector<coupling::MountedPart> mounted = coupling::mount_frame_parts(model, {engine_on_four_mounts()});
+  ASSERT_EQ(mounted.size(), 1u);
+  ASSERT_EQ(model.distributing_couplings.size(), 1u);
+  EXPECT_TRUE(model.rigid_links.empty());
+  const int c = mounted[0].mass_node;
+  EXPECT_EQ((model.nodes[static_cast<std::size_t>(c)].position - two_parts()[0].cg).norm(), 0.0);
+
+  // A rigid motion of the frame (translation a, rotation theta about the origin): the c.g. node moves with it (Eq. R.7-R.8).
+  const fem::DofMap dofs = fem::make_dof_map(model);
+  const Vector3d a(1e-3, -2e-3, 0.5e-3), theta(0.01, -0.02, 0.015);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(model.dof_count());
+  for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+    if (static_cast<int>(i) == c) continue;
+    u.segment<3>(6 * static_cast<Eigen::Index>(i)) = a + theta.cross(model.nodes[i].position);
+    u.segment<3>(6 * static_cast<Eigen::Index>(i) + 3) = theta;
+  }
+  fem::fill_slave_dofs(dofs.links, u);
+  const Vector3d expected = a + theta.cross(two_parts()[0].cg);
+  EXPECT_LT((u.segment<3>(6 * c) - expected).norm(), 1e-15);
+  EXPECT_LT((u.segment<3>(6 * c + 3) - theta).norm(), 1e-15);
+
+  // No stiffness added: the c.g. node is a slave, the free DOFs are the bare frame's, K is the bare frame's.
+  fem::AssemblyOptions full;
+  full.storage = fem::Storage::full;
+  const fem::SparseMatrix k_with = fem::assemble(model, dofs, full).stiffness;
+  const fem::SparseMatrix k_bare = fem::assemble(bare, fem::make_dof_map(bare), full).stiffness;
+  ASSERT_EQ(k_with.rows(), k_bare.rows());
+  EXPECT_EQ((Eigen::MatrixXd(k_with) - Eigen::MatrixXd(k_bare)).cwiseAbs().maxCoeff(), 0.0);
+
+  // The rigid-body mass is the hand sum of tubes and part (Eq. 9.3), as with a rigid link.
+  const coupling::RigidBodyMass body = coupling::frame_rigid_body_mass(model);
+  const rigid::RigidPart3D hand = rigid::combine({rod("rail", Vector3d(0, 0, 0), Vector3d(1.2, 0, 0)), rod("cross", Vector3d(0.8, -0.3, 0), Vector3d(0.8, 0.3, 0)),
+                                                  two_parts()[0]},
+                                                 "frame");
+  EXPECT_NEAR(body.mass, hand.mass, 1e-13 * hand.mass);
+  EXPECT_LT((body.cg - hand.cg).norm(), 1e-13);
+  EXPECT_LT((body.inertia - hand.inertia).norm(), 1e-12 * hand.inertia.norm());
+
+  // Statics (Eq. 9.6): a force and moment on the c.g. node reach the mounts with the same resultant and moment.
+  const Vector3d force(120.0, -80.0, -400.0), moment(15.0, 30.0, -10.0);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.dof_count());
+  f.segment<3>(6 * c) = force;
+  f.segment<3>(6 * c + 3) = moment;
+  fem::fold_slave_forces(dofs.links, f);
+  Vector3d resultant = Vector3d::Zero(), about_origin = Vector3d::Zero();
+  for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+    const Vector3d fi = f.segment<3>(6 * static_cast<Eigen::Index>(i));
+    EXPECT_EQ(f.segment<3>(6 * static_cast<Eigen::Index>(i) + 3).norm(), 0.0) << "a moment at node " << model.nodes[i].id;
+    resultant += fi;
+    about_origin += model.nodes[i].position.cross(fi);
+  }
+  EXPECT_LT((resultant - force).norm(), 1e-12 * force.norm());
+  EXPECT_LT((about_origin - (moment + two_parts()[0].cg.cross(force))).norm(), 1e-12 * force.norm());
+  // Mounts 2, 4, 5, 6 (X 0.4, 1.2, 0.8, 0.8) have their centroid at (0.8, 0, 0): a vertical 400 N there goes 1/4 to each
+  // mount. At (0.7, 0, 0) it adds the moment 400 N x 0.1 m about Y, which only the rail mounts 2 and 4 (arms -+0.4 m)
+  // resist, by least squares +-M r / sum r^2 = 40 x 0.4 / 0.32 = 50 N: 150 N at node 2, 50 N at node 4, 100 N at 5 and 6.
+  const auto vertical_shares = [&](double x) {
+    fem::FrameModel centred = small_frame();
+    coupling::FramePart at = engine_on_four_mounts();
+    at.part.cg = Vector3d(x, 0.0, 0.0);
+    const auto placed = coupling::mount_frame_parts(centred, {at});
+    const fem::DofMap centred_dofs = fem::make_dof_map(centred);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(centred.dof_count());
+    g(6 * placed[0].mass_node + 2) = -400.0;
+    fem::fold_slave_forces(centred_dofs.links, g);
+    std::vector<double> shares;
+    for (int id : {2, 4, 5, 6}) shares.push_back(g(6 * centred.node_index(id) + 2));
+    return shares;
+  };
+  const std::vector<double> over_centroid = vertical_shares(0.8), ahead = vertical_shares(0.7);
+  const double hand_centroid[4] = {-100, -100, -100, -100}, hand_ahead[4] = {-150, -50, -100, -100};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(over_centroid[i], hand_centroid[i], 1e-12) << "mount " << i;
+    EXPECT_NEAR(ahead[i], hand_ahead[i], 1e-12) << "mount " << i;
+  }
+}
+
+TEST(FrameParts, PartsOnMountsWrittenAsDistributingCouplingsReadBackAsTheSameModel) {
+  // frame_parts.inp writes a coupled part as *ELEMENT, TYPE=DCOUP3D + *DISTRIBUTING COUPLING; the reader gives it back.
+  fem::FrameModel model = small_frame();
+  const auto mounted = coupling::mount_frame_parts(model, {engine_on_four_mounts()});
+  const std::string fragment = coupling::frame_parts_inp(model, mounted);
+  EXPECT_NE(fragment.find("*DISTRIBUTING COUPLING, ELSET=ENGINE_MOUNTS\n2, 1\n4, 1\n5, 1\n6, 1\n"), std::string::npos) << fragment;
+  const fem::FrameModel back = fem::read_inp_text(kFrame + fragment, "frame.inp", ".");
+  ASSERT_EQ(back.distributing_couplings.size(), 1u);
+  std::vector<int> ids;
+  for (int n : back.distributing_couplings[0].mount_nodes) ids.push_back(back.nodes[static_cast<std::size_t>(n)].id);
+  EXPECT_EQ(ids, (std::vector<int>{2, 4, 5, 6}));
+  fem::AssemblyOptions full;
+  full.storage = fem::Storage::full;
+  const Eigen::MatrixXd m_run(fem::assemble(model, fem::make_dof_map(model), full).mass);
+  const Eigen::MatrixXd m_back(fem::assemble(back, fem::make_dof_map(back), full).mass);
+  ASSERT_EQ(m_run.rows(), m_back.rows());
+  // 17 significant digits in the file: the same matrix to round-off.
+  EXPECT_LT((m_run - m_back).cwiseAbs().maxCoeff(), 1e-13 * m_run.cwiseAbs().maxCoeff());
+}
+
+TEST(FrameParts, MountsOnOneLineOrTwiceAtANodeOrOffTheBeamsAreRefusedNamingTheEntry) {
+  // Nodes 1, 2, 4 lie on the rail: their rigid fit leaves the rotation about the rail free.
+  coupling::FramePart p = engine_on_four_mounts();
+  p.mounts.erase(p.mounts.begin() + 2, p.mounts.end());  // 2, 4
+  p.mounts.push_back({1, false, Vector3d::Zero(), {"study.yaml", 9, "frame.parts[0].mounts[2]"}});
+  fem::FrameModel model = small_frame();
+  try {
+    coupling::mount_frame_parts(model, {p}, "frame.inp");
+    ADD_FAILURE() << "mounts on one line were accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().key, "frame.parts[0].mounts");
+  }
+  // A point snapped to node 2 next to node 2 given by number.
+  coupling::FramePart twice = engine_on_four_mounts();
+  twice.mounts[1] = {0, true, Vector3d(0.41, 0.0, 0.0), {"study.yaml", 10, "frame.parts[0].mounts[1]"}};
+  model = small_frame();
+  EXPECT_THROW(coupling::mount_frame_parts(model, {twice}, "frame.inp"), core::InputError);
+  coupling::FramePart off = engine_on_four_mounts();
+  off.mounts[3].node = 99;
+  model = small_frame();
+  EXPECT_THROW(coupling::mount_frame_parts(model, {off}, "frame.inp"), core::InputError);
+}
+
+TEST(FrameMassSource, RigidOnlyStudiesOfTheShippedMachineCarryTheMeshsFrameStructure) {
+  const std::string source = FRAMEDYN_SOURCE_DIR;
+  const coupling::RigidBodyMass mesh = coupling::frame_rigid_body_mass(fem::read_inp(source + "/meshes/r100_frame.inp"));
+  constexpr double kInch = 0.0254, kMassUnit = 4.4482216152605 / kInch;
+  const Vector3d radii(std::sqrt(mesh.inertia(0, 0) / mesh.mass), std::sqrt(mesh.inertia(1, 1) / mesh.mass), std::sqrt(mesh.inertia(2, 2) / mesh.mass));
+  std::printf("[ measured ] meshes/r100_frame.inp: %.4f lbf s^2/in (%.2f lb), c.g. (%.3f, %.1e, %.1e) in, radii of gyration (%.3f, %.3f, %.3f) in, "
+              "largest product of inertia %.1e of the largest moment\n",
+              mesh.mass / kMassUnit, mesh.mass / kMassUnit * 386.088, mesh.cg.x() / kInch, mesh.cg.y() / kInch, mesh.cg.z() / kInch, radii.x() / kInch,
+              radii.y() / kInch, radii.z() / kInch,
+              std::max({std::abs(mesh.inertia(0, 1)), std::abs(mesh.inertia(0, 2)), std::abs(mesh.inertia(1, 2))}) / mesh.inertia.maxCoeff());
+  for (const char* study : {"r100_plow_straight", "r100_plow_offset", "r100_chain_center", "r100_chain_offset"}) {
+    const coupling::RigidStudy3D s = coupling::read_rigid_study_3d(source + "/examples/" + study + ".yaml");
+    const auto& parts = s.machine.frame.parts;
+    const auto it = std::find_if(parts.begin(), parts.end(), [](const rigid::RigidPart3D& p) { return p.name == "frame_structure"; });
+    ASSERT_NE(it, parts.end()) << study;
+    // The study prints weight to 0.1 lb, the c.g. to 0.01 in, the radii to 0.01 in: agreement to those digits.
+    EXPECT_NEAR(it->mass / kMassUnit * 386.088, mesh.mass / kMassUnit * 386.088, 0.05) << study;
+    EXPECT_LT((it->cg - mesh.cg).norm() / kInch, 0.005) << study;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::sqrt(it->inertia(k, k) / it->mass) / kInch, radii(k) / kInch, 0.005) << study << " axis " << k;
+  }
 }
 
 coupling::StudyFramePart study_part(const rigid::RigidPart3D& p, bool values = true) {
@@ -211,7 +375,7 @@ TEST(FrameMassSource, TheMeshGivesTheStructuresMassAndADisagreeingStudyValueIsRe
   ASSERT_EQ(ok.vehicle_parts.size(), 2u);
   EXPECT_EQ(ok.vehicle_parts[0].mass, tubes.mass);
   EXPECT_EQ(ok.mounted.size(), 1u);
-  EXPECT_EQ(ok.mounted[0].name, "engine");
+  EXPECT_EQ(ok.mounted[0].part.name, "engine");
   // Its c.g. 5 cm off (more than 1 % of the 1.2 m extent): refused, naming the part's entry.
   rigid::RigidPart3D off = close;
   off.mass = tubes.mass;

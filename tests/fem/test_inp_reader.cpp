@@ -948,6 +948,15 @@ std::vector<ErrorCase> error_cases() {
   return {
       // ---- keywords and parameters
       {"UnknownKeyword", kModel + "*SURFACE, NAME=S\n", "*SURFACE, NAME=S", "*SURFACE", {"expected a keyword framedyn reads", "found *SURFACE"}},
+      // ---- distributing couplings (DCOUP3D + *DISTRIBUTING COUPLING; fem/rigid_links.h, Eqs. R.6-R.8)
+      {"DistributingCouplingElementWithoutCoupling", kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n", "9, 9", "*ELEMENT",
+       {"expected a *DISTRIBUTING COUPLING for element 9 of type DCOUP3D", "found none"}},
+      {"DistributingCouplingMountsOnOneLine",
+       kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n*DISTRIBUTING COUPLING, ELSET=C\n1, 1\n2, 1\n3, 1\n",
+       "*DISTRIBUTING COUPLING, ELSET=C", "*DISTRIBUTING COUPLING", {"expected mounts that do not all lie on one line", "found nodes 1, 2, 3"}},
+      {"DistributingCouplingNegativeWeight",
+       kModel + "*NODE\n9, 1, 1, 0\n*ELEMENT, TYPE=DCOUP3D, ELSET=C\n9, 9\n*DISTRIBUTING COUPLING, ELSET=C\n1, -1\n", "1, -1",
+       "*DISTRIBUTING COUPLING", {"expected a positive weight", "found -1"}},
       {"UnknownKeywordInsideStep", kModel + "*STEP\n*TEMPERATURE\n1, 100.\n*END STEP\n", "*TEMPERATURE", "*TEMPERATURE", {"found *TEMPERATURE"}},
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
@@ -985,7 +994,7 @@ std::vector<ErrorCase> error_cases() {
       {"CoordinateNan", kUnits + "*NODE\n1, 0, NaN, 0\n", "1, 0, NaN, 0", "*NODE", {"found 'NaN'"}},
       {"CoordinateOverflow", kUnits + "*NODE\n1, 1e999, 0, 0\n", "1, 1e999, 0, 0", "*NODE", {"found '1e999'"}},
       // ---- *ELEMENT
-      {"ElementTypeC3D8", kUnits + kNodes + "*ELEMENT, TYPE=C3D8\n1, 1, 2, 3, 1, 2, 3, 1, 2\n", "*ELEMENT, TYPE=C3D8", "*ELEMENT", {"expected TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1 or SPRING2", "found TYPE=C3D8"}},
+      {"ElementTypeC3D8", kUnits + kNodes + "*ELEMENT, TYPE=C3D8\n1, 1, 2, 3, 1, 2, 3, 1, 2\n", "*ELEMENT, TYPE=C3D8", "*ELEMENT", {"expected TYPE=B31, B32, B32R, B33, MASS, ROTARYI, SPRING1, SPRING2 or DCOUP3D", "found TYPE=C3D8"}},
       {"ElementB32WithTwoNodes", kUnits + kNodes + "*ELEMENT, TYPE=B32\n1, 1, 2\n", "1, 1, 2", "*ELEMENT", {"expected element number and 3 node number(s) for B32", "found '1, 1, 2'"}},
       {"ElementB32RWithARepeatedNode", kUnits + kNodes + "*ELEMENT, TYPE=B32R\n1, 1, 2, 1\n", "1, 1, 2, 1", "*ELEMENT", {"expected three different nodes (end, midside, end)", "found element 1 on nodes 1, 2, 1"}},
       {"ElementTypeLowerCase", kUnits + kNodes + "*ELEMENT, TYPE=t3d2\n1, 1, 2\n", "*ELEMENT, TYPE=t3d2", "*ELEMENT", {"found TYPE=T3D2"}},
