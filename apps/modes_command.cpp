@@ -35,7 +35,7 @@ int run_modes(const ModesOptions& opt) {
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_modes" : opt.out;
   core::check_results_target(out_dir, {opt.mesh.path});  // before the run: a refusal costs no time
   progress.stage("reading " + opt.mesh.path);
-  const fem::FrameModel model = opt.mesh.load();
+  const fem::FrameModel model = fem::with_frequency_step(opt.mesh.load());  // a multi-step deck: its *FREQUENCY step's supports
   const core::UnitSystem& u = model.units;
 
   fem::ModalOptions mo;
