@@ -627,14 +627,16 @@ TEST(InpReader, BoundaryForms) {
   using C = framedyn::fem::Constraint;
   std::vector<std::tuple<int, int, double>> got;
   for (const C& c : m.constraints) got.emplace_back(c.node, c.dof, c.value);
+  // One entry per DOF, in the order of first definition, with the last value
+  // (a DOF defined again takes the new value: node 3's rotation 4 and its
+  // prescribed 0.002 along 1 are fixed to 0 by the PINNED and ENCASTRE lines).
   const std::vector<std::tuple<int, int, double>> want = {
       {0, 1, 0.0},                                                            // 1, 2
       {1, 0, 0.0}, {1, 1, 0.0}, {1, 2, 0.0},                                  // 2, 1, 3
-      {2, 3, 0.01},                                                           // 3, 4, 4, 0.01
-      {2, 0, 0.002},                                                          // 3, 1, , 0.002
-      {0, 0, 0.0}, {0, 1, 0.0}, {0, 2, 0.0}, {2, 0, 0.0}, {2, 1, 0.0}, {2, 2, 0.0},  // PINNED
-      {0, 0, 0.0}, {0, 1, 0.0}, {0, 2, 0.0}, {0, 3, 0.0}, {0, 4, 0.0}, {0, 5, 0.0},  // ENCASTRE
-      {2, 0, 0.0}, {2, 1, 0.0}, {2, 2, 0.0}, {2, 3, 0.0}, {2, 4, 0.0}, {2, 5, 0.0},
+      {2, 3, 0.0},                                                            // 3, 4, 4, 0.01, then ENCASTRE
+      {2, 0, 0.0},                                                            // 3, 1, , 0.002, then PINNED
+      {0, 0, 0.0}, {0, 2, 0.0}, {2, 1, 0.0}, {2, 2, 0.0},                     // PINNED (new DOFs)
+      {0, 3, 0.0}, {0, 4, 0.0}, {0, 5, 0.0}, {2, 4, 0.0}, {2, 5, 0.0},        // ENCASTRE (new DOFs)
       {1, 5, 0.0}};
   EXPECT_EQ(got, want);
 }
@@ -951,8 +953,8 @@ std::vector<ErrorCase> error_cases() {
       {"UnknownKeywordInsideStep", kModel + "*STEP\n*TEMPERATURE\n1, 100.\n*END STEP\n", "*TEMPERATURE", "*TEMPERATURE", {"found *TEMPERATURE"}},
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
-      {"ParameterOnBoundary", kModel + "*BOUNDARY, OP=NEW\n1, ENCASTRE\n", "*BOUNDARY, OP=NEW", "*BOUNDARY", {"expected no parameters", "found parameter OP"}},
-      {"ParameterOnCload", kModel + "*CLOAD, OP=NEW\n3, 2, 1.0\n", "*CLOAD, OP=NEW", "*CLOAD", {"expected no parameters", "found parameter OP"}},
+      {"ParameterOnBoundary", kModel + "*BOUNDARY, AMPLITUDE=A\n1, ENCASTRE\n", "*BOUNDARY, AMPLITUDE=A", "*BOUNDARY", {"found parameter AMPLITUDE"}},
+      {"ParameterOnCload", kModel + "*CLOAD, AMPLITUDE=A\n3, 2, 1.0\n", "*CLOAD, AMPLITUDE=A", "*CLOAD", {"found parameter AMPLITUDE"}},
       {"ParameterOnDensity", kMesh + kSection + "*MATERIAL, NAME=STEEL\n*ELASTIC\n2e11, 0.3\n*DENSITY, TEMP=20\n7850\n", "*DENSITY, TEMP=20", "*DENSITY", {"found parameter TEMP"}},
       {"ParameterWithoutName", kUnits + "*NODE, =A\n1, 0, 0, 0\n", "*NODE, =A", "*NODE", {"expected a parameter NAME or NAME=VALUE", "found '=A'"}},
       {"ParameterTwice", kUnits + "*NODE, NSET=A, nset=B\n1, 0, 0, 0\n", "*NODE, NSET=A, nset=B", "*NODE", {"each parameter once", "parameter NSET twice"}},
