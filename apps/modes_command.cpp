@@ -39,7 +39,7 @@ int run_modes(const ModesOptions& opt) {
   core::check_results_target(out_dir, {opt.mesh.path});  // before the run: a refusal costs no time
   if (opt.figures) report::require_gnuplot();
   progress.stage("reading " + opt.mesh.path);
-  const fem::FrameModel model = opt.mesh.load();
+  const fem::FrameModel model = fem::with_frequency_step(opt.mesh.load());  // a multi-step deck: its *FREQUENCY step's supports
   const core::UnitSystem& u = model.units;
 
   fem::ModalOptions mo;

@@ -39,13 +39,24 @@ int run_static(const StaticOptions& opt) {
   progress.stage("reading " + opt.mesh.path);
   const fem::FrameModel model = opt.mesh.load();
   const core::UnitSystem& u = model.units;
-  if (model.loads.empty() && model.element_loads.empty())
-    throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis", "none");
+  // A deck with several static steps: one load case per step (docs/theory/fem.md section 18).
+  std::vector<fem::FrameModel> cases;
+  std::vector<int> step_numbers;
+  for (std::size_t i = 0; i < model.steps.size(); ++i)
+    if (model.steps[i].procedure == "STATIC") cases.push_back(fem::with_step(model, i)), step_numbers.push_back(model.steps[i].number);
+  const bool several = cases.size() > 1;
+  if (!several) cases = {model}, step_numbers = {0};
+  for (std::size_t c = 0; c < cases.size(); ++c)
+    if (cases[c].loads.empty() && cases[c].element_loads.empty())
+      throw core::InputError({opt.mesh.path, 0, "*CLOAD"},
+                             "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis" +
+                                 (several ? fmt::format(" in every static step") : std::string()),
+                             several ? fmt::format("none in step {}", step_numbers[c]) : std::string("none"));
   fem::StaticOptions so;
   so.inertia_relief = opt.inertia_relief;
-  fem::StaticResult r;
+  std::vector<fem::StaticResult> results;
   try {
-    r = fem::solve_static(model, progress.callback(), so);
+    results = fem::solve_static_cases(cases, progress.callback(), so);
   } catch (const fem::UnbalancedLoadError& e) {
     // Loads that do work on a rigid motion the supports leave free (docs/theory/fem.md, Eq. 19.1): the input's fault, named as such.
     throw core::InputError({opt.mesh.path, 0, model.loads.empty() ? "*DLOAD" : "*CLOAD"},
@@ -53,14 +64,19 @@ int run_static(const StaticOptions& opt) {
                            "--inertia-relief)",
                            e.what());
   }
-  if (opt.inertia_relief && r.free_rigid_motions == 0)
+  if (opt.inertia_relief && results.front().free_rigid_motions == 0)
     throw nothing_to_relieve(opt.mesh.path);
   progress.stage("recovering section forces");
-  const std::vector<fem::StationResult> stations = fem::recover_stations(model, r.displacement, opt.stations);
+  std::vector<std::vector<fem::StationResult>> stations;
+  for (std::size_t c = 0; c < cases.size(); ++c) stations.push_back(fem::recover_stations(cases[c], results[c].displacement, opt.stations));
 
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
-  report::write_static_results(model, r, stations, {opt.mesh.path, opt.stations}, folder);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    report::StaticRun run{opt.mesh.path, opt.stations};
+    if (several) run.file_suffix = fmt::format("_step{}", step_numbers[c]), run.step = step_numbers[c];
+    report::write_static_results(cases[c], results[c], stations[c], run, folder);
+  }
   folder.commit();
   progress.done();
   if (progress.quiet()) {  // -q: errors only, and the results folder on stdout
@@ -69,17 +85,24 @@ int run_static(const StaticOptions& opt) {
   }
 
   fmt::print("framedyn static: {} ({} nodes, {} beam elements, units {})\n", opt.mesh.path, model.nodes.size(), model.beams.size(), u.name());
-  const report::StaticPeaks p = report::static_peaks(model, r, stations);
   const std::string L = u.label(Quantity::length), F = u.label(Quantity::force), S = u.label(Quantity::stress);
-  fmt::print("max displacement {:.6g} {} at node {}\n", p.max_displacement, L, p.max_displacement_node);
-  fmt::print("peak fiber stress {:.6g} {} in element {}\n", p.peak_fiber_stress, S, p.peak_fiber_stress_element);
-  fmt::print("applied force sum ({:.6g}, {:.6g}, {:.6g}) {}; reactions ({:.6g}, {:.6g}, {:.6g}) {}\n", p.applied_force_sum.x(), p.applied_force_sum.y(),
-             p.applied_force_sum.z(), F, p.reaction_force_sum.x(), p.reaction_force_sum.y(), p.reaction_force_sum.z(), F);
-  if (r.free_rigid_motions > 0)
-    fmt::print("{} free rigid motion(s) ({}): {}\n", r.free_rigid_motions, r.free_motions,
-               r.inertia_relief ? "loads relieved by their inertia, elastic part shown"
-                                : "loads balanced on them; the displacement is defined up to that rigid motion");
-  fmt::print("results in {}/ (summary.json, displacements.csv, reactions.csv, section_forces.csv, static.vtu)\n", out_dir);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const fem::StaticResult& r = results[c];
+    if (several) fmt::print("step {}:\n", step_numbers[c]);
+    const report::StaticPeaks p = report::static_peaks(cases[c], r, stations[c]);
+    fmt::print("max displacement {:.6g} {} at node {}\n", p.max_displacement, L, p.max_displacement_node);
+    fmt::print("peak fiber stress {:.6g} {} in element {}\n", p.peak_fiber_stress, S, p.peak_fiber_stress_element);
+    fmt::print("applied force sum ({:.6g}, {:.6g}, {:.6g}) {}; reactions ({:.6g}, {:.6g}, {:.6g}) {}\n", p.applied_force_sum.x(), p.applied_force_sum.y(),
+               p.applied_force_sum.z(), F, p.reaction_force_sum.x(), p.reaction_force_sum.y(), p.reaction_force_sum.z(), F);
+    if (r.free_rigid_motions > 0)
+      fmt::print("{} free rigid motion(s) ({}): {}\n", r.free_rigid_motions, r.free_motions,
+                 r.inertia_relief ? "loads relieved by their inertia, elastic part shown"
+                                  : "loads balanced on them; the displacement is defined up to that rigid motion");
+  }
+  if (several)
+    fmt::print("results in {}/ (per step N: summary_stepN.json, displacements_stepN.csv, reactions_stepN.csv, section_forces_stepN.csv, static_stepN.vtu)\n", out_dir);
+  else
+    fmt::print("results in {}/ (summary.json, displacements.csv, reactions.csv, section_forces.csv, static.vtu)\n", out_dir);
   return 0;
 }
 

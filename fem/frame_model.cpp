@@ -55,4 +55,20 @@ std::string FrameModel::describe_dof(int global_dof) const {
   return fmt::format("node {} ({})", nodes[static_cast<std::size_t>(node)].id, dof_name(dof));
 }
 
+FrameModel with_step(const FrameModel& model, std::size_t step) {
+  FrameModel m = model;
+  const AnalysisStep& s = model.steps.at(step);
+  m.constraints = s.constraints;
+  m.loads = s.loads;
+  m.element_loads = s.element_loads;
+  if (s.requested_modes) m.requested_modes = s.requested_modes;
+  return m;
+}
+
+FrameModel with_frequency_step(const FrameModel& model) {
+  for (std::size_t i = 0; i < model.steps.size(); ++i)
+    if (model.steps[i].procedure == "FREQUENCY") return with_step(model, i);
+  return model;
+}
+
 }  // namespace framedyn::fem

@@ -133,6 +133,18 @@ struct DistributingCoupling {
 };
 inline constexpr int kMaxCouplingMounts = 8;
 
+// One analysis step of the input (*STEP ... *END STEP): its procedure and the
+// supports and loads in force during it, those of the steps before carried
+// over as CalculiX does (docs/theory/fem.md section 18).
+struct AnalysisStep {
+  int number = 0;                        // 1, 2, ... in the order of the input
+  std::string procedure;                 // "STATIC" (also a step that names none) or "FREQUENCY"
+  std::optional<int> requested_modes;    // *FREQUENCY's number of eigenvalues
+  std::vector<Constraint> constraints;
+  std::vector<NodalLoad> loads;
+  std::vector<ElementLoad> element_loads;
+};
+
 struct FrameModel {
   std::vector<Node> nodes;
   std::vector<BeamElement> beams;
@@ -148,6 +160,9 @@ struct FrameModel {
   std::map<std::string, std::vector<int>> element_sets;  // upper-case name -> element ids (beams and others)
   core::UnitSystem units = core::UnitSystem::si();       // the unit system the input was written in
   std::optional<int> requested_modes;                    // from a *FREQUENCY step, if any
+  // The input's steps, in order; empty for a deck without *STEP. The fields
+  // constraints, loads and element_loads above hold the first step's.
+  std::vector<AnalysisStep> steps;
 
   int dof_count() const { return kDofsPerNode * static_cast<int>(nodes.size()); }
   // Index of the node with mesh number `id`, or -1.
@@ -165,6 +180,13 @@ struct FrameModel {
   std::map<int, int> sparse_node_lookup_;
   std::unordered_map<int, int> beam_lookup_;
 };
+
+// A copy of `model` whose supports and loads are those of steps[step] (an
+// index into model.steps).
+FrameModel with_step(const FrameModel& model, std::size_t step);
+// The model as its first *FREQUENCY step has it (supports, loads, number of
+// modes), for `framedyn modes`; `model` itself when no step is a *FREQUENCY step.
+FrameModel with_frequency_step(const FrameModel& model);
 
 // Name of a DOF 0..5: "ux", "uy", "uz", "rx", "ry", "rz".
 const char* dof_name(int dof);

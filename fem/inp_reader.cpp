@@ -259,6 +259,10 @@ long parse_int(const std::string& field, const Location& where, const std::strin
 // The largest magnitude of an SI value or matrix entry the model may hold:
 // beyond it, assembly's sums of a few entries could overflow to inf.
 constexpr double kLargestSi = 1e300;
+// CalculiX: a positive OFFSET1 puts the axis on the negative 1-side of the
+// nodes (OFFSET1=0.5: the nodes on the section's positive face). Read from the
+// expanded C3D20R mesh ccx 2.20 writes for a RECT section with OFFSET1=0.5.
+constexpr double kOffsetSign = -1.0;
 
 template <class Matrix>
 bool within_range(const Matrix& m) {
@@ -322,6 +326,7 @@ struct RawSection {
   bool rayleigh = false;                       // RAYLEIGH: bending rotary inertia for B33
   std::optional<Eigen::Vector2d> shear_stiffness;  // *TRANSVERSE SHEAR STIFFNESS (K13 along 1, K23 along 2)
   InputLocation shear_where;
+  double offset1 = 0.0, offset2 = 0.0;         // OFFSET1, OFFSET2: the axis off the nodes, in section heights (Eq. 3.5)
 };
 
 struct RawMaterial {
@@ -330,17 +335,28 @@ struct RawMaterial {
   InputLocation where;
 };
 
+// `step`: 0 for model data (before the first *STEP), k inside the k-th step.
 struct RawBoundary {
   std::string target;
   int first_dof, last_dof;
   double value;
   InputLocation where;
+  int step = 0;
 };
 
 struct RawLoad {
   std::string target;
   int dof;
   double value;
+  InputLocation where;
+  int step = 0;
+};
+
+// One *STEP ... *END STEP (docs/theory/fem.md section 18).
+struct RawStep {
+  std::string procedure;            // STATIC, FREQUENCY; empty until the step names one
+  std::optional<int> modes;         // *FREQUENCY's number of eigenvalues
+  bool new_cloads = false, new_dloads = false;  // *CLOAD / *DLOAD with OP=NEW in this step
   InputLocation where;
 };
 
@@ -412,17 +428,19 @@ void refuse_nonlinear_step(const Keyword& k) {
                    it->second.empty() ? std::string("NLGEOM") : "NLGEOM=" + it->second);
 }
 
-// Beam offsets (CalculiX OFFSET1, OFFSET2: the axis moved off the section's
-// centre, in section widths) are not modelled: zero is accepted, anything else refused.
-void refuse_offsets(const Keyword& k) {
-  for (const char* name : {"OFFSET1", "OFFSET2"}) {
-    auto it = k.params.find(name);
-    if (it == k.params.end()) continue;
-    const double v = parse_double(it->second, k.where, name);
-    if (v != 0.0)
-      throw InputError(k.where, std::string(name) + "=0 (framedyn puts the beam axis at the section's centroid; move the nodes instead)",
-                       std::string(name) + "=" + it->second);
-  }
+// Beam offsets (CalculiX OFFSET1, OFFSET2): the beam's axis lies off its
+// nodes by that many section heights along the section's 1- and 2-directions
+// (docs/theory/fem.md, Eq. 3.5). framedyn reads them for the sections whose
+// heights CalculiX defines them by, RECT and BOX (a in 1, b in 2).
+double offset_parameter(const Keyword& k, const char* name, const std::string& shape) {
+  auto it = k.params.find(name);
+  if (it == k.params.end()) return 0.0;
+  const double v = parse_double(it->second, k.where, name);
+  if (!std::isfinite(v)) throw InputError(k.where, std::string("a finite ") + name, std::string(name) + "=" + it->second);
+  if (v != 0.0 && shape != "RECT" && shape != "BOX")
+    throw InputError(k.where, std::string(name) + " on a RECT or BOX section (offsets are in section heights, which framedyn takes from RECT and BOX only)",
+                     std::string(name) + "=" + it->second + " on SECTION=" + shape);
+  return v;
 }
 struct RawDistributedLoad {  // *DLOAD
   std::string target;        // element number or ELSET; empty: every element (GRAV only)
@@ -430,6 +448,7 @@ struct RawDistributedLoad {  // *DLOAD
   double magnitude = 0.0;    // force per length, or an acceleration for GRAV
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // GRAV, unit length
   InputLocation where;
+  int step = 0;              // as RawLoad::step
 };
 
 struct RawRelease {  // *RELEASE
@@ -464,6 +483,11 @@ class Parser {
   bool in_step_ = false;
   int steps_ = 0;
   InputLocation step_where_;
+  std::vector<RawStep> raw_steps_;
+  // The step a load or support belongs to (0: model data), after checking
+  // that it is not between two steps; whether OP=NEW was given.
+  int data_step(const Keyword& k);
+  bool replaces_earlier(const Keyword& k, bool allowed);
 
   void node(const Block& b);
   void element(const Block& b);
@@ -478,6 +502,7 @@ class Parser {
   void cload(const Block& b);
   void element_property(const Block& b);
   void step_keyword(const Block& b);
+  void set_procedure(const Keyword& k, const char* procedure);
   // Distributed loads, end releases, section extras (issue 13); see their definitions.
   std::vector<RawDistributedLoad> dloads_;
   std::vector<RawRelease> releases_;
@@ -487,7 +512,9 @@ class Parser {
   std::vector<int> element_targets(const std::string& target, const InputLocation& where) const;
   void apply_section_extras(FrameModel& model, const core::UnitSystem& units) const;
   void apply_releases(FrameModel& model) const;
-  void apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const;
+  void apply_distributed_loads(const FrameModel& model, const core::UnitSystem& units, const std::vector<RawDistributedLoad>& dloads,
+                               FrameModel& out) const;
+  void apply_offsets(FrameModel& model);
   void rigid_body(const Block& b);
   void mpc(const Block& b);
   void distributing_coupling(const Block& b);
@@ -647,15 +674,17 @@ bool rayleigh_parameter(const Keyword& k) {
 
 void Parser::beam_section(const Block& b) {
   check_params(b.keyword, {"ELSET", "MATERIAL", "SECTION", "OFFSET1", "OFFSET2", "RAYLEIGH"});
-  refuse_offsets(b.keyword);
   RawSection s;
   s.rayleigh = rayleigh_parameter(b.keyword);
   s.elset = upper(required_param(b.keyword, "ELSET"));
   s.material = upper(required_param(b.keyword, "MATERIAL"));
   s.shape = upper(required_param(b.keyword, "SECTION"));
+  if (s.shape == "RECTANGULAR") s.shape = "RECT";  // CalculiX reads the first four letters
+  s.offset1 = offset_parameter(b.keyword, "OFFSET1", s.shape);
+  s.offset2 = offset_parameter(b.keyword, "OFFSET2", s.shape);
   s.where = b.keyword.where;
-  std::size_t count = 0;
-  if (s.shape == "RECT") count = 2;
+  std::size_t count = 0, fewest = 0;
+  if (s.shape == "RECT") count = 2, fewest = 1;  // CalculiX: one thickness is a square
   else if (s.shape == "BOX") count = 6;
   else if (s.shape == "PIPE") count = 2;
   else if (s.shape == "CIRC") count = 1;
@@ -664,7 +693,11 @@ void Parser::beam_section(const Block& b) {
   else throw InputError(b.keyword.where, "SECTION=RECT, BOX, PIPE, CIRC, I or CHANNEL", "SECTION=" + s.shape);
   if (b.data.empty()) throw InputError(b.keyword.where, fmt::format("a data line with the {} dimensions of {}", count, s.shape), "none");
   if (b.data.size() > 2) throw InputError(at(b.data[2], b.keyword), "at most two data lines (dimensions, orientation)", "'" + b.data[2].text + "'");
-  s.dims = numbers(b.data[0], b.keyword, count, count, fmt::format("the {} dimensions of a {} section", count, s.shape));
+  if (fewest == 0) fewest = count;
+  s.dims = numbers(b.data[0], b.keyword, fewest, count,
+                   fewest == count ? fmt::format("the {} dimensions of a {} section", count, s.shape)
+                                   : fmt::format("the {} or {} dimensions of a {} section", fewest, count, s.shape));
+  if (s.dims.size() < count) s.dims.resize(count, s.dims[0]);
   for (std::size_t i = 0; i < s.dims.size(); ++i)
     if (!(s.dims[i] > 0.0) && !(s.shape == "I" && i == 0))  // I: the offset l is not used and may be 0
       throw InputError(at(b.data[0], b.keyword), "positive section dimensions", "'" + b.data[0].text + "'");
@@ -759,11 +792,36 @@ int dof_number(const std::string& s, const Location& where) {
   return static_cast<int>(d);
 }
 
+// Loads and supports before the first *STEP are model data (step 0) and hold
+// in every step; after it they belong to a step.
+int Parser::data_step(const Keyword& k) {
+  if (!in_step_ && steps_ > 0)
+    throw InputError(k.where, k.name + " inside a *STEP (after the first step, loads and supports belong to a step)", "it between two steps");
+  return in_step_ ? steps_ : 0;
+}
+
+// OP=MOD (the default) keeps what earlier steps defined; OP=NEW (loads only)
+// removes it first (docs/theory/fem.md section 18).
+bool Parser::replaces_earlier(const Keyword& k, bool allowed) {
+  auto it = k.params.find("OP");
+  if (it == k.params.end()) return false;
+  const std::string op = upper(it->second);
+  if (op == "MOD") return false;
+  if (op == "NEW" && allowed) return true;
+  if (op == "NEW")
+    throw InputError(k.where, "OP=MOD (framedyn keeps the supports of earlier steps; a step may add supports or change their values, not remove them)",
+                     "OP=" + it->second);
+  throw InputError(k.where, "OP=MOD or OP=NEW", "OP=" + it->second);
+}
+
 void Parser::boundary(const Block& b) {
-  check_params(b.keyword, {});
+  check_params(b.keyword, {"OP"});
+  const int step = data_step(b.keyword);
+  (void)replaces_earlier(b.keyword, false);
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     RawBoundary r;
+    r.step = step;
     r.where = at(l, b.keyword);
     if (f.size() < 2 || f.size() > 4) throw InputError(r.where, "node or set, first DOF[, last DOF[, value]]", "'" + l.text + "'");
     r.target = f[0];
@@ -786,10 +844,13 @@ void Parser::boundary(const Block& b) {
 }
 
 void Parser::cload(const Block& b) {
-  check_params(b.keyword, {});
+  check_params(b.keyword, {"OP"});
+  const int step = data_step(b.keyword);
+  if (replaces_earlier(b.keyword, true) && step > 0) raw_steps_.back().new_cloads = true;
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     RawLoad r;
+    r.step = step;
     r.where = at(l, b.keyword);
     if (f.size() != 3) throw InputError(r.where, "node or set, DOF, magnitude", "'" + l.text + "'");
     r.target = f[0];
@@ -980,15 +1041,25 @@ void Parser::build_rigid_links(FrameModel& model) const {
   }
 }
 
+// One procedure per step (CalculiX and Abaqus read one).
+void Parser::set_procedure(const Keyword& k, const char* procedure) {
+  RawStep& step = raw_steps_.back();
+  if (!step.procedure.empty())
+    throw InputError(k.where, "one procedure (*STATIC or *FREQUENCY) per *STEP", "*" + step.procedure + " and " + k.name + fmt::format(" in step {}", steps_));
+  step.procedure = procedure;
+}
+
 void Parser::step_keyword(const Block& b) {
   const std::string& k = b.keyword.name;
   if (k == "*STEP") {
     refuse_nonlinear_step(b.keyword);
     check_params(b.keyword, {"NAME", "PERTURBATION", "NLGEOM"});  // NLGEOM=NO only, see refuse_nonlinear_step
     if (in_step_) throw InputError(b.keyword.where, "*END STEP before the next *STEP", "*STEP");
-    if (++steps_ > 1) throw InputError(b.keyword.where, "one analysis step (framedyn reads a single step)", "a second *STEP");
+    ++steps_;
     in_step_ = true;
     step_where_ = b.keyword.where;
+    raw_steps_.push_back({});
+    raw_steps_.back().where = b.keyword.where;
   } else if (k == "*END STEP") {
     check_params(b.keyword, {});
     if (!in_step_) throw InputError(b.keyword.where, "a *STEP before *END STEP", "*END STEP");
@@ -996,15 +1067,18 @@ void Parser::step_keyword(const Block& b) {
   } else if (k == "*FREQUENCY") {
     check_params(b.keyword, {"SOLVER", "STORAGE"});
     if (!in_step_) throw InputError(b.keyword.where, "*FREQUENCY inside a *STEP", "it outside");
+    set_procedure(b.keyword, "FREQUENCY");
     if (!b.data.empty()) {
       const std::vector<std::string> f = split_fields(b.data[0].text);
       const long n = parse_int(f[0], at(b.data[0], b.keyword), "the number of eigenvalues");
       if (n < 1) throw InputError(at(b.data[0], b.keyword), "at least 1 eigenvalue", f[0]);
-      frequency_count_ = static_cast<int>(n);
+      raw_steps_.back().modes = static_cast<int>(n);
+      if (!frequency_count_) frequency_count_ = static_cast<int>(n);  // the first *FREQUENCY step's
     }
   } else if (k == "*STATIC") {
     check_params(b.keyword, {"SOLVER"});
     if (!in_step_) throw InputError(b.keyword.where, "*STATIC inside a *STEP", "it outside");
+    set_procedure(b.keyword, "STATIC");
   }
   // Output requests (*NODE PRINT, *EL PRINT, ...) are CalculiX's business: skipped.
 }
@@ -1017,11 +1091,14 @@ void Parser::step_keyword(const Block& b) {
 // *MASS of MASS elements), P1 and P2 (force per length along the section's
 // local 1 and 2 directions), PX, PY, PZ (force per length along global X, Y, Z).
 void Parser::dload(const Block& b) {
-  check_params(b.keyword, {});
+  check_params(b.keyword, {"OP"});
+  const int step = data_step(b.keyword);
+  if (replaces_earlier(b.keyword, true) && step > 0) raw_steps_.back().new_dloads = true;
   if (b.data.empty()) throw InputError(b.keyword.where, "data lines: element or ELSET, load type, magnitude", "none");
   for (const Line& l : b.data) {
     const std::vector<std::string> f = split_fields(l.text);
     RawDistributedLoad r;
+    r.step = step;
     r.where = at(l, b.keyword);
     if (f.size() < 2) throw InputError(r.where, "element or ELSET, load type, magnitude", "'" + l.text + "'");
     r.target = f[0];
@@ -1126,6 +1203,43 @@ void Parser::apply_section_extras(FrameModel& model, const core::UnitSystem& uni
   }
 }
 
+// Offsets (Eq. 3.5) as rigid eccentricities: each end of an offset element
+// gets a node of its own on the element's axis, x + e, tied rigidly to the
+// mesh node (a rigid link, section R), and the element is moved onto them.
+// The new nodes are numbered after the mesh's highest node number, in the
+// order of the elements; e is along the chord's local axes, the same at every
+// node of the element (a three-node element keeps its midside node's place
+// relative to its ends).
+void Parser::apply_offsets(FrameModel& model) {
+  int next_id = 0;
+  for (const Node& n : model.nodes) next_id = std::max(next_id, n.id);
+  bool added = false;
+  for (BeamElement& beam : model.beams) {
+    const RawSection& raw = sections_[static_cast<std::size_t>(beam.section)];
+    if (raw.offset1 == 0.0 && raw.offset2 == 0.0) continue;
+    const double l = model.units.to_si_factor(Quantity::length);
+    const Eigen::Matrix3d axes = beam_local_axes(model.nodes[static_cast<std::size_t>(beam.node_a)].position,
+                                                 model.nodes[static_cast<std::size_t>(beam.node_b)].position,
+                                                 model.sections[static_cast<std::size_t>(beam.section)].n1_direction);
+    const Eigen::Vector3d e = kOffsetSign * (raw.offset1 * raw.dims[0] * l * axes.row(1).transpose() + raw.offset2 * raw.dims[1] * l * axes.row(2).transpose());
+    for (int* end : {&beam.node_a, &beam.node_m, &beam.node_b}) {
+      if (*end < 0) continue;
+      const Node& mesh_node = model.nodes[static_cast<std::size_t>(*end)];
+      const int mesh_id = mesh_node.id;
+      const Eigen::Vector3d x = mesh_node.position + e;
+      model.nodes.push_back({++next_id, x});
+      *end = static_cast<int>(model.nodes.size()) - 1;
+      RawRigidLink link;
+      link.reference = std::to_string(mesh_id);
+      link.slaves = std::to_string(next_id);
+      link.where = raw.where;
+      rigid_links_.push_back(link);
+      added = true;
+    }
+  }
+  if (added) model.index();
+}
+
 void Parser::apply_releases(FrameModel& model) const {
   for (const RawRelease& r : releases_) {
     for (int id : element_targets(r.target, r.where)) {
@@ -1154,8 +1268,11 @@ void Parser::apply_releases(FrameModel& model) const {
   }
 }
 
-void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& units) const {
-  if (dloads_.empty()) return;
+// The loads of `dloads` on `model`'s elements, added to out.loads (GRAV on
+// MASS elements) and out.element_loads.
+void Parser::apply_distributed_loads(const FrameModel& model, const core::UnitSystem& units, const std::vector<RawDistributedLoad>& dloads,
+                                     FrameModel& out) const {
+  if (dloads.empty()) return;
   // The mass of each MASS element (several may share a node; model.point_masses merges them).
   std::unordered_map<int, double> element_mass;
   for (const RawElementProperty& p : properties_)
@@ -1163,7 +1280,7 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
       for (int id : model.element_sets.at(p.elset)) element_mass[id] = units.to_si(p.values[0], Quantity::mass);
   // Accelerations: length per second squared, and time is in seconds in every system.
   const double acceleration_factor = units.to_si_factor(Quantity::length);
-  for (const RawDistributedLoad& d : dloads_) {
+  for (const RawDistributedLoad& d : dloads) {
     std::vector<int> ids;
     if (d.target.empty()) {
       for (const RawElement& e : elements_) ids.push_back(e.id);
@@ -1182,7 +1299,7 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
           mass_found += mass_per_length;
           if (!(std::abs(mass_per_length * g) <= kLargestSi))
             throw InputError(d.where, "a weight per length of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N/m", id, mass_per_length * g));
-          if (mass_per_length > 0.0) model.element_loads.push_back({bi, mass_per_length * g * d.direction});
+          if (mass_per_length > 0.0) out.element_loads.push_back({bi, mass_per_length * g * d.direction});
         } else if (raw.type == "MASS") {
           const double m = element_mass.at(id);
           mass_found += m;
@@ -1190,7 +1307,7 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
             throw InputError(d.where, "a weight of magnitude at most 1e300 in SI units", fmt::format("element {}: {:g} N", id, m * g));
           const int node = model.node_index(raw.node_ids[0]);
           for (int k = 0; k < 3; ++k)
-            if (d.direction(k) != 0.0) model.loads.push_back({node, k, m * g * d.direction(k)});
+            if (d.direction(k) != 0.0) out.loads.push_back({node, k, m * g * d.direction(k)});
         }
         // ROTARYI and SPRING elements have no translational mass: no weight.
         continue;
@@ -1208,7 +1325,7 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
         if (!(std::abs(q) <= kLargestSi)) throw InputError(d.where, "a force per length of magnitude at most 1e300 in SI units", fmt::format("{:g}", d.magnitude));
         ElementLoad load{bi, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()};
         load.section_force_per_length(d.type == "P1" ? 0 : 1) = q;
-        model.element_loads.push_back(load);
+        out.element_loads.push_back(load);
         continue;
       } else {
         // The section's local axes as written (n1, n2 = t x n1), not the principal axes the element may use.
@@ -1218,7 +1335,7 @@ void Parser::apply_distributed_loads(FrameModel& model, const core::UnitSystem& 
         direction = axes.row(d.type == "P1" ? 1 : 2).transpose();
       }
       if (!(std::abs(q) <= kLargestSi)) throw InputError(d.where, "a force per length of magnitude at most 1e300 in SI units", fmt::format("{:g}", d.magnitude));
-      model.element_loads.push_back({bi, q * direction});
+      out.element_loads.push_back({bi, q * direction});
     }
     if (d.type == "GRAV" && !(mass_found > 0.0))
       throw InputError(d.where, "elements with mass for GRAV (beams whose material has a *DENSITY, or MASS elements)",
@@ -1488,22 +1605,80 @@ FrameModel Parser::build(const core::UnitSystem& units) {
 
   apply_section_extras(model, units);
   apply_releases(model);
-  apply_distributed_loads(model, units);
+  apply_offsets(model);
 
-  // Supports and loads.
+  // Supports and loads: the model data's, then what each step adds or
+  // replaces (docs/theory/fem.md section 18). Without *STEP the model data
+  // is all there is.
   auto targets = [&](const std::string& t, const InputLocation& where) {
     if (is_integer(t)) return std::vector<int>{node_of(static_cast<int>(parse_int(t, where, "node")), where)};
     auto it = model.node_sets.find(upper(t));
     if (it == model.node_sets.end()) throw InputError(where, "a node number or a defined *NSET", "'" + t + "'");
     return it->second;
   };
-  for (const RawBoundary& b : boundaries_)
-    for (int n : targets(b.target, b.where))
-      for (int d = b.first_dof; d <= b.last_dof; ++d)
-        model.constraints.push_back({n, d - 1, si(b.value, d <= 3 ? Quantity::length : Quantity::angle, b.where, "a prescribed displacement")});
-  for (const RawLoad& l : loads_)
-    for (int n : targets(l.target, l.where))
-      model.loads.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
+  std::vector<Constraint> constraints;
+  std::map<std::pair<int, int>, std::size_t> constraint_of;  // (node, dof) -> index into constraints
+  std::vector<NodalLoad> loads;
+  std::vector<RawDistributedLoad> dloads;
+  const int step_count = static_cast<int>(raw_steps_.size());
+  for (int step = 0; step <= step_count; ++step) {
+    // Supports: a DOF defined again takes the new value (OP=MOD).
+    for (const RawBoundary& b : boundaries_) {
+      if (b.step != step) continue;
+      for (int n : targets(b.target, b.where))
+        for (int d = b.first_dof; d <= b.last_dof; ++d) {
+          const double v = si(b.value, d <= 3 ? Quantity::length : Quantity::angle, b.where, "a prescribed displacement");
+          auto [it, fresh] = constraint_of.emplace(std::make_pair(n, d - 1), constraints.size());
+          if (fresh) constraints.push_back({n, d - 1, v});
+          else constraints[it->second].value = v;
+        }
+    }
+    // Nodal loads: OP=NEW drops the earlier ones; a node and DOF loaded in
+    // this step drops the earlier steps' loads there; lines of one step add up.
+    const bool new_cloads = step > 0 && raw_steps_[static_cast<std::size_t>(step - 1)].new_cloads;
+    const bool new_dloads = step > 0 && raw_steps_[static_cast<std::size_t>(step - 1)].new_dloads;
+    if (new_cloads) loads.clear();
+    std::vector<NodalLoad> added;
+    for (const RawLoad& l : loads_) {
+      if (l.step != step) continue;
+      for (int n : targets(l.target, l.where))
+        added.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
+    }
+    std::set<std::pair<int, int>> redefined;
+    for (const NodalLoad& a : added) redefined.insert({a.node, a.dof});
+    loads.erase(std::remove_if(loads.begin(), loads.end(), [&](const NodalLoad& x) { return redefined.count({x.node, x.dof}) > 0; }), loads.end());
+    loads.insert(loads.end(), added.begin(), added.end());
+    // Distributed loads: a line with the same element or ELSET and load type replaces the earlier steps' line.
+    if (new_dloads) dloads.clear();
+    std::vector<RawDistributedLoad> added_d;
+    for (const RawDistributedLoad& d : dloads_)
+      if (d.step == step) added_d.push_back(d);
+    dloads.erase(std::remove_if(dloads.begin(), dloads.end(),
+                                [&](const RawDistributedLoad& x) {
+                                  return std::any_of(added_d.begin(), added_d.end(),
+                                                     [&](const RawDistributedLoad& a) { return upper(a.target) == upper(x.target) && a.type == x.type; });
+                                }),
+                 dloads.end());
+    dloads.insert(dloads.end(), added_d.begin(), added_d.end());
+    if (step == 0 && step_count > 0) continue;  // model data alone is no step
+    FrameModel state;  // this step's loads: the nodal loads, GRAV on point masses and the beams' line loads
+    state.loads = loads;
+    apply_distributed_loads(model, units, dloads, state);
+    AnalysisStep a;
+    a.number = step;
+    const RawStep* raw = step > 0 ? &raw_steps_[static_cast<std::size_t>(step - 1)] : nullptr;
+    a.procedure = raw && !raw->procedure.empty() ? raw->procedure : "STATIC";
+    if (raw) a.requested_modes = raw->modes;
+    a.constraints = constraints;
+    a.loads = std::move(state.loads);
+    a.element_loads = std::move(state.element_loads);
+    if (step <= 1) {
+      model.constraints = a.constraints;
+      model.loads = a.loads;
+      model.element_loads = a.element_loads;
+    }
+    if (step > 0) model.steps.push_back(std::move(a));
+  }
   build_rigid_links(model);
   if (model.beams.empty() && model.nodes.empty())
     throw InputError({src_.name, 0, "*NODE"}, "a mesh with nodes and beam elements", "none");

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "core/error.h"
 #include "fem/assembly.h"
@@ -57,74 +58,91 @@ std::string describe_mechanism(const FrameModel& model, const DofMap& dofs, cons
 
 Eigen::VectorXd applied_loads(const FrameModel& model) { return applied_load_vector(model); }
 
-StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress, const StaticOptions& options) {
-  const DofMap dofs = make_dof_map(model);
+namespace {
+
+// K_ff factorised once for a model's supports and rigid links (section 19's
+// auxiliary supports included); each load case is then one solve.
+struct FactorisedStiffness {
+  DofMap dofs;
+  FreeSystem system;
+  FreeRigidMotions motions;
+  int p = 0;
+  bool inertia_relief = false;
+  Eigen::MatrixXd rigid, mass_rigid, rigid_gram;
+  std::vector<int> auxiliary;
+  SparseCholesky chol;
+};
+
+void factorise(const FrameModel& model, const std::function<void(const std::string&)>& progress, const StaticOptions& options,
+               FactorisedStiffness& f) {
+  f.dofs = make_dof_map(model);
+  if (progress) progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), f.dofs.free_count()));
+  f.system = assemble(model, f.dofs, {MassFormulation::consistent, Storage::lower});
+  const SparseMatrix& k = f.system.stiffness;
+  // Rigid motions the supports leave free (section 19): the loads must do no
+  // work on them (Eq. 19.1), or be relieved by their inertia (Eq. 19.5).
+  f.motions = free_rigid_motions(model);
+  f.p = static_cast<int>(f.motions.shapes.cols());
+  f.inertia_relief = options.inertia_relief && f.p > 0;
+  if (f.p > 0) {
+    f.rigid = rigid_motions_on_equations(f.dofs, f.motions.shapes);
+    if (f.inertia_relief) {
+      f.mass_rigid = f.system.mass.selfadjointView<Eigen::Lower>() * f.rigid;
+      f.rigid_gram = f.rigid.transpose() * f.mass_rigid;
+      if (Eigen::LLT<Eigen::MatrixXd>(f.rigid_gram).info() != Eigen::Success)
+        throw core::NumericalError("inertia relief needs the mass of the free rigid motions, and it is singular (no *DENSITY and no point mass "
+                                   "on a part that can move rigidly?)");
+    }
+    f.auxiliary = auxiliary_supports(f.rigid);
+  }
+  if (progress) progress(fmt::format("factorising K ({} equations)", f.dofs.free_count()));
+  const bool ok = f.dofs.free_count() > 0 && f.chol.factorize(f.p > 0 ? with_auxiliary_supports(k, f.auxiliary) : k);
+  const double rcond = ok ? f.chol.reciprocal_condition() : 0.0;
+  if (!ok || rcond < 1e-12) {
+    std::string where = describe_mechanism(model, f.dofs, k);
+    if (where.empty() && !ok && f.chol.failed_equation() >= 0)
+      where = "the factorisation stopped at " + model.describe_dof(f.dofs.free_dofs[static_cast<std::size_t>(f.chol.failed_equation())]);
+    throw core::NumericalError(fmt::format(
+        "the stiffness matrix is singular{}: the frame is a mechanism{}. {}\nAdd supports (*BOUNDARY) or springs, or connect the parts that are loose.",
+        ok ? fmt::format(" to working precision (rcond {:.2g})", rcond) : "",
+        f.p > 0 ? fmt::format(" beyond the {} rigid motion(s) its supports leave free ({})", f.p, f.motions.describe(model)) : "",
+        where.empty() ? std::string("") : where));
+  }
+}
+
+// The load case of `model` (its loads and prescribed values) on f, which was
+// factorised for a model with the same supports and links.
+StaticResult solve_case(const FrameModel& model, const FactorisedStiffness& f) {
+  const DofMap& dofs = f.dofs;
   const int ndof = model.dof_count();
   StaticResult r;
   r.applied = applied_loads(model);  // nodal loads and the consistent loads of *DLOAD
   Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(ndof);
   for (const Constraint& c : model.constraints) prescribed(kDofsPerNode * c.node + c.dof) = c.value;
   fill_slave_dofs(dofs.links, prescribed);  // slaves of a supported reference node move with it
-
-  if (progress) progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), dofs.free_count()));
-  const FreeSystem system = assemble(model, dofs, {MassFormulation::consistent, Storage::lower});
-  const SparseMatrix& k = system.stiffness;
-
   // T^T (f - K u_c) on the free DOFs, with K u_c computed element by element
   // (T: rigid links' slaves, Eq. R.2; the identity without links).
   Eigen::VectorXd rhs = restrict_load(dofs, r.applied - internal_force(model, prescribed));
-
-  // Rigid motions the supports leave free (section 19): the loads must do no
-  // work on them (Eq. 19.1), or be relieved by their inertia (Eq. 19.5).
-  const FreeRigidMotions motions = free_rigid_motions(model);
-  const int p = static_cast<int>(motions.shapes.cols());
-  r.free_rigid_motions = p;
-  r.free_motions = motions.describe(model);
-  r.inertia_relief = options.inertia_relief && p > 0;
-  Eigen::MatrixXd rigid, mass_rigid, rigid_gram;
-  if (p > 0) {
-    rigid = rigid_motions_on_equations(dofs, motions.shapes);
-    if (r.inertia_relief) {
-      mass_rigid = system.mass.selfadjointView<Eigen::Lower>() * rigid;
-      rigid_gram = rigid.transpose() * mass_rigid;
-      const Eigen::LLT<Eigen::MatrixXd> llt(rigid_gram);
-      if (llt.info() != Eigen::Success)
-        throw core::NumericalError("inertia relief needs the mass of the free rigid motions, and it is singular (no *DENSITY and no point mass "
-                                   "on a part that can move rigidly?)");
-      const Eigen::VectorXd a = llt.solve(rigid.transpose() * rhs);  // R^T M R a = R^T f
-      rhs -= mass_rigid * a;                                             // the d'Alembert forces balance the rest
-      r.rigid_acceleration = motions.shapes * a;
+  r.free_rigid_motions = f.p;
+  r.free_motions = f.motions.describe(model);
+  r.inertia_relief = f.inertia_relief;
+  if (f.p > 0) {
+    if (f.inertia_relief) {
+      const Eigen::VectorXd a = f.rigid_gram.llt().solve(f.rigid.transpose() * rhs);  // R^T M R a = R^T f
+      rhs -= f.mass_rigid * a;                                                         // the d'Alembert forces balance the rest
+      r.rigid_acceleration = f.motions.shapes * a;
     } else {
-      const std::vector<UnbalancedPart> unbalanced = unbalanced_loads(model, motions, r.applied);
-      if (!unbalanced.empty()) throw UnbalancedLoadError(describe(model, motions, unbalanced));
+      const std::vector<UnbalancedPart> unbalanced = unbalanced_loads(model, f.motions, r.applied);
+      if (!unbalanced.empty()) throw UnbalancedLoadError(describe(model, f.motions, unbalanced));
     }
-  }
-  std::vector<int> auxiliary;
-  if (p > 0) {
-    auxiliary = auxiliary_supports(rigid);
-    for (int e : auxiliary) r.auxiliary_dofs.push_back(dofs.free_dofs[static_cast<std::size_t>(e)]);
-  }
-
-  if (progress) progress(fmt::format("factorising K ({} equations)", dofs.free_count()));
-  SparseCholesky chol;
-  const bool ok = dofs.free_count() > 0 && chol.factorize(p > 0 ? with_auxiliary_supports(k, auxiliary) : k);
-  const double rcond = ok ? chol.reciprocal_condition() : 0.0;
-  if (!ok || rcond < 1e-12) {
-    std::string where = describe_mechanism(model, dofs, k);
-    if (where.empty() && !ok && chol.failed_equation() >= 0)
-      where = "the factorisation stopped at " + model.describe_dof(dofs.free_dofs[static_cast<std::size_t>(chol.failed_equation())]);
-    throw core::NumericalError(fmt::format(
-        "the stiffness matrix is singular{}: the frame is a mechanism{}. {}\nAdd supports (*BOUNDARY) or springs, or connect the parts that are loose.",
-        ok ? fmt::format(" to working precision (rcond {:.2g})", rcond) : "",
-        p > 0 ? fmt::format(" beyond the {} rigid motion(s) its supports leave free ({})", p, r.free_motions) : "",
-        where.empty() ? std::string("") : where));
+    for (int e : f.auxiliary) r.auxiliary_dofs.push_back(dofs.free_dofs[static_cast<std::size_t>(e)]);
   }
   Eigen::VectorXd rhs_held = rhs;
-  for (int e : auxiliary) rhs_held(e) = 0.0;  // a balanced load gives the auxiliary supports no reaction
-  Eigen::VectorXd uf = chol.solve(rhs_held);
+  for (int e : f.auxiliary) rhs_held(e) = 0.0;  // a balanced load gives the auxiliary supports no reaction
+  Eigen::VectorXd uf = f.chol.solve(rhs_held);
   // With inertia relief, the elastic part: no rigid motion in the mean, R^T M u = 0 (Eq. 19.6).
-  if (r.inertia_relief) uf -= rigid * rigid_gram.llt().solve(mass_rigid.transpose() * uf);
-  const Eigen::VectorXd residual = k.selfadjointView<Eigen::Lower>() * uf - rhs;
+  if (f.inertia_relief) uf -= f.rigid * f.rigid_gram.llt().solve(f.mass_rigid.transpose() * uf);
+  const Eigen::VectorXd residual = f.system.stiffness.selfadjointView<Eigen::Lower>() * uf - rhs;
   r.relative_residual = rhs.norm() > 0 ? residual.norm() / rhs.norm() : residual.norm();
 
   r.displacement = expand_free(dofs, uf, prescribed);
@@ -135,6 +153,41 @@ StaticResult solve_static(const FrameModel& model, const std::function<void(cons
   r.reaction = Eigen::VectorXd::Zero(ndof);
   for (int g : dofs.constrained_dofs) r.reaction(g) = residual_all(g);
   return r;
+}
+
+// The supported DOFs, whatever their values: load cases that share them share K_ff.
+std::set<std::pair<int, int>> supported_dofs(const FrameModel& model) {
+  std::set<std::pair<int, int>> out;
+  for (const Constraint& c : model.constraints) out.insert({c.node, c.dof});
+  return out;
+}
+
+}  // namespace
+
+StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress, const StaticOptions& options) {
+  FactorisedStiffness f;
+  factorise(model, progress, options, f);
+  return solve_case(model, f);
+}
+
+std::vector<StaticResult> solve_static_cases(const std::vector<FrameModel>& cases, const std::function<void(const std::string&)>& progress,
+                                             const StaticOptions& options, int* factorisations) {
+  std::vector<StaticResult> out;
+  FactorisedStiffness f;
+  std::set<std::pair<int, int>> factorised_for;
+  int count = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::set<std::pair<int, int>> supports = supported_dofs(cases[i]);
+    if (i == 0 || supports != factorised_for) {
+      factorise(cases[i], progress, options, f);
+      factorised_for = std::move(supports);
+      ++count;
+    }
+    if (progress) progress(fmt::format("solving load case {} of {}", i + 1, cases.size()));
+    out.push_back(solve_case(cases[i], f));
+  }
+  if (factorisations) *factorisations = count;
+  return out;
 }
 
 }  // namespace framedyn::fem

@@ -54,4 +54,12 @@ Eigen::VectorXd applied_loads(const FrameModel& model);
 StaticResult solve_static(const FrameModel& model, const std::function<void(const std::string&)>& progress = {},
                           const StaticOptions& options = {});
 
+// Several load cases of one frame (the static steps of a multi-step deck,
+// fem::with_step): the same nodes, elements and rigid links, each case with
+// its loads and prescribed values. Consecutive cases that support the same
+// DOFs share one factorisation of K_ff (docs/theory/fem.md section 18);
+// `factorisations`, if given, receives how many were made.
+std::vector<StaticResult> solve_static_cases(const std::vector<FrameModel>& cases, const std::function<void(const std::string&)>& progress = {},
+                                             const StaticOptions& options = {}, int* factorisations = nullptr);
+
 }  // namespace framedyn::fem

@@ -81,7 +81,7 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     disp.row().add(model.nodes[n].id);
     for (int k = 0; k < 6; ++k) disp.add(d(k) * (k < 3 ? lf : 1.0));
   }
-  folder.write_text("displacements.csv", disp.str());
+  folder.write_text("displacements" + run.file_suffix + ".csv", disp.str());
 
   CsvTable reac({"node", column("fx", F), column("fy", F), column("fz", F), column("mx", M), column("my", M), column("mz", M)});
   for (std::size_t n = 0; n < model.nodes.size(); ++n) {
@@ -90,7 +90,7 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     reac.row().add(model.nodes[n].id);
     for (int k = 0; k < 6; ++k) reac.add(rn(k) * (k < 3 ? ff : mf));
   }
-  folder.write_text("reactions.csv", reac.str());
+  folder.write_text("reactions" + run.file_suffix + ".csv", reac.str());
 
   CsvTable sec({"element", "station", column("x", L), column("X", L), column("Y", L), column("Z", L), column("N", F), column("Vy", F),
                 column("Vz", F), column("T", M), column("My", M), column("Mz", M), column("fiber_stress_max", S), column("fiber_stress_min", S),
@@ -117,7 +117,7 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     }
     sec.add(von_mises * sf).add(shear * sf);
   }
-  folder.write_text("section_forces.csv", sec.str());
+  folder.write_text("section_forces" + run.file_suffix + ".csv", sec.str());
 
   VtuField dfield{"displacement [" + L + "]", 3, {}}, rfield{"rotation [rad]", 3, {}};
   for (std::size_t n = 0; n < model.nodes.size(); ++n)
@@ -139,11 +139,12 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
       }
       cells.push_back(std::move(f));
     }
-  folder.write_text("static.vtu", vtu_document(model, lf, {dfield, rfield}, cells));
+  folder.write_text("static" + run.file_suffix + ".vtu", vtu_document(model, lf, {dfield, rfield}, cells));
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "static"}};
   j["input"] = {{"mesh", run.mesh_path}, {"units", u.name()}};
+  if (run.step > 0) j["input"]["step"] = run.step;
   const Eigen::Vector3d& applied = peaks.applied_force_sum;
   const Eigen::Vector3d& total = peaks.reaction_force_sum;
   j["frame"] = {
@@ -173,7 +174,7 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     }
   }
   j["frame"]["free_rigid_motions"] = rigid;
-  folder.write_text("summary.json", j.dump(2) + "\n");
+  folder.write_text("summary" + run.file_suffix + ".json", j.dump(2) + "\n");
 }
 
 }  // namespace framedyn::report

@@ -227,6 +227,30 @@ TEST(Cli, StaticCantileverTipDeflectionB33) {
   EXPECT_NEAR(cantilever_tip(dir / "res", "uz [m]"), wz, 1e-9 * wz);
 }
 
+// Two static steps (theory section 18): the second replaces the z load by
+// 300 N (OP=MOD on the same DOF) and keeps the y load; each step's files
+// carry its number, and each step's tip deflection is the B33 hand formula.
+TEST(Cli, StaticWritesEachStepOfAMultiStepDeck) {
+  TempDir dir;
+  dir.write("cantilever.inp", cantilever_deck("B33") + "*STEP\n*STATIC\n*CLOAD\n5, 3, 300.\n*END STEP\n");
+  const RunResult r = framedyn(dir, "static cantilever.inp --out res -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"summary_step1.json", "displacements_step2.csv", "reactions_step2.csv", "section_forces_step1.csv", "static_step2.vtu"})
+    EXPECT_TRUE(fs::is_regular_file(dir / "res" / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / "res" / "summary.json"));
+  const double i_z = kB * kA * kA * kA / 12, i_y = kA * kB * kB * kB / 12;
+  for (const auto& [step, pz] : std::vector<std::pair<int, double>>{{1, kPz}, {2, 300.0}}) {
+    double uz = 0.0, uy = 0.0;
+    for (const auto& row : read_csv(dir / "res" / ("displacements_step" + std::to_string(step) + ".csv")))
+      if (row.at("node") == "5") uz = std::stod(row.at("uz [m]")), uy = std::stod(row.at("uy [m]"));
+    const double wz = pz * kL * kL * kL / (3 * kE * i_z), wy = kPy * kL * kL * kL / (3 * kE * i_y);
+    EXPECT_NEAR(uz, wz, 1e-9 * wz) << "step " << step;
+    EXPECT_NEAR(uy, wy, 1e-9 * wy) << "step " << step;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / "res" / ("summary_step" + std::to_string(step) + ".json")));
+    EXPECT_EQ(j.at("input").at("step"), step);
+  }
+}
+
 TEST(Cli, StaticWithUnitsOption) {
   TempDir dir;
   std::string deck = cantilever_deck();

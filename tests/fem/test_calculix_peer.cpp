@@ -680,3 +680,49 @@ TEST_F(CalculixPeer, RefinedFrameWithoutPoissonCouplingAgreesWithinBeamTolerance
 }
 
 }  // namespace
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// 5. A deck of three static steps (docs/theory/fem.md section 18), the same
+//    file in both codes: step 1 loads the tip along n1, step 2 adds a load
+//    along n2 (step 1's carried over), step 3 replaces both by an axial load
+//    (OP=NEW). Tolerances as CantileverTipDeflectionsAgreeInBothPlanes: 0.5 %
+//    of the tip displacement for bending, which both steps' loads produce.
+TEST_F(CalculixPeer, ThreeStaticStepsCarryLoadsOverAsCalculixDoes) {
+  constexpr int n = 10, tip = n + 1;
+  const Eigen::Vector3d t = Eigen::Vector3d::UnitX(), n1 = Eigen::Vector3d::UnitY();
+  const std::string model = straight_beam_inp(t, 1.0, n, n1, "*BOUNDARY\n1, 1, 6\n");
+  const fs::path path = write("steps.inp", model);
+  const std::vector<std::string> steps = {fmt::format("*STATIC\n*CLOAD\n{}, 2, -100.\n", tip), fmt::format("*STATIC\n*CLOAD\n{}, 3, 100.\n", tip),
+                                          fmt::format("*STATIC\n*CLOAD, OP=NEW\n{}, 1, 1000.\n", tip)};
+  std::string deck = model;
+  for (const std::string& s : steps) deck += "*STEP\n" + s + "*END STEP\n";
+  const fem::FrameModel m = fem::read_inp_text(deck, "steps_deck.inp", dir_);
+  ASSERT_EQ(m.steps.size(), 3u);
+  std::vector<fem::FrameModel> cases;
+  for (std::size_t k = 0; k < 3; ++k) cases.push_back(fem::with_step(m, k));
+  int factorisations = 0;
+  const std::vector<fem::StaticResult> fd = fem::solve_static_cases(cases, {}, {}, &factorisations);
+  EXPECT_EQ(factorisations, 1);
+  const std::vector<int> nodes = {6, tip};
+  const auto ccx = peer::run_calculix_static_steps(path.string(), steps, nodes, (dir_ / "ccx_steps").string());
+  fmt::print("\nThree static steps, cantilever L = 1 m along x, 10 B31, RECT 0.02 x 0.04\n| step | component | framedyn (m) | CalculiX (m) |\n|---|---|---:|---:|\n");
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Eigen::Vector3d u_tip = fd[k].displacement.segment<3>(6 * m.node_index(tip));
+    const double scale = u_tip.norm();
+    ASSERT_GT(scale, 0.0);
+    const double tol = k == 2 ? 1e-4 : 0.005;  // axial: exact in both codes (printed to 6 digits)
+    for (int id : nodes)
+      for (int d = 0; d < 3; ++d) {
+        const double a = fd[k].displacement(6 * m.node_index(id) + d), b = ccx[k].at(id)[static_cast<std::size_t>(d)];
+        if (id == tip) fmt::print("| {} | u{} | {:.6e} | {:.6e} |\n", k + 1, d + 1, a, b);
+        EXPECT_NEAR(b, a, tol * scale) << "step " << k + 1 << ", node " << id << ", component " << d + 1;
+      }
+  }
+  // Step 2 carries step 1's load: its tip moves along n1 as in step 1, and along n2.
+  EXPECT_NEAR(fd[1].displacement(6 * m.node_index(tip) + 1), fd[0].displacement(6 * m.node_index(tip) + 1), 1e-12);
+  EXPECT_NEAR(fd[2].displacement(6 * m.node_index(tip) + 1), 0.0, 1e-15);
+}
+
+}  // namespace

@@ -627,14 +627,16 @@ TEST(InpReader, BoundaryForms) {
   using C = framedyn::fem::Constraint;
   std::vector<std::tuple<int, int, double>> got;
   for (const C& c : m.constraints) got.emplace_back(c.node, c.dof, c.value);
+  // One entry per DOF, in the order of first definition, with the last value
+  // (a DOF defined again takes the new value: node 3's rotation 4 and its
+  // prescribed 0.002 along 1 are fixed to 0 by the PINNED and ENCASTRE lines).
   const std::vector<std::tuple<int, int, double>> want = {
       {0, 1, 0.0},                                                            // 1, 2
       {1, 0, 0.0}, {1, 1, 0.0}, {1, 2, 0.0},                                  // 2, 1, 3
-      {2, 3, 0.01},                                                           // 3, 4, 4, 0.01
-      {2, 0, 0.002},                                                          // 3, 1, , 0.002
-      {0, 0, 0.0}, {0, 1, 0.0}, {0, 2, 0.0}, {2, 0, 0.0}, {2, 1, 0.0}, {2, 2, 0.0},  // PINNED
-      {0, 0, 0.0}, {0, 1, 0.0}, {0, 2, 0.0}, {0, 3, 0.0}, {0, 4, 0.0}, {0, 5, 0.0},  // ENCASTRE
-      {2, 0, 0.0}, {2, 1, 0.0}, {2, 2, 0.0}, {2, 3, 0.0}, {2, 4, 0.0}, {2, 5, 0.0},
+      {2, 3, 0.0},                                                            // 3, 4, 4, 0.01, then ENCASTRE
+      {2, 0, 0.0},                                                            // 3, 1, , 0.002, then PINNED
+      {0, 0, 0.0}, {0, 2, 0.0}, {2, 1, 0.0}, {2, 2, 0.0},                     // PINNED (new DOFs)
+      {0, 3, 0.0}, {0, 4, 0.0}, {0, 5, 0.0}, {2, 4, 0.0}, {2, 5, 0.0},        // ENCASTRE (new DOFs)
       {1, 5, 0.0}};
   EXPECT_EQ(got, want);
 }
@@ -960,8 +962,8 @@ std::vector<ErrorCase> error_cases() {
       {"UnknownKeywordInsideStep", kModel + "*STEP\n*TEMPERATURE\n1, 100.\n*END STEP\n", "*TEMPERATURE", "*TEMPERATURE", {"found *TEMPERATURE"}},
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
-      {"ParameterOnBoundary", kModel + "*BOUNDARY, OP=NEW\n1, ENCASTRE\n", "*BOUNDARY, OP=NEW", "*BOUNDARY", {"expected no parameters", "found parameter OP"}},
-      {"ParameterOnCload", kModel + "*CLOAD, OP=NEW\n3, 2, 1.0\n", "*CLOAD, OP=NEW", "*CLOAD", {"expected no parameters", "found parameter OP"}},
+      {"ParameterOnBoundary", kModel + "*BOUNDARY, AMPLITUDE=A\n1, ENCASTRE\n", "*BOUNDARY, AMPLITUDE=A", "*BOUNDARY", {"found parameter AMPLITUDE"}},
+      {"ParameterOnCload", kModel + "*CLOAD, AMPLITUDE=A\n3, 2, 1.0\n", "*CLOAD, AMPLITUDE=A", "*CLOAD", {"found parameter AMPLITUDE"}},
       {"ParameterOnDensity", kMesh + kSection + "*MATERIAL, NAME=STEEL\n*ELASTIC\n2e11, 0.3\n*DENSITY, TEMP=20\n7850\n", "*DENSITY, TEMP=20", "*DENSITY", {"found parameter TEMP"}},
       {"ParameterWithoutName", kUnits + "*NODE, =A\n1, 0, 0, 0\n", "*NODE, =A", "*NODE", {"expected a parameter NAME or NAME=VALUE", "found '=A'"}},
       {"ParameterTwice", kUnits + "*NODE, NSET=A, nset=B\n1, 0, 0, 0\n", "*NODE, NSET=A, nset=B", "*NODE", {"each parameter once", "parameter NSET twice"}},
@@ -1048,8 +1050,7 @@ std::vector<ErrorCase> error_cases() {
       {"UnknownSectionType", frame_with_section(kRectOnFrame + "HEX\n0.1\n"), "*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=HEX", "*BEAM SECTION", {"expected SECTION=RECT, BOX, PIPE, CIRC, I or CHANNEL", "found SECTION=HEX"}},
       {"ArbitrarySectionNotSupported", frame_with_section(kRectOnFrame + "ARBITRARY\n0.1\n"), "*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=ARBITRARY", "*BEAM SECTION", {"found SECTION=ARBITRARY"}},
       {"GeneralSectionOfWrongKind", kMesh + "*BEAM GENERAL SECTION, ELSET=FRAME, SECTION=RECT\n0.1, 0.2\n", "*BEAM GENERAL SECTION, ELSET=FRAME, SECTION=RECT", "*BEAM GENERAL SECTION", {"expected SECTION=GENERAL", "found SECTION=RECT"}},
-      {"RectWithThreeDimensions", frame_with_section(kRectOnFrame + "RECT\n0.1, 0.2, 0.3\n"), "0.1, 0.2, 0.3", "*BEAM SECTION", {"expected the 2 dimensions of a RECT section (2 values)", "found 3 values in '0.1, 0.2, 0.3'"}},
-      {"RectWithOneDimension", frame_with_section(kRectOnFrame + "RECT\n0.1\n"), "0.1", "*BEAM SECTION", {"the 2 dimensions of a RECT section", "found 1 values"}},
+      {"RectWithThreeDimensions", frame_with_section(kRectOnFrame + "RECT\n0.1, 0.2, 0.3\n"), "0.1, 0.2, 0.3", "*BEAM SECTION", {"expected the 1 or 2 dimensions of a RECT section (1 to 2 values)", "found 3 values in '0.1, 0.2, 0.3'"}},
       {"BoxWithFiveDimensions", frame_with_section(kRectOnFrame + "BOX\n0.1, 0.2, 0.01, 0.01, 0.01\n"), "0.1, 0.2, 0.01, 0.01, 0.01", "*BEAM SECTION", {"the 6 dimensions of a BOX section"}},
       {"PipeWithOneDimension", frame_with_section(kRectOnFrame + "PIPE\n0.1\n"), "0.1", "*BEAM SECTION", {"the 2 dimensions of a PIPE section"}},
       {"CircWithTwoDimensions", frame_with_section(kRectOnFrame + "CIRC\n0.1, 0.2\n"), "0.1, 0.2", "*BEAM SECTION", {"the 1 dimensions of a CIRC section"}},
@@ -1151,7 +1152,10 @@ std::vector<ErrorCase> error_cases() {
       {"SpringStiffnessZero", kModel + "*ELEMENT, TYPE=SPRING1, ELSET=S\n10, 3\n*SPRING, ELSET=S\n1\n0\n", "0", "*SPRING", {"expected a positive stiffness", "found 0"}},
       {"SpringStiffnessText", kModel + "*ELEMENT, TYPE=SPRING1, ELSET=S\n10, 3\n*SPRING, ELSET=S\n1\nstiff\n", "stiff", "*SPRING", {"the spring stiffness (a finite number)", "found 'stiff'"}},
       // ---- steps
-      {"SecondStep", kModel + "*STEP\n*STATIC\n*END STEP\n*STEP, NAME=TWO\n*FREQUENCY\n5\n*END STEP\n", "*STEP, NAME=TWO", "*STEP", {"expected one analysis step (framedyn reads a single step)", "found a second *STEP"}},
+      {"LoadBetweenSteps", kModel + "*STEP\n*STATIC\n*END STEP\n*CLOAD\n3, 2, 1\n*STEP\n*STATIC\n*END STEP\n", "*CLOAD", "*CLOAD", {"expected *CLOAD inside a *STEP", "found it between two steps"}},
+      {"BoundaryOpNew", kModel + "*STEP\n*STATIC\n*BOUNDARY, OP=NEW\n1, 1, 6\n*END STEP\n", "*BOUNDARY, OP=NEW", "*BOUNDARY", {"expected OP=MOD (framedyn keeps the supports of earlier steps", "found OP=NEW"}},
+      {"CloadOpUnknown", kModel + "*STEP\n*STATIC\n*CLOAD, OP=ADD\n3, 2, 1\n*END STEP\n", "*CLOAD, OP=ADD", "*CLOAD", {"expected OP=MOD or OP=NEW", "found OP=ADD"}},
+      {"TwoProceduresInOneStep", kModel + "*STEP\n*STATIC\n*FREQUENCY\n5\n*END STEP\n", "*FREQUENCY", "*FREQUENCY", {"expected one procedure (*STATIC or *FREQUENCY) per *STEP", "found *STATIC and *FREQUENCY in step 1"}},
       {"StepInsideStep", kModel + "*STEP\n*STEP, NAME=INNER\n*END STEP\n", "*STEP, NAME=INNER", "*STEP", {"expected *END STEP before the next *STEP"}},
       {"StepWithoutEndStep", kModel + "*STEP, NAME=ONLY\n*STATIC\n*CLOAD\n3, 2, 1\n", "*STEP, NAME=ONLY", "*STEP", {"expected *END STEP at the end of the step", "found end of file"}},
       {"EndStepWithoutStep", kModel + "*END STEP\n", "*END STEP", "*END STEP", {"expected a *STEP before *END STEP"}},

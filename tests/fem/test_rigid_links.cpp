@@ -21,6 +21,8 @@
 //   - the reader's refusals (ROT NODE, conflicts, chains, undefined nodes).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -523,6 +525,48 @@ TEST(RigidLinksReader, PinNsetTiesTranslationsOnly) {
   const int n = m.node_index(11);
   EXPECT_TRUE(dofs.links.is_slave(6 * n));
   EXPECT_FALSE(dofs.links.is_slave(6 * n + 3));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Beam offsets (CalculiX OFFSET1/OFFSET2, Eq. 3.5) are rigid eccentricities.
+namespace {
+
+// A cantilever along x whose axis lies e = OFFSET1 a below its nodes (n1 = y;
+// CalculiX: OFFSET1 = 0.5 puts the nodes on the section's +1 face, the axis at
+// y = -a/2). An axial tip force P at the node acts at e from the axis: the
+// member carries N = P and a constant moment M_z = -P e, so the axis bends by
+// -P e L^2 / (2 E I) at the tip and turns by -P e L / (E I); the node, e above
+// the axis, moves along x by P L / (E A) + P e^2 L / (E I). Exact for
+// any element (constant moment, no shear).
+TEST(BeamOffsets, AxialTipLoadOnAnOffsetAxisBendsByTheEccentricMoment) {
+  constexpr double kE = 2.1e11, kA1 = 0.1, kA2 = 0.05, kL = 1.0, kP = 1e4;
+  for (const char* type : {"B31", "B33", "B32"}) {
+    const bool quadratic = std::string(type) == "B32";
+    std::string s = "** units: m-N-s\n*NODE\n";
+    const int n = quadratic ? 9 : 5;
+    for (int i = 0; i < n; ++i) s += fmt::format("{}, {:.15g}, 0, 0\n", i + 1, kL * i / (n - 1));
+    s += fmt::format("*ELEMENT, TYPE={}, ELSET=FRAME\n", type);
+    if (quadratic)
+      for (int e = 0; e < 4; ++e) s += fmt::format("{}, {}, {}, {}\n", e + 1, 2 * e + 1, 2 * e + 2, 2 * e + 3);
+    else
+      for (int e = 0; e < 4; ++e) s += fmt::format("{}, {}, {}\n", e + 1, e + 1, e + 2);
+    s += "*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT, OFFSET1=0.5\n0.1, 0.05\n0, 1, 0\n"
+         "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*BOUNDARY\n1, 1, 6\n";
+    s += fmt::format("*STEP\n*STATIC\n*CLOAD\n{}, 1, {:.15g}\n*END STEP\n", n, kP);
+    const fem::FrameModel m = fem::read_inp_text(s, "deck.inp", ".");
+    EXPECT_EQ(m.nodes.size(), static_cast<std::size_t>(n + (quadratic ? 12 : 8))) << type;  // one axis node per element end
+    const fem::StaticResult r = fem::solve_static(m);
+    const double e = 0.5 * kA1, i = kA2 * kA1 * kA1 * kA1 / 12.0, area = kA1 * kA2;
+    const int tip = 6 * m.node_index(n);
+    const double ux = kP * kL / (kE * area) + kP * e * e * kL / (kE * i), uy = -kP * e * kL * kL / (2.0 * kE * i), rz = -kP * e * kL / (kE * i);
+    EXPECT_NEAR(r.displacement(tip + 0), ux, 1e-9 * ux) << type;
+    EXPECT_NEAR(r.displacement(tip + 1), uy, 1e-9 * std::abs(uy)) << type;
+    EXPECT_NEAR(r.displacement(tip + 5), rz, 1e-9 * std::abs(rz)) << type;
+    // The root's reactions balance P: no moment at the node from an eccentric axis the link holds.
+    EXPECT_NEAR(r.reaction(0), -kP, 1e-6 * kP) << type;
+  }
 }
 
 }  // namespace

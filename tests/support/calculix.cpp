@@ -320,6 +320,20 @@ std::map<int, std::array<double, 3>> parse_displacements(const std::string& dat,
   return u;
 }
 
+// Every "displacements (vx,vy,vz) for set <set>" block, in the order of the
+// file (one per increment; a linear static step has one).
+std::vector<std::map<int, std::array<double, 3>>> parse_displacement_blocks(const std::string& dat, const std::string& set) {
+  std::vector<std::map<int, std::array<double, 3>>> blocks;
+  const std::string title = "displacements (vx,vy,vz) for set " + set + " ";
+  std::size_t at = dat.find(title);
+  while (at != std::string::npos) {
+    const std::size_t next = dat.find(title, at + title.size());
+    blocks.push_back(parse_displacements(dat.substr(at, next == std::string::npos ? std::string::npos : next - at), set));
+    at = next;
+  }
+  return blocks;
+}
+
 }  // namespace
 
 bool calculix_available() { return !find_ccx().empty(); }
@@ -408,4 +422,34 @@ CalculixResult run_calculix_static(const std::string& model_inp_path,
   return result;
 }
 
+std::vector<std::map<int, std::array<double, 3>>> run_calculix_static_steps(const std::string& model_inp_path,
+                                                                            const std::vector<std::string>& step_bodies,
+                                                                            const std::vector<int>& node_ids,
+                                                                            const std::string& workdir) {
+  if (step_bodies.empty()) throw std::invalid_argument("CalculiX peer: no steps");
+  std::string set_text = std::string("*NSET, NSET=") + kOutputSet + "\n";
+  for (std::size_t i = 0; i < node_ids.size(); ++i) set_text += (i ? ", " : "") + std::to_string(node_ids[i]);
+  set_text += "\n";
+  const std::string output_text = std::string("*NODE PRINT, NSET=") + kOutputSet + "\nU\n";
+  // write_deck wraps the text in one *STEP ... *END STEP: the steps between are closed and opened here.
+  std::string steps;
+  for (std::size_t k = 0; k < step_bodies.size(); ++k) {
+    if (k > 0) steps += "*END STEP\n*STEP\n";
+    steps += step_bodies[k];
+    if (!steps.empty() && steps.back() != '\n') steps += '\n';
+    steps += output_text;
+  }
+  const fs::path dir = write_deck(model_inp_path, workdir, set_text, steps);
+  CalculixResult result;
+  run_ccx(dir, result);
+  auto blocks = parse_displacement_blocks(result.dat_text, kOutputSet);
+  if (blocks.size() != step_bodies.size())
+    fail("expected one displacement table per step (" + std::to_string(step_bodies.size()) + "), found " + std::to_string(blocks.size()), dir);
+  for (const auto& b : blocks)
+    for (int id : node_ids)
+      if (!b.count(id)) fail("node " + std::to_string(id) + " is missing from a step's displacement output", dir);
+  return blocks;
+}
+
 }  // namespace framedyn::testing
+

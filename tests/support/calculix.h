@@ -84,4 +84,13 @@ CalculixResult run_calculix_static(const std::string& model_inp_path,
                                    const std::vector<int>& node_ids,
                                    const std::string& workdir);
 
+// A deck of several static steps: `step_bodies[k]` is the text between the
+// k-th *STEP and *END STEP (*STATIC and its loads; CalculiX carries loads over
+// from step to step). Returns, per step, the displacements of node_ids, as
+// run_calculix_static does for one step.
+std::vector<std::map<int, std::array<double, 3>>> run_calculix_static_steps(const std::string& model_inp_path,
+                                                                            const std::vector<std::string>& step_bodies,
+                                                                            const std::vector<int>& node_ids,
+                                                                            const std::string& workdir);
+
 }  // namespace framedyn::testing
