@@ -361,7 +361,8 @@ const std::set<std::string> kDimensionlessKeys = {
     "mode", "dofs", "free_dofs", "nodes", "elements", "beam_elements", "output_times", "events", "steps", "count", "grid_points",
     "mode_count", "rigid_body_modes", "free_rigid_motions", "rigid_body_modes_expected", "parts", "eigenvalues_below", "lanczos_runs",
     "restarts", "operator_solves", "iterations", "relative_residual", "target_count", "independent_targets", "shape_components", "jobs", "node", "element",
-    "station", "frame_node", "fiber", "window_periods", "max_period_multiple", "period_multiple", "index",
+    "station", "frame_node", "fiber", "mount_nodes", "startup_times", "steady_times",
+    "stress_histories_in_memory_bytes", "samples", "cycles", "turning_points", "damage", "window_periods", "max_period_multiple", "period_multiple", "index",
     // ratios and fractions
     "damping_ratio", "tension_fraction", "lift_off_fraction", "bending_share", "ratio", "relative_error", "residual_max", "tolerance",
     "singular_values", "regularization_weight", "mac", "shape_weight", "load_factor_rms", "share",
@@ -392,6 +393,7 @@ TEST(OutputUnits, EveryDimensionalNumberOfEverySummaryIsAValueWithItsUnit) {
   mesh += "*BOUNDARY\nFEET, 1, 6\n*STEP\n*STATIC\n*CLOAD\n7, 1, 1000.\n*END STEP\n";
   dir.write("frame.inp", mesh);
   dir.write("psd.csv", "frequency [Hz],psd [1/Hz]\n1,1\n50,1\n");
+  dir.write("series.csv", "time [s],stress [MPa]\n0,0\n1,80\n2,-40\n3,120\n4,-60\n5,30\n6,0\n");
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"plow_2d", "run '" + (kExamples / "r100_plow_2d.yaml").string() + "' -q --out plow_2d"},
       {"pipeline", "run '" + (kExamples / "offset_plowing.yaml").string() + "' -q --out pipeline"},
@@ -401,7 +403,8 @@ TEST(OutputUnits, EveryDimensionalNumberOfEverySummaryIsAValueWithItsUnit) {
       {"modes", "modes frame.inp --modes 8 -q --out modes"},
       {"static", "static frame.inp -q --out static"},
       {"harmonic", "harmonic frame.inp -f 1:50:20 -z 0.02 --no-figures -q --out harmonic"},
-      {"random", "random frame.inp --psd psd.csv -z 0.02 --no-figures -q --out random"}};
+      {"random", "random frame.inp --psd psd.csv -z 0.02 --no-figures -q --out random"},
+      {"rainflow", "rainflow series.csv --sn FAT90 -q --out rainflow"}};
   for (const auto& [name, command] : runs) {
     const auto r = framedyn(dir, command);
     ASSERT_EQ(r.status, 0) << command << "\n" << r.err;
