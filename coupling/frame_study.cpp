@@ -137,7 +137,10 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     throw f.error("mesh", "an .inp mesh file (a path relative to the study file)",
                   quoted(r.mesh.string()) + (std::filesystem::exists(r.mesh, ec) ? ", not a file" : ", no such file"));
   if (f.has("loads")) r.loads = resolve(f.text("loads"));
-  const std::string supports = f.text_or("supports", pipeline ? "fixed_rear_end" : "mesh_boundary");
+  // An operating study holds the frame as the machine does: free, its loads balanced by its inertia (the
+  // vehicle model's frame acceleration; docs/user-guide.md, "Which support to believe"). The thesis's
+  // clamped rear end (fixed_rear_end) is kept for parity with its SAPIV runs.
+  const std::string supports = f.text_or("supports", pipeline ? "none" : "mesh_boundary");
   if (supports == "fixed_rear_end") r.supports = FrameSupports::fixed_rear_end;
   else if (supports == "clamped") r.supports = FrameSupports::clamped;
   else if (supports == "mesh_boundary") r.supports = FrameSupports::mesh_boundary;

@@ -95,27 +95,56 @@ TEST_F(OffsetPlowingPipeline, TheSummaryListsEveryAppliedLoadPointWithTheSwingPi
   EXPECT_TRUE(summary_["rigid"]["frame_loads"].contains("P19_PLOW_SWING_PIN"));
 }
 
-// The thesis's clamped rear end (the example's support, kept for parity):
-// the summary says so, and since the peak lies on the rail element at the
-// clamp (X = 80 in) it warns, in summary.json and on stderr.
-TEST_F(OffsetPlowingPipeline, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned) {
+// The example holds the frame as the machine does (free-free, relieved by its
+// inertia; the pipeline's default): the summary says so, no support is
+// artificial, and with the parts on their mounts no elastic mode of the frame
+// model lies within 10 % of the shaker (the first is 32.49 Hz): no frame warning.
+// The peak lies in the rear overhang, between the rear axle pivot (X = 72 in)
+// and the hitch (X = 80 in), where the plow's load is carried to the axle.
+TEST_F(OffsetPlowingPipeline, FreeFrameIsNamedAndWarnsNeitherAnArtificialSupportNorAFrameResonance) {
   ASSERT_EQ(status_, 0) << slurp(*dir_ / "run.log");
-  EXPECT_EQ(summary_["frame"]["support"]["kind"], "fixed_rear_end");
-  EXPECT_EQ(summary_["frame"]["support"]["artificial"], true);
-  EXPECT_EQ(summary_["frame"]["support"]["nodes"], nlohmann::json::array({22, 44, 51}));
-  EXPECT_EQ(summary_["frame"]["peak_normal_stress"]["x"]["value"], 80);
-  // After the vehicle's own warnings (steady_not_reached: docs/validation.md P1.4), the frame's.
-  ASSERT_FALSE(summary_["warnings"].empty());
+  EXPECT_EQ(summary_["frame"]["support"]["kind"], "free_free_inertia_relief");
+  EXPECT_EQ(summary_["frame"]["support"]["artificial"], false);
+  EXPECT_TRUE(summary_["frame"]["support"]["nodes"].empty());
+  EXPECT_GE(summary_["frame"]["peak_normal_stress"]["x"]["value"].get<double>(), 72.0);
+  // The vehicle's own warnings only (steady_not_reached: docs/validation.md P1.4).
+  for (const nlohmann::json& w : summary_["warnings"]) {
+    EXPECT_NE(w["code"], "peak_at_artificial_support") << w.dump();
+    EXPECT_NE(w["code"], "shaker_near_frame_mode") << w.dump();
+  }
+  EXPECT_EQ(slurp(*dir_ / "run.log").find("[peak_at_artificial_support]"), std::string::npos);
+}
+
+// The thesis's clamped rear end, kept for parity (supports: fixed_rear_end): the
+// summary says so; the peak lies on the rail element at the clamp (X = 80 in),
+// which it warns, in summary.json and on stderr; and the clamped frame model
+// has its mode 2 (18.43 Hz) 0.5 % from the shaker, which it warns too.
+TEST(OffsetPlowingPipelineClamped, ClampedRearEndIsNamedAndItsPeakAtTheClampIsWarned) {
+  framedyn::testing::TempDir dir("framedyn_test_pipeline");
+  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
+  const std::size_t at = text.find("  supports: none");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("  supports: none").size(), "  supports: fixed_rear_end");
+  // The study's mesh is relative to examples/: name it in full.
+  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
+  ASSERT_NE(text.find(mesh), std::string::npos);
+  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
+  const fs::path study = dir.write("clamped.yaml", text);
+  const int status = run("run " + study.string() + " -o " + (dir / "out").string(), dir / "run.log");
+  ASSERT_EQ(status, 0) << slurp(dir / "run.log");
+  const nlohmann::json summary = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+  EXPECT_EQ(summary["frame"]["support"]["kind"], "fixed_rear_end");
+  EXPECT_EQ(summary["frame"]["support"]["artificial"], true);
+  EXPECT_EQ(summary["frame"]["support"]["nodes"], nlohmann::json::array({22, 44, 51}));
+  EXPECT_EQ(summary["frame"]["peak_normal_stress"]["x"]["value"], 80);
   bool at_support = false;
-  for (const nlohmann::json& w : summary_["warnings"]) at_support = at_support || w["code"] == "peak_at_artificial_support";
-  EXPECT_TRUE(at_support) << summary_["warnings"].dump();
-  EXPECT_NE(slurp(*dir_ / "run.log").find("framedyn: warning [peak_at_artificial_support]: left_rail: the peak normal stress"), std::string::npos);
-  // The shaker, 18.33 Hz, lies within 10 % of the clamped frame model's elastic mode 2 (18.43 Hz, -0.5 %; with the
-  // parts on their mounts): the run says that its stresses are set by the modal damping there.
+  for (const nlohmann::json& w : summary["warnings"]) at_support = at_support || w["code"] == "peak_at_artificial_support";
+  EXPECT_TRUE(at_support) << summary["warnings"].dump();
+  EXPECT_NE(slurp(dir / "run.log").find("framedyn: warning [peak_at_artificial_support]: left_rail: the peak normal stress"), std::string::npos);
   std::vector<double> near;
-  for (const nlohmann::json& w : summary_["warnings"])
+  for (const nlohmann::json& w : summary["warnings"])
     if (w["code"] == "shaker_near_frame_mode") near.push_back(w["figures"]["mode"]["value"].get<double>());
-  EXPECT_EQ(near, (std::vector<double>{2})) << summary_["warnings"].dump();
+  EXPECT_EQ(near, (std::vector<double>{2})) << summary["warnings"].dump();
 }
 
 // Static plus dynamic (the dead load, on by default; theory/coupling.md section 11): the
@@ -151,7 +180,7 @@ TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) 
                                                                 "\n*INCLUDE, INPUT=" + (*dir_ / "out" / "frame_parts.inp").string() + "\n");
   const fs::path study = dir_->write("frame.yaml", "framedyn_study: 1\nname: read back\nunits: in-lbf-s\nmodel: frame_transient\nframe:\n"
                                                    "  mesh: " + mesh.string() +
-                                                   "\n  loads: out/frame_loads.csv\n  supports: fixed_rear_end\n  modes: all\n"
+                                                   "\n  loads: out/frame_loads.csv\n  supports: none\n  modes: all\n"
                                                    "  method: mode_acceleration\n  damping: {modal_ratio: 0.02}\n  output_interval: 0.001\n"
                                                    "  stations: 5\n  outputs:\n    left_rail: {element_set: LEFT_RAIL}\n"
                                                    "    right_rail: {element_set: RIGHT_RAIL}\n");
@@ -167,7 +196,9 @@ TEST_F(OffsetPlowingPipeline, LoadsReadBackFromItsFileGiveTheSameFrameResponse) 
   for (const char* rail : {"left_rail", "right_rail"}) {
     const double in_memory = frame["peak_bending_moment"][rail]["value"], from_file = again["peak_bending_moment"][rail]["value"];
     EXPECT_NEAR(from_file / in_memory, 1.0, 1e-8) << rail;
-    EXPECT_EQ(again["peak_bending_moment"][rail]["time"], frame["peak_bending_moment"][rail]["time"]) << rail;
+    // The same output sample (the file's times are text: 0.478 against 0.47800000000000004 summed in memory).
+    EXPECT_NEAR(again["peak_bending_moment"][rail]["time"]["value"].get<double>(), frame["peak_bending_moment"][rail]["time"]["value"].get<double>(), 1e-12)
+        << rail;
   }
   EXPECT_NEAR(again["peak_normal_stress"]["value"].get<double>() / frame["peak_normal_stress"]["value"].get<double>(), 1.0, 1e-8);
 }
@@ -190,7 +221,7 @@ TEST_F(OffsetPlowingPipeline, SameStudyTwiceGivesByteIdenticalFiles) {
 TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
   framedyn::testing::TempDir dir;
   std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
-  text.replace(text.find("  supports: fixed_rear_end"), 0, "  loads: other.csv\n");
+  text.replace(text.find("  supports: none"), 0, "  loads: other.csv\n");
   const fs::path study = dir.write("examples/bad.yaml", text);
   EXPECT_EQ(run("run " + study.string() + " -o " + (dir / "out").string(), dir / "log"), 1);
   const std::string log = slurp(dir / "log");

@@ -283,14 +283,15 @@ TEST_F(CantileverStudy, MissingOutputAndSupportSetsNameTheStudyLineAndTheMesh) {
   EXPECT_NE(e.find("frame.outputs.tip top: expected an output name of letters, digits"), std::string::npos) << e;
 }
 
-TEST(FrameStudyDefaults, PipelineKeepsTheTrencherRailsAndRearEndWhileAStudyNamesItsOwn) {
+// An operating study (the pipeline) holds the frame free, relieved by its inertia, as the machine does.
+TEST(FrameStudyDefaults, PipelineIsFreeWithInertiaReliefAndKeepsTheTrencherRailsWhileAStudyNamesItsOwn) {
   framedyn::testing::TempDir dir;
   dir.write("frame.inp", cantilever_inp());
   const YAML::Node doc = YAML::Load("mesh: frame.inp\n");
   const core::UnitSystem si = core::UnitSystem::si();
   const coupling::YamlMap block(doc, "frame_response", (dir / "s.yaml").string(), &si);
   const auto pipeline = coupling::read_frame_block(block, dir.path(), coupling::FrameDefaults::pipeline);
-  EXPECT_EQ(pipeline.supports, coupling::FrameSupports::fixed_rear_end);
+  EXPECT_EQ(pipeline.supports, coupling::FrameSupports::free_free_inertia_relief);
   ASSERT_EQ(pipeline.support_sets, std::vector<std::string>{"REAR_END"});
   ASSERT_EQ(pipeline.rails.size(), 2u);
   EXPECT_EQ(pipeline.rails[0].element_set, "LEFT_RAIL");
