@@ -223,6 +223,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");
+      if (!frame->hot_spots.by_von_mises.empty()) {
+        report::write_png(report::hot_spot_stress_figure(*frame, u), folder.path_of("frame_hot_spots.png"));
+        figure_files.push_back("frame_hot_spots.png");
+      }
       if (frame->mode_shapes.cols() > 0) {
         const std::vector<double> hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + std::min<Eigen::Index>(frame->frequencies_hz.size(), frame->mode_shapes.cols()));
         report::write_png(report::mode_shape_figure(frame->model, frame->mode_shapes, hz,

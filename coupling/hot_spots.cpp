@@ -92,6 +92,17 @@ SteadyWindow steady_window(std::optional<double> rigid_reached_at, std::optional
   return {0.5 * (t0 + t1), "last half of the record"};
 }
 
+std::vector<fem::PointStress> point_stress_history(const StressHistories& h, std::size_t station, int point,
+                                                   const std::vector<fem::SectionForces>* static_forces) {
+  const std::size_t sec = static_cast<std::size_t>(h.stations.at(station).section);
+  const fem::SectionPoint& at = h.points.at(sec).at(static_cast<std::size_t>(point));
+  const fem::SectionForces fs = static_forces && !static_forces->empty() ? static_forces->at(station) : fem::SectionForces{};
+  std::vector<fem::PointStress> out;
+  out.reserve(static_cast<std::size_t>(h.times.size()));
+  for (Eigen::Index j = 0; j < h.times.size(); ++j) out.push_back(fem::point_stress(h.sections[sec], at, sum(fs, h.forces_at(station, j))));
+  return out;
+}
+
 HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& window, int count, const std::vector<fem::SectionForces>* static_forces) {
   if (static_forces && !static_forces->empty() && static_forces->size() != h.stations.size())
     throw std::invalid_argument("the static section forces do not match the stress histories' stations");

@@ -98,6 +98,12 @@ struct HotSpotReport {
 HotSpotReport find_hot_spots(const StressHistories& histories, const SteadyWindow& window, int count = 10,
                              const std::vector<fem::SectionForces>* static_forces = nullptr);
 
+// The total (static + dynamic) stress at one station's section point at every
+// output time: what frame_stress_histories.csv writes and the hot-spot figure draws.
+// `static_forces`: as for find_hot_spots.
+std::vector<fem::PointStress> point_stress_history(const StressHistories& histories, std::size_t station, int point,
+                                                   const std::vector<fem::SectionForces>* static_forces = nullptr);
+
 // The index of the largest of `values` (lowest index among those within 1e-6 relative of it); -1 if empty.
 Eigen::Index stable_argmax(const std::vector<double>& values);
 

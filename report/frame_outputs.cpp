@@ -60,12 +60,9 @@ void write_stress_histories(const FrameStudyResults& r, const FrameStudyRequest&
     const coupling::StressStation& st = h.stations[s];
     const std::size_t sec = static_cast<std::size_t>(st.section);
     const fem::SectionPoint& point = h.points[sec][static_cast<std::size_t>(p)];
-    const fem::SectionForces fs = r.static_forces.empty() ? fem::SectionForces{} : r.static_forces[s];
+    const std::vector<fem::PointStress> history = coupling::point_stress_history(h, s, p, &r.static_forces);
     for (Eigen::Index j = 0; j < h.times.size(); ++j) {
-      const fem::SectionForces d = h.forces_at(s, j);
-      fem::SectionForces f = fs;
-      f.n += d.n, f.vy += d.vy, f.vz += d.vz, f.t += d.t, f.my += d.my, f.mz += d.mz;
-      const fem::PointStress ps = fem::point_stress(h.sections[sec], point, f);
+      const fem::PointStress& ps = history[static_cast<std::size_t>(j)];
       t.row().add(h.times(j)).add(st.set).add(st.element_id).add(st.station).add(st.point.x() * lf).add(st.point.y() * lf).add(st.point.z() * lf)
           .add(point.name).add(ps.normal * sf).add(ps.shear * sf).add(ps.von_mises * sf);
     }
@@ -315,6 +312,30 @@ void add_hot_spots(nlohmann::ordered_json& j, const FrameStudyResults& r, const 
 }
 
 }  // namespace
+
+LinePlot hot_spot_stress_figure(const FrameStudyResults& r, const core::UnitSystem& u, int count) {
+  using core::Quantity;
+  const coupling::HotSpotReport& h = r.hot_spots;
+  LinePlot plot;
+  plot.title = fmt::format("von Mises stress (static + dynamic) at the top hot spots; steady from t = {:.3g} s", h.window.from);
+  plot.x_label = "time";
+  plot.x_unit = u.label(Quantity::time);
+  plot.y_label = "von Mises stress";
+  plot.y_unit = u.label(Quantity::stress);
+  const std::vector<double> times(r.stress.times.data(), r.stress.times.data() + r.stress.times.size());
+  for (std::size_t k = 0; k < h.by_von_mises.size() && static_cast<int>(k) < count; ++k) {
+    const coupling::HotSpot& x = h.by_von_mises[k];
+    const coupling::StressStation& st = r.stress.stations[x.station];
+    PlotSeries series;
+    series.name = fmt::format("{}: {} X = {:.4g} {}, {}", k + 1, st.set, u.from_si(st.point.x(), Quantity::length), u.label(Quantity::length),
+                              x.point_name);
+    series.x = times;
+    for (const fem::PointStress& ps : coupling::point_stress_history(r.stress, x.station, x.point, &r.static_forces))
+      series.y.push_back(u.from_si(ps.von_mises, Quantity::stress));
+    plot.series.push_back(series);
+  }
+  return plot;
+}
 
 nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStudyRequest& q) {
   using nlohmann::ordered_json;

@@ -10,6 +10,7 @@
 
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
+#include "report/plot.h"
 
 namespace framedyn::report {
 
@@ -24,6 +25,12 @@ void write_frame_outputs(const coupling::FrameStudyResults& results, const coupl
 // pipeline), peak_normal_stress (value + unit, where and when),
 // bending_share, outputs.<name> (every output set's peaks).
 nlohmann::ordered_json frame_summary(const coupling::FrameStudyResults& results, const coupling::FrameStudyRequest& request);
+
+// The total (static + dynamic) von Mises stress over time at the top `count`
+// hot spots by steady peak von Mises (docs/theory/coupling.md section 10), one
+// series each, named by output, X and section point; the title says where
+// steady operation starts. No series when there are no hot spots.
+LinePlot hot_spot_stress_figure(const coupling::FrameStudyResults& results, const core::UnitSystem& units, int count = 3);
 std::string frame_summary_json(const coupling::FrameStudyResults& results, const coupling::FrameStudyRequest& request);  // frame_summary(...).dump(2)
 
 }  // namespace framedyn::report

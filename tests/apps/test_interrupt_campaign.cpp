@@ -182,6 +182,7 @@ TEST_F(InterruptCampaign, ThirtyTwoInterruptsLeaveEarlierResultsOrCompleteNewOne
   ASSERT_TRUE(all_names.count("frame_response_00200.vtu"));
   ASSERT_TRUE(all_names.count("fig25_rail_bending_moment.png"));
   ASSERT_TRUE(all_names.count("frame_mode_shapes.png"));
+  ASSERT_TRUE(all_names.count("frame_hot_spots.png"));
   const std::size_t total_files = all_names.size();
 
   std::vector<Trigger> triggers;

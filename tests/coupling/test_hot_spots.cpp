@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -17,11 +18,13 @@
 #include "coupling/hot_spots.h"
 #include "fem/beam_section.h"
 #include "fem/section_stress.h"
+#include "report/frame_outputs.h"
 
 namespace {
 
 namespace coupling = framedyn::coupling;
 namespace fem = framedyn::fem;
+namespace report = framedyn::report;
 
 constexpr double kA = 0.05, kB = 0.1;          // RECT, m
 const double kI11 = kA * kB * kB * kB / 12;   // bending about 1 by My: sigma = My x2 / I11
@@ -122,6 +125,39 @@ TEST(HotSpots, ZeroStaticStateGivesTotalEqualToDynamicAndAStaticForceAdds) {
   EXPECT_NEAR(top.von_mises_dynamic, peak_moment * c / kI11, 1e-6 * top.von_mises_total);
   // The range is the dynamic one: the static part cancels.
   EXPECT_NEAR(with.by_normal_range[0].normal_stress_range, none.by_normal_range[0].normal_stress_range, 1e-6 * top.von_mises_total);
+}
+
+// The stress history at a hot spot's point (what frame_stress_histories.csv
+// writes and the hot-spot figure draws) peaks over steady operation at the
+// hot spot's total von Mises stress, at its time; its static part is N / A.
+TEST(HotSpots, PointStressHistoryPeaksAtTheHotSpotsTotalAndTime) {
+  const double m = 800.0, n = 2.0e5;
+  const coupling::StressHistories h = histories(2, 51, [&](int s, double t) { return (s + 1) * m * std::cos(7 * t); });
+  std::vector<fem::SectionForces> axial(2);
+  for (fem::SectionForces& f : axial) f.n = n;
+  const coupling::HotSpotReport r = coupling::find_hot_spots(h, {0.2, "test"}, 10, &axial);
+  const coupling::HotSpot& top = r.by_von_mises[0];
+  const std::vector<fem::PointStress> history = coupling::point_stress_history(h, top.station, top.point, &axial);
+  ASSERT_EQ(history.size(), static_cast<std::size_t>(h.times.size()));
+  double peak = 0.0, when = -1.0;
+  for (Eigen::Index j = 0; j < h.times.size(); ++j)
+    if (h.times(j) >= 0.2 && history[static_cast<std::size_t>(j)].von_mises > peak) peak = history[static_cast<std::size_t>(j)].von_mises, when = h.times(j);
+  EXPECT_NEAR(peak, top.von_mises_total, 1e-9 * peak);
+  EXPECT_EQ(when, top.time);
+  // Without the static forces the history is the dynamic part: N / A less in tension.
+  const std::vector<fem::PointStress> dynamic = coupling::point_stress_history(h, top.station, top.point);
+  const Eigen::Index j = static_cast<Eigen::Index>(std::lround(top.time / 0.01));
+  EXPECT_NEAR(history[static_cast<std::size_t>(j)].normal - dynamic[static_cast<std::size_t>(j)].normal, n / (kA * kB), 1e-6 * n / (kA * kB));
+  // The pipeline's figure draws these histories, one series per hot spot, in the study's units.
+  coupling::FrameStudyResults results;
+  results.stress = h;
+  results.hot_spots = r;
+  results.static_forces = axial;
+  const report::LinePlot figure = report::hot_spot_stress_figure(results, framedyn::core::UnitSystem::si());
+  ASSERT_EQ(figure.series.size(), 2u);  // two stations, both hot spots (at most three drawn)
+  EXPECT_NO_THROW(report::check_plot(figure));
+  EXPECT_NEAR(*std::max_element(figure.series[0].y.begin() + 20, figure.series[0].y.end()), top.von_mises_total, 1e-9 * top.von_mises_total);
+  EXPECT_EQ(figure.y_unit, "Pa");
 }
 
 // The yield warning: only with frame.yield_strength, only when the peak total von Mises exceeds it.
