@@ -280,6 +280,9 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
     if (sp.has_values) {
       a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from", "mounts"});
       sp.part = part(a, a.text("name"));
+      // The part the mesh models is the mesh's own tubes: it has no mounts to join.
+      if (sp.from_mesh && a.has("mounts"))
+        throw a.error("mounts", "no mounts on the part the frame mesh models (from: frame_mesh: it is the mesh's own tubes)", "mounts");
       if (a.has("mounts")) read_part_mounts(a, sp);
     } else {
       a.allow_only({"name", "from"});

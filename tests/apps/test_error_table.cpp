@@ -507,6 +507,14 @@ std::vector<Row> rows() {
       mounts_row("STUDY-111", "[12, 34, 14, 99]", "frame.parts[1].mounts[3]"),
       mounts_row("STUDY-112", "[12, 13, 14]", "frame.parts[1].mounts"),
       mounts_row("STUDY-113", "[12, 34, [31, -15, 0]]", "frame.parts[1].mounts[2]"),
+      [] {  // mounts on the part the mesh models (its own tubes)
+        const std::string text = edit(edit(kStudy3D, kStructurePart,
+                                           "{name: frame_structure, from: frame_mesh, weight: 565.6, position: [30.7, 0, 0], "
+                                           "radii_of_gyration: [12, 34, 36], mounts: [12, 34]}"),
+                                      "analysis:\n", "frame_response: {mesh: frame.inp, supports: none}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-107", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "name: frame_structure", "frame.parts[0].mounts")};
+      }(),
   };
   for (Row row : studies) {
     // A value in a flow map is on its key's line: the markers above find it.
