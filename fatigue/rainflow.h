@@ -71,7 +71,7 @@ class RainflowCounter {
   std::vector<double> stack_;  // turning points not yet counted; stack_[0] is the starting point S
   bool closed_ = false;        // repeated block: every range counts as a full cycle (S is the extreme)
   std::size_t samples_ = 0, turning_points_ = 0;
-  double last_ = 0.0, candidate_ = 0.0;
+  double last_ = 0.0;
   int direction_ = 0;          // +1 rising, -1 falling, 0 not yet known
   double cycles_ = 0.0, max_range_ = 0.0;
 };
