@@ -327,8 +327,16 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
       angle.values.push_back(phi / kDegree);
     }
     if (!mag.values.empty()) {
-      r.peak_cutting_force = std::max(0.0, *std::max_element(mag.values.begin(), mag.values.end()));
-      r.peak_backing_force = std::max(0.0, -*std::min_element(mag.values.begin(), mag.values.end()));
+      // One meaning in 2-D and 3-D (issue 15): the largest |RPF| over the samples in which
+      // the soil law says the blade cuts (backs off); zero if it never does.
+      double cut = 0.0, back = 0.0;
+      for (std::size_t i = 0; i < ns; ++i) {
+        const double m = std::abs(mag.values[i]);
+        if (machine.soil_state_at(tr.time[i]).cutting) cut = std::max(cut, m);
+        else back = std::max(back, m);
+      }
+      r.peak_cutting_force = cut;
+      r.peak_backing_force = back;
     }
     if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
       // Average peak-to-peak vertical blade motion over whole shaker cycles.

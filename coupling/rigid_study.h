@@ -115,8 +115,8 @@ struct RigidResults {
   rigid::Trajectory trajectory;
   std::vector<Series> series;  // blade motion, plow force, element forces, chain force
   std::optional<double> plow_vertical_peak_to_peak;  // m, average over shaker cycles
-  std::optional<double> peak_cutting_force;          // N, largest signed plow force magnitude (forward travel)
-  std::optional<double> peak_backing_force;          // N, largest magnitude while the blade moves back
+  std::optional<double> peak_cutting_force;          // N, largest |RPF| while the soil law says the blade cuts (as in 3-D)
+  std::optional<double> peak_backing_force;          // N, largest |RPF| while it backs off
   // N: the thesis's "average peak" forces (Figure 10), each shaker cycle's
   // largest, averaged over the whole cycles in which the blade cuts (backs).
   std::optional<double> average_peak_cutting_force;

@@ -30,6 +30,8 @@
 #include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
 #include "rigid/unilateral_contact.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::rigid {
 
@@ -99,8 +101,6 @@ struct Chain2D : ChainTeeth {
   double moment_arm = 0.0;           // l2 of Eq. 2.32, m
 };
 
-enum class Attachment { none, plow, chain };
-
 struct Machine2DParameters {
   double ground_slope = 0.0;     // theta_g, rad
   double forward_speed = 0.0;    // VS, m/s, positive forward (-X)
@@ -128,109 +128,78 @@ struct FrameMassProperties {
 };
 FrameMassProperties frame_mass_properties(const Frame2D& frame, const Cab2D& cab);
 
-// The assembled 2-D machine: its multibody model, and the switched dynamics
-// (soil law, chain teeth, shaker) for the integrators.
+// The 2-D machine as one object: a compatibility wrapper over the vehicle
+// model (rigid/vehicle_model.h, built by build_vehicle_model) and the state of
+// its last run (rigid/vehicle_run.h). New code builds a VehicleModel and runs it
+// (run_vehicle); this class keeps the older call sites working.
 class Machine2D : public SwitchedSystem {
  public:
   explicit Machine2D(const Machine2DParameters& p);
 
-  const Multibody& model() const { return model_; }
+  const Multibody& model() const { return model_.multibody; }
+  const VehicleModel& vehicle() const { return model_; }
+  const VehicleRunState& run_state() const { return state_; }
   const Machine2DParameters& parameters() const { return p_; }
   const FrameMassProperties& frame_mass() const { return frame_; }
   // Index of a coordinate by name ("x", "psi", ...), -1 if absent.
-  int coordinate(const std::string& name) const;
+  int coordinate(const std::string& name) const { return model_.coordinate(name); }
 
   // K and C with every element at full value (soil K5 included, every contact engaged).
-  Eigen::MatrixXd stiffness_matrix() const { return k_full_; }
-  // The stiffness the response sees in a contact state (docs/theory/rigid.md
-  // section 11.3): the blade cutting (the soil law's cutting factor on K5: 1,
-  // or 0 in the cut-face reading), backing off (REK K5), or out of the soil
-  // (no soil spring); the tires and bounce tire lifted in the statics are left out.
-  enum class ModalSoil { cutting, backing, none };
-  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const;
-  Eigen::MatrixXd damping_matrix() const { return c_full_; }
-  Eigen::MatrixXd mass_matrix() const { return m_; }
+  Eigen::MatrixXd stiffness_matrix() const { return model_.k_full; }
+  // The stiffness the response sees in a contact state (rigid::modal_stiffness).
+  using ModalSoil = rigid::ModalSoil;
+  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const { return modal_stiffness(model_, soil); }
+  Eigen::MatrixXd damping_matrix() const { return model_.c_full; }
+  Eigen::MatrixXd mass_matrix() const { return model_.m; }
 
-  // Static equilibrium under gravity from the unloaded springs, with the
-  // contact law the response starts in (rigid/contact_statics.h): q_static and
-  // the static force in every element (compression positive). The response's
-  // q is measured from it.
-  Eigen::VectorXd static_deflection() const { return statics_.deflection; }
-  std::vector<double> static_element_forces() const { return statics_.element_forces; }
-  const ContactStatics& statics() const { return statics_; }  // which contacts are engaged, b of Eq. 11.4
+  // Static equilibrium under gravity with the contact law the response starts
+  // in (rigid/contact_statics.h); the response's q is measured from it.
+  Eigen::VectorXd static_deflection() const { return model_.statics.deflection; }
+  std::vector<double> static_element_forces() const { return model_.statics.element_forces; }
+  const ContactStatics& statics() const { return model_.statics; }
 
-  // SwitchedSystem
+  // SwitchedSystem: VehicleDynamics over the model and this object's run state.
   int size() const override { return model_.size(); }
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
   int event_count() const override;
   void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
   std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                        const std::vector<int>& directions) override;
-  EventLength last_event_length() const override { return last_event_length_; }
+  EventLength last_event_length() const override { return state_.last_event_length; }
   double next_scheduled_change(double t) const override;
   std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
 
-  // Resets the discrete state for a run starting at t with (q, v): blade cutting, soil line at the blade.
-  void reset(double t, const Eigen::VectorXd& q);
+  // Resets the run state for a run starting at t with (q, v = 0): rigid::start_run.
+  void reset(double t, const Eigen::VectorXd& q) { state_ = start_run(model_, t, q); }
 
-  // The soil law's state (rigid/soil_contact.h): set at reset and at every
-  // located switch, so that forces can be recovered afterwards at any sample
-  // time. anchor: the (X, Z) blade displacement at which the soil springs are
-  // unstretched, set at anchor_time (it moves with the soil from then on if
-  // contact_moves_with_soil); line: x of the unpenetrated soil line at time.
-  using SoilState = SoilContactState<Eigen::Vector2d>;
-  const std::vector<SoilState>& soil_history() const { return soil_.history(); }
-  SoilState soil_state_at(double t) const;  // the state in force at t (after a switch at exactly t)
+  // The soil law's state (anchor in machine axes, Y = 0): rigid/vehicle_run.h.
+  using SoilState = rigid::SoilState;
+  const std::vector<SoilState>& soil_history() const { return state_.soil.history(); }
+  SoilState soil_state_at(double t) const { return rigid::soil_state_at(state_, t); }
 
-  // Forces for recovery. Plow resultant RPF (Eq. 2.37), N, in (X, Z), with
-  // the soil law in force at t.
+  // Forces for recovery (rigid/vehicle_run.h). Plow resultant RPF (Eq. 2.37), N, in (X, Z).
   Eigen::Vector2d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
-  double chain_force(double t) const;  // RCH, N, with the teeth and soil law in force at t
-  bool cutting() const { return soil_.cutting(); }
-  double soil_line_at(double t) const;
+  double chain_force(double t) const { return rigid::chain_force(model_, state_, t); }
+  bool cutting() const { return state_.soil.cutting(); }
+  double soil_line_at(double t) const { return state_.soil.line_at(t); }
 
   // Displacement Jacobian of a point fixed to the frame at (X, Z).
   Jacobian frame_point_jacobian(const Eigen::Vector2d& point) const;
-  // Tension in an element (N, positive when stretched): k (G q - xr) + c (G v - vr),
-  // with the soil law in force at t for the soil elements. For an element of a
-  // contact lost at t (unilateral contacts) it is the static force SF_e, so
-  // that the total force SF_e - tension is zero.
-  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return rigid::element_tension(model_, state_, element, t, q, v);
+  }
   // The shaker's force vector at t (X, Z), N; zero without a plow.
   Eigen::Vector2d shaker_force(double t) const;
-
-  // The reference ground input of a grounded element (tires, bounce tire), or nullptr.
-  const GroundInput* ground_input_of(int element) const;
-
-  // The tires' and bounce tire's contacts (names front_tire, rear_tire,
-  // bounce_tire) and their state: rigid/unilateral_contact.h.
-  const UnilateralContacts& contacts() const { return contacts_; }
-
-  // Element and point indices.
-  int blade_point() const { return blade_point_; }
-  const std::vector<int>& soil_elements() const { return soil_elements_; }
+  const GroundInput* ground_input_of(int element) const { return rigid::ground_input_of(model_, element); }
+  const UnilateralContacts& contacts() const { return state_.contacts; }
+  int blade_point() const { return model_.blade_point; }
+  const std::vector<int>& soil_elements() const { return model_.soil_elements; }
 
  private:
-  EventLength last_event_length_;  // of the last on_event
   Machine2DParameters p_;
   FrameMassProperties frame_;
-  Multibody model_;
-  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, c_cut_, k_back_, c_back_, k_no_soil_;
-  Eigen::LDLT<Eigen::MatrixXd> m_solver_;
-  int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
-  std::vector<int> soil_elements_;
-  // Discrete state: the soil law (x of the blade along X, moving at VS cos theta_g
-  // while backing) and the chain's tooth count (XNN).
-  SoilContact<Eigen::Vector2d> soil_;
-  ToothCount teeth_;
-  UnilateralContacts contacts_;  // one-sided tires (events after the soil's)
-  ContactStatics statics_;       // the equilibrium q is measured from (Eqs. 11.1-11.4)
-  int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
-  std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
-  // The anchor at t: fixed in the machine, or carried rearward with the soil.
-  Eigen::Vector2d anchor_at(const Eigen::Vector2d& anchor, double anchor_time, double t) const;
-
-  Eigen::VectorXd forcing(double t) const;  // Q(t) + FK(t) + FC(t), without the state-dependent part
+  VehicleModel model_;
+  mutable VehicleRunState state_;  // mutable: the SwitchedSystem interface evaluates through VehicleDynamics
 };
 
 }  // namespace framedyn::rigid

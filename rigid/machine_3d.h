@@ -40,6 +40,8 @@
 #include "rigid/soil_contact.h"
 #include "rigid/switched_system.h"
 #include "rigid/unilateral_contact.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::rigid {
 
@@ -162,110 +164,90 @@ struct Machine3DParameters {
   ContactLaw contacts = ContactLaw::unilateral;
 };
 
+// The 3-D machine as one object: a compatibility wrapper over the vehicle
+// model (rigid/vehicle_model.h, built by build_vehicle_model) and the state of
+// its last run (rigid/vehicle_run.h), as Machine2D.
 class Machine3D : public SwitchedSystem {
  public:
   explicit Machine3D(const Machine3DParameters& p);
 
-  const Multibody& model() const { return model_; }
+  const Multibody& model() const { return model_.multibody; }
+  const VehicleModel& vehicle() const { return model_; }
+  const VehicleRunState& run_state() const { return state_; }
   const Machine3DParameters& parameters() const { return p_; }
-  int coordinate(const std::string& name) const;  // -1 if absent
-  const Eigen::Vector3d& reference() const { return reference_; }
+  int coordinate(const std::string& name) const { return model_.coordinate(name); }  // -1 if absent
+  const Eigen::Vector3d& reference() const { return model_.reference; }
 
-  Eigen::MatrixXd mass_matrix() const { return m_; }
-  Eigen::MatrixXd stiffness_matrix() const { return k_full_; }  // soil at full value
-  Eigen::MatrixXd damping_matrix() const { return c_full_; }
+  Eigen::MatrixXd mass_matrix() const { return model_.m; }
+  Eigen::MatrixXd stiffness_matrix() const { return model_.k_full; }  // soil at full value
+  Eigen::MatrixXd damping_matrix() const { return model_.c_full; }
 
   // Static equilibrium under gravity with the contact law the response starts
   // in (rigid/contact_statics.h, Eqs. 11.1-11.4); q is measured from it.
-  Eigen::VectorXd static_deflection() const { return statics_.deflection; }
+  Eigen::VectorXd static_deflection() const { return model_.statics.deflection; }
   // The static force SF_e = -k_e G_e q_s in every element (compression positive; 0 for the soil under unilateral contacts).
-  std::vector<double> static_element_forces() const { return statics_.element_forces; }
-  const ContactStatics& statics() const { return statics_; }
-  // The stiffness the response sees in a contact state (Eq. 11.7), as Machine2D::stiffness_matrix(ModalSoil).
-  Eigen::MatrixXd stiffness_matrix(Machine2D::ModalSoil soil) const;
-  // The tires' and bounce tire's contacts (front_left_tire, ..., bounce_tire)
-  // and their state: rigid/unilateral_contact.h.
-  const UnilateralContacts& contacts() const { return contacts_; }
+  std::vector<double> static_element_forces() const { return model_.statics.element_forces; }
+  const ContactStatics& statics() const { return model_.statics; }
+  // The stiffness the response sees in a contact state (Eq. 11.7).
+  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const { return modal_stiffness(model_, soil); }
+  const UnilateralContacts& contacts() const { return state_.contacts; }
 
-  // SwitchedSystem
+  // SwitchedSystem: VehicleDynamics over the model and this object's run state.
   int size() const override { return model_.size(); }
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
-  int event_count() const override { return soil_event_count() + contacts_.event_count(); }
+  int event_count() const override;
   void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
   std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
                        const std::vector<int>& directions) override;
-  EventLength last_event_length() const override { return last_event_length_; }
+  EventLength last_event_length() const override { return state_.last_event_length; }
   double next_scheduled_change(double t) const override;
   std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
-  void reset(double t, const Eigen::VectorXd& q);
+  void reset(double t, const Eigen::VectorXd& q) { state_ = start_run(model_, t, q); }
 
-  // The soil law's state (rigid/soil_contact.h): line, the blade displacement
+  // The soil law's state (rigid/vehicle_run.h): line, the blade displacement
   // along the travel where the soil is unpenetrated, m; anchor, the blade
   // displacement where the soil springs are unstretched, m (fixed in the
   // machine: SoilLaw::contact_moves_with_soil is not supported in 3-D).
-  using SoilState = SoilContactState<Eigen::Vector3d>;
-  const std::vector<SoilState>& soil_history() const { return soil_.history(); }
-  SoilState soil_state_at(double t) const { return soil_.state_at(t); }
-  bool cutting() const { return soil_.cutting(); }
+  using SoilState = rigid::SoilState;
+  const std::vector<SoilState>& soil_history() const { return state_.soil.history(); }
+  SoilState soil_state_at(double t) const { return rigid::soil_state_at(state_, t); }
+  bool cutting() const { return state_.soil.cutting(); }
 
-  // Recovery.
-  Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const;
-  // Tension k (G q - xr) + c (G v - vr), N; for an element of a contact lost
-  // at t, the static force SF_e (the total force SF_e - tension is zero).
-  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
-  Eigen::Vector3d shaker_force(double t) const;      // N, fixed axes
-  Eigen::Vector3d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;  // soil on the blade/boom reversed: Eq. 2.37 in 3-D
-  double chain_force(double t) const;                 // RCH, N
-  Eigen::Vector3d chain_force_vector(double t) const; // RCH along the chain, N
-  Eigen::Vector3d chain_moment(double t) const;       // RMCH about +Y, N m
-  const GroundInput* ground_input_of(int element) const;
+  // Recovery (rigid/vehicle_run.h).
+  Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const { return rigid::frame_point_jacobian(model_, point); }
+  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return rigid::element_tension(model_, state_, element, t, q, v);
+  }
+  Eigen::Vector3d shaker_force(double t) const { return rigid::shaker_force(model_, t); }  // N, fixed axes
+  Eigen::Vector3d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return rigid::plow_force(model_, state_, t, q, v);  // soil on the blade/boom reversed: Eq. 2.37 in 3-D
+  }
+  double chain_force(double t) const { return rigid::chain_force(model_, state_, t); }               // RCH, N
+  Eigen::Vector3d chain_force_vector(double t) const { return chain_force(t) * model_.chain_direction; }  // RCH along the chain, N
+  Eigen::Vector3d chain_moment(double t) const { return Eigen::Vector3d(0.0, -chain_force(t) * model_.chain_moment_arm, 0.0); }  // RMCH about +Y, N m
+  const GroundInput* ground_input_of(int element) const { return rigid::ground_input_of(model_, element); }
 
   // Where the model put things (machine axes, m), and unit directions.
-  int blade_point() const { return blade_point_; }
-  int shaker_point() const { return shaker_point_; }
-  int chain_point() const { return chain_point_; }
-  const std::vector<int>& soil_elements() const { return soil_elements_; }
-  Eigen::Vector3d travel_direction() const { return cut_direction_; }  // horizontal, rearward relative to the ground (-travel)
-  // Exact positions of the plow's points after beta and alpha' (for tests and recovery).
-  struct PlowPlacement {
-    Eigen::Vector3d pin6, pin11, pin9, pin10, cg, blade, shaker, bounce, cylinder_base, cylinder_arm;
-    Eigen::Vector3d pin_axis;           // arm pin axis (horizontal, normal to the boom plane)
-    Eigen::Matrix3d inertia;            // [I2] in the fixed axes
-  };
-  const PlowPlacement& plow_placement() const { return placement_; }
-  double linkage_ratio() const { return cb_; }
-  // Body indices in model().bodies().
-  int frame_body() const { return frame_body_; }
-  int reel_body() const { return reel_body_; }
-  int rear_axle_body() const { return rear_axle_body_; }
-  int front_axle_body() const { return front_axle_body_; }
-  int cab_body() const { return cab_body_; }
-  int plow_body() const { return plow_body_; }
+  int blade_point() const { return model_.blade_point; }
+  int shaker_point() const { return model_.shaker_point; }
+  int chain_point() const { return model_.chain_point; }
+  const std::vector<int>& soil_elements() const { return model_.soil_elements; }
+  Eigen::Vector3d travel_direction() const { return model_.cut_direction; }  // horizontal, rearward relative to the ground (-travel)
+  using PlowPlacement = rigid::PlowPlacement;
+  const PlowPlacement& plow_placement() const { return model_.plow_placement; }
+  double linkage_ratio() const { return model_.linkage_ratio; }
+  // Body indices in model().bodies(), in the order build_vehicle_model adds them.
+  int frame_body() const { return model_.frame_body; }
+  int reel_body() const { return 1; }
+  int rear_axle_body() const { return 2; }
+  int front_axle_body() const { return 3; }
+  int cab_body() const { return 4; }
+  int plow_body() const { return p_.attachment == Attachment::plow ? 5 : -1; }
 
  private:
-  EventLength last_event_length_;  // of the last on_event
   Machine3DParameters p_;
-  Eigen::Vector3d reference_{0, 0, 0};
-  Multibody model_;
-  PlowPlacement placement_{};
-  double cb_ = 0.0;
-  Eigen::MatrixXd m_, k_full_, c_full_, k_cut_, k_back_, c_back_;  // k_cut_: k_full_ less the soil springs in the cut-face reading
-  Eigen::LDLT<Eigen::MatrixXd> m_solver_;
-  int frame_body_ = -1, reel_body_ = -1, rear_axle_body_ = -1, front_axle_body_ = -1, cab_body_ = -1, plow_body_ = -1;
-  int blade_point_ = -1, shaker_point_ = -1, chain_point_ = -1;
-  std::vector<int> soil_elements_;      // along travel, across, normal
-  std::vector<int> inputs_;             // elements with a reference ground input (looked up by ground_input_of: copy-safe)
-  Eigen::Vector3d cut_direction_{1, 0, 0}, soil_flow_{0, 0, 0};
-  // Discrete state: the soil law along cut_direction_ (the soil line moving at
-  // VS cos theta_g while backing) and the chain's tooth count (XNN), both logged.
-  SoilContact<Eigen::Vector3d> soil_;
-  ToothCount teeth_;
-  UnilateralContacts contacts_;         // one-sided tires (events after the soil's)
-  ContactStatics statics_;              // the equilibrium q is measured from (Eqs. 11.1-11.4)
-  Eigen::MatrixXd k_no_soil_;
-  int soil_event_count() const { return blade_point_ >= 0 ? 1 : 0; }
-  std::string soil_switch(double t, const Eigen::VectorXd& q, int direction);  // Eq. 2.36's event
-  Eigen::VectorXd forcing(double t) const;
+  VehicleModel model_;
+  mutable VehicleRunState state_;  // mutable: the SwitchedSystem interface evaluates through VehicleDynamics
 };
 
 }  // namespace framedyn::rigid

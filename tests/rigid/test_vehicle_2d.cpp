@@ -42,6 +42,8 @@
 #include "rigid/plow_linkage.h"
 #include "rigid/rigid_modes.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -1264,6 +1266,95 @@ rigid::Machine2DParameters linear_machine(double beta) {
   p.soil.damping = beta * p.soil.stiffness;
   p.contacts = rigid::ContactLaw::linear;  // the bilateral springs: a linear system
   return p;
+}
+
+// --- one model, many runs (rigid/vehicle_model.h, rigid/vehicle_run.h) ------------
+
+// Bit-for-bit equality of two runs: every sample's time, q, v, a and every event.
+bool identical_runs(const rigid::Trajectory& a, const rigid::Trajectory& b) {
+  if (a.time != b.time || a.q.size() != b.q.size() || a.events.size() != b.events.size()) return false;
+  for (std::size_t i = 0; i < a.q.size(); ++i)
+    if (a.q[i] != b.q[i] || a.v[i] != b.v[i] || a.a[i] != b.a[i]) return false;
+  for (std::size_t i = 0; i < a.events.size(); ++i)
+    if (a.events[i].time != b.events[i].time || a.events[i].what != b.events[i].what) return false;
+  return a.steps == b.steps;
+}
+
+rigid::IntegrationOptions short_run() {
+  rigid::IntegrationOptions o;
+  o.end_time = 0.2;
+  o.output_interval = 1e-3;
+  return o;
+}
+
+// The shipped plow (r100_plow_2d.yaml: the cut-face soil law switching) with
+// twice its shaker force, so that the bounce tire also lifts off: runs with
+// soil switches and contact events.
+rigid::Machine2DParameters switching_plow() {
+  rigid::Machine2DParameters p = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml").machine;
+  p.plow.shaker_amplitude *= 2.0;
+  return p;
+}
+
+TEST(VehicleModelRuns, OneModelRunAtTwoShakerFrequenciesEqualsTwoFreshBuildsBitForBit) {
+  const rigid::Machine2DParameters p = switching_plow();
+  const double f1 = p.plow.shaker_frequency, f2 = 0.8 * f1;
+  rigid::Machine2DParameters p2 = p;
+  p2.plow.shaker_frequency = f2;
+  rigid::VehicleModel model = rigid::build_vehicle_model(p);
+  const VectorXd zero = VectorXd::Zero(model.size());
+  const rigid::VehicleRun a1 = rigid::run_vehicle(model, zero, zero, short_run());
+  rigid::set_shaker(model, p.plow.shaker_amplitude, f2, p.plow.shaker_phase);
+  const rigid::VehicleRun a2 = rigid::run_vehicle(model, zero, zero, short_run());
+  rigid::set_shaker(model, p.plow.shaker_amplitude, f1, p.plow.shaker_phase);
+  const rigid::VehicleRun a3 = rigid::run_vehicle(model, zero, zero, short_run());
+  const rigid::VehicleRun fresh1 = rigid::run_vehicle(rigid::build_vehicle_model(p), zero, zero, short_run());
+  const rigid::VehicleModel model2 = rigid::build_vehicle_model(p2);
+  const rigid::VehicleRun fresh2 = rigid::run_vehicle(model2, zero, zero, short_run());
+  EXPECT_TRUE(identical_runs(a1.trajectory, fresh1.trajectory));
+  EXPECT_TRUE(identical_runs(a2.trajectory, fresh2.trajectory));
+  EXPECT_TRUE(identical_runs(a3.trajectory, fresh1.trajectory));  // the f2 run left nothing behind in the model
+  // The same run through the compatibility wrapper (the integrated object) is the same run.
+  rigid::Machine2D machine(p2);
+  machine.reset(0.0, zero);
+  EXPECT_TRUE(identical_runs(rigid::integrate_event_located(machine, zero, zero, short_run()), fresh2.trajectory));
+  // Force recovery works from (model, run state): RPF of the model's second run from its own
+  // state equals that of the fresh run. And the two frequencies give different responses.
+  for (std::size_t i = 0; i < a2.trajectory.time.size(); ++i) {
+    const double t = a2.trajectory.time[i];
+    EXPECT_EQ(rigid::plow_force(model2, a2.state, t, a2.trajectory.q[i], a2.trajectory.v[i]),
+              rigid::plow_force(model2, fresh2.state, t, fresh2.trajectory.q[i], fresh2.trajectory.v[i]))
+        << "t = " << t;
+  }
+  double response_change = 0.0, amplitude = 0.0;
+  const int psi = model.coordinate("psi");
+  for (std::size_t i = 0; i < a1.trajectory.time.size(); ++i) {
+    response_change = std::max(response_change, std::abs(a1.trajectory.q[i][psi] - a2.trajectory.q[i][psi]));
+    amplitude = std::max(amplitude, std::abs(a1.trajectory.q[i][psi]));
+  }
+  std::printf("psi at %.2f Hz and %.2f Hz: max difference %.3e rad of max amplitude %.3e rad; %zu and %zu events\n", f1, f2, response_change,
+              amplitude, a1.trajectory.events.size(), a2.trajectory.events.size());
+  EXPECT_GT(response_change, 0.1 * amplitude);
+  EXPECT_GE(a1.trajectory.events.size(), 2u);  // the runs switch: soil law and contacts
+  EXPECT_GE(a2.trajectory.events.size(), 2u);
+}
+
+TEST(VehicleModelRuns, DampingChangedInPlaceEqualsAFreshBuildAndSoilDampingNeedsARebuild) {
+  rigid::Machine2DParameters p = switching_plow();
+  rigid::VehicleModel model = rigid::build_vehicle_model(p);
+  const double c = 3.0 * p.cab.front.vertical.damping + 1000.0;
+  rigid::set_element_damping(model, "cab_mount_front", c);
+  p.cab.front.vertical.damping = c;
+  const rigid::VehicleModel fresh = rigid::build_vehicle_model(p);
+  EXPECT_EQ(model.c_full, fresh.c_full);
+  EXPECT_EQ(model.c_back, fresh.c_back);
+  EXPECT_EQ(model.k_full, fresh.k_full);
+  const VectorXd zero = VectorXd::Zero(model.size());
+  EXPECT_TRUE(identical_runs(rigid::run_vehicle(model, zero, zero, short_run()).trajectory,
+                             rigid::run_vehicle(fresh, zero, zero, short_run()).trajectory));
+  // The soil's damping enters the soil law's state-dependent terms: a rebuild, not an update.
+  EXPECT_THROW(rigid::set_element_damping(model, "soil_x", 1.0), std::invalid_argument);
+  EXPECT_THROW(rigid::set_element_damping(model, "no_such_element", 1.0), std::invalid_argument);
 }
 
 TEST(FreeVibration, UndampedUnforcedMachineConservesEnergy) {

@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "coupling/frame_loads_3d.h"
@@ -30,6 +31,8 @@
 #include "rigid/machine_3d.h"
 #include "rigid/rigid_modes.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace {
 
@@ -751,6 +754,72 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
   }
   EXPECT_EQ(r.events_2d, r.events_3d);
   EXPECT_LT(r.difference, 2e-6 * r.amplitude);
+}
+
+// Both builders give one model type, run and recovered by the same functions:
+// the symmetric 3-D model of the shipped 2-D plow, run by run_vehicle, gives
+// the 2-D model's in-plane shaker force and soil resultant (Eq. 2.37) through
+// rigid::shaker_force and rigid::plow_force. And a 3-D model run at a second
+// shaker frequency after set_shaker equals a fresh build, bit for bit.
+static_assert(std::is_same_v<decltype(rigid::build_vehicle_model(std::declval<const rigid::Machine2DParameters&>())),
+                             decltype(rigid::build_vehicle_model(std::declval<const rigid::Machine3DParameters&>()))>,
+              "the 2-D and 3-D builders produce the same model type");
+
+TEST(PlanarAgreement, BothBuildersGiveOneModelTypeRunAndRecoveredByTheSameFunctions) {
+  rigid::Machine2DParameters p2 = shipped_2d();
+  p2.contacts = rigid::ContactLaw::linear;
+  const rigid::VehicleModel m2 = rigid::build_vehicle_model(p2);
+  const rigid::VehicleModel m3 = rigid::build_vehicle_model(from_2d(p2, 1e13));
+  EXPECT_EQ(m2.dimensions, 2);
+  EXPECT_EQ(m3.dimensions, 3);
+  rigid::IntegrationOptions o;
+  o.end_time = 0.05;
+  o.output_interval = 1e-3;
+  o.relative_tolerance = 1e-10;
+  o.absolute_tolerance = 1e-13;
+  o.velocity_scale = 100.0;
+  const rigid::VehicleRun r2 = rigid::run_vehicle(m2, VectorXd::Zero(m2.size()), VectorXd::Zero(m2.size()), o);
+  o.method = rigid::MultistepMethod::bdf;  // the stiff cab X penalty
+  const rigid::VehicleRun r3 = rigid::run_vehicle(m3, VectorXd::Zero(m3.size()), VectorXd::Zero(m3.size()), o);
+  ASSERT_EQ(r2.trajectory.time.size(), r3.trajectory.time.size());
+  double shaker_difference = 0.0, shaker_amplitude = 0.0, soil_difference = 0.0, soil_amplitude = 0.0;
+  for (std::size_t i = 0; i < r2.trajectory.time.size(); ++i) {
+    const double t = r2.trajectory.time[i];
+    const Vector3d s2 = rigid::shaker_force(m2, t), s3 = rigid::shaker_force(m3, t);
+    shaker_difference = std::max(shaker_difference, (s2 - s3).norm());
+    shaker_amplitude = std::max(shaker_amplitude, s2.norm());
+    const Vector3d f2 = rigid::plow_force(m2, r2.state, t, r2.trajectory.q[i], r2.trajectory.v[i]);
+    const Vector3d f3 = rigid::plow_force(m3, r3.state, t, r3.trajectory.q[i], r3.trajectory.v[i]);
+    soil_difference = std::max(soil_difference, (f2 - f3).norm());
+    soil_amplitude = std::max(soil_amplitude, f2.norm());
+  }
+  std::printf("one model type: shaker force differs by %.3e of %.3e N, soil resultant by %.3e of %.3e N over %.2f s\n", shaker_difference,
+              shaker_amplitude, soil_difference, soil_amplitude, o.end_time);
+  EXPECT_LT(shaker_difference, 1e-12 * shaker_amplitude);  // the same shank direction, placed by two builders
+  // The penalty error (~4e-7) and rtol 1e-10 over the steps, as the in-plane response above.
+  EXPECT_GT(soil_amplitude, 0.0);
+  EXPECT_LT(soil_difference, 2e-6 * soil_amplitude);
+}
+
+TEST(PlanarAgreement, ThreeDModelRunAtASecondShakerFrequencyEqualsAFreshBuildBitForBit) {
+  rigid::Machine3DParameters p = offset_plow();
+  rigid::VehicleModel model = rigid::build_vehicle_model(p);
+  const VectorXd zero = VectorXd::Zero(model.size());
+  rigid::IntegrationOptions o;
+  o.end_time = 0.05;
+  o.output_interval = 1e-3;
+  const rigid::VehicleRun first = rigid::run_vehicle(model, zero, zero, o);
+  rigid::set_shaker(model, p.plow.shaker_amplitude, 0.7 * p.plow.shaker_frequency, p.plow.shaker_phase);
+  const rigid::VehicleRun second = rigid::run_vehicle(model, zero, zero, o);
+  p.plow.shaker_frequency *= 0.7;
+  const rigid::VehicleRun fresh = rigid::run_vehicle(rigid::build_vehicle_model(p), zero, zero, o);
+  ASSERT_EQ(second.trajectory.time, fresh.trajectory.time);
+  ASSERT_EQ(second.trajectory.events.size(), fresh.trajectory.events.size());
+  for (std::size_t i = 0; i < fresh.trajectory.time.size(); ++i) {
+    EXPECT_EQ(second.trajectory.q[i], fresh.trajectory.q[i]) << "t = " << fresh.trajectory.time[i];
+    EXPECT_EQ(second.trajectory.v[i], fresh.trajectory.v[i]) << "t = " << fresh.trajectory.time[i];
+  }
+  EXPECT_NE(first.trajectory.q.back(), second.trajectory.q.back());  // the frequency did change the run
 }
 
 TEST(GroundInput3D, SineUnderOneTireLoadsTheModelThroughThatTireOnly) {
