@@ -1396,6 +1396,18 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
+    // Time-dependent loads and the other procedures: named as such, not as
+    // unknown keywords, since a CalculiX user's deck has them for a reason.
+    else if (k == "*AMPLITUDE")
+      throw InputError(b.keyword.where,
+                       "loads that are constant in a step (framedyn reads no *AMPLITUDE: a transient's load history goes to "
+                       "framedyn frame-response as a CSV file, harmonic and random loads to framedyn harmonic and framedyn random)",
+                       b.keyword.params.count("NAME") ? "*AMPLITUDE, NAME=" + b.keyword.params.at("NAME") : std::string("*AMPLITUDE"));
+    else if (in_step_ && (k == "*MODAL DYNAMIC" || k == "*DYNAMIC" || k == "*STEADY STATE DYNAMICS" || k == "*BUCKLE" || k == "*HEAT TRANSFER"))
+      throw InputError(b.keyword.where,
+                       "*STATIC or *FREQUENCY as the step's procedure (framedyn's linear steps; a transient runs in framedyn "
+                       "frame-response from a load history, a harmonic sweep in framedyn harmonic)",
+                       fmt::format("{} in step {}", k, steps_));
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "

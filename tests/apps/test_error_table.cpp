@@ -352,6 +352,8 @@ std::vector<Row> rows() {
       mesh_row("INP-63", "*CLOAD\n3, 3", "*CLOAD, OP=ADD\n3, 3", "*CLOAD, OP=ADD", "*CLOAD"),
       mesh_row("INP-64", "*STATIC\n", "*STATIC\n*FREQUENCY\n5\n", "*FREQUENCY", "*FREQUENCY"),
       mesh_row("INP-67", "*CLOAD\n3, 3", "*BOUNDARY\n2, 3, 3\n*BOUNDARY, OP=NEW\n1, 1, 6\n*CLOAD\n3, 3", "*BOUNDARY, OP=NEW", "*BOUNDARY"),
+      mesh_row("INP-68", kData, "*AMPLITUDE, NAME=RAMP\n0, 0, 1, 1\n" + kData, "*AMPLITUDE", "*AMPLITUDE"),
+      mesh_row("INP-69", "*STATIC\n", "*MODAL DYNAMIC\n", "*MODAL DYNAMIC", "*MODAL DYNAMIC"),
       mesh_row("INP-66", "*END STEP\n", "*END STEP\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n*END STEP\n", "", "*CLOAD"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
