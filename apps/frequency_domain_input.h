@@ -21,11 +21,12 @@ struct FrequencyDomainOptions {
   double damping_ratio = 0.0;
   int modes = 0;               // 0: the mesh's *FREQUENCY count, else 20
   std::string output_set;      // node set for the tables; empty: all nodes
+  int step = 0;                // --step: the input step whose loads and supports are used; 0: the only step with loads
   bool static_correction = true;
   bool figures = true;
   std::string out;
   ProgressFlags progress;
-  // Registers mesh, --damping-ratio, --modes, --output-set, --no-static-correction, --no-figures, --out, -v, -q.
+  // Registers mesh, --damping-ratio, --modes, --output-set, --step, --no-static-correction, --no-figures, --out, -v, -q.
   void add_to(CLI::App& cmd, const std::string& default_out_suffix);
   std::string out_dir() const;
 
@@ -42,11 +43,14 @@ struct FrequencyDomainFrame {
   Eigen::VectorXd load;                          // the load pattern on all DOFs (fem::applied_loads), SI
   std::vector<int> output_nodes;                 // node indices of --output-set, or all nodes
   fem::FrequencyResponseOptions response;
+  int step = 0;                                  // the input step used (its number); 0: a deck without *STEP
 };
 
-// Reads the mesh and solves for the modes. Throws InputError for a mesh
-// without loads (`analysis` names the command), an unknown --output-set or
-// more --modes than the frame has free DOFs.
+// Reads the mesh, takes the step --step names (or the deck's only step with
+// loads) and solves for the modes. Throws InputError for a mesh without loads
+// (`analysis` names the command), a --step the deck does not have, a deck with
+// several steps with loads and no --step, an unknown --output-set or more
+// --modes than the frame has free DOFs.
 FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& options, const std::string& analysis, Progress& progress);
 
 }  // namespace framedyn::apps

@@ -70,7 +70,8 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   progress.stage("writing results");
   const std::string out_dir = opt.common.out_dir();
   core::ResultsFolder folder(out_dir);
-  const report::FrequencyResponseRun run{opt.common.mesh.path, opt.common.damping_ratio, opt.common.output_set, "", opt.common.figures, f.output_nodes};
+  report::FrequencyResponseRun run{opt.common.mesh.path, opt.common.damping_ratio, opt.common.output_set, "", opt.common.figures, f.output_nodes};
+  run.step = f.step;
   const std::vector<std::string> figures = report::write_harmonic_results(model, r, f.modes, run, folder, progress.callback());
   folder.commit();
   progress.done();
@@ -84,6 +85,7 @@ int run_harmonic(const HarmonicCommandOptions& opt) {
   const report::HarmonicPeaks p = report::harmonic_peaks(model, r);
   fmt::print("framedyn harmonic: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(),
              model.beams.size(), f.modes.free_dofs, u.name());
+  if (f.step > 0) fmt::print("loads and supports of step {} ({})\n", f.step, model.steps[static_cast<std::size_t>(f.step - 1)].procedure);
   fmt::print("{} frequencies from {:.6g} to {:.6g} Hz; {} modes up to {:.6g} Hz, zeta = {}, static correction {}\n", r.frequencies_hz.size(),
              r.frequencies_hz.front(), r.frequencies_hz.back(), r.modes_used, f.modes.modes.back().frequency_hz, opt.common.damping_ratio,
              r.static_correction ? "on" : "off");

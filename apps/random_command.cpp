@@ -59,7 +59,8 @@ int run_random(const RandomCommandOptions& opt) {
   progress.stage("writing results");
   const std::string out_dir = opt.common.out_dir();
   core::ResultsFolder folder(out_dir);
-  const report::FrequencyResponseRun run{opt.common.mesh.path, opt.common.damping_ratio, opt.common.output_set, opt.psd, opt.common.figures, f.output_nodes};
+  report::FrequencyResponseRun run{opt.common.mesh.path, opt.common.damping_ratio, opt.common.output_set, opt.psd, opt.common.figures, f.output_nodes};
+  run.step = f.step;
   const std::vector<std::string> figures = report::write_random_results(model, r, psd, f.modes, run, folder, progress.callback());
   folder.commit();
   progress.done();
@@ -74,6 +75,7 @@ int run_random(const RandomCommandOptions& opt) {
   const report::RandomPeaks p = report::random_peaks(model, r);
   fmt::print("framedyn random: {} ({} nodes, {} beam elements, {} free DOFs, units {})\n", opt.common.mesh.path, model.nodes.size(), model.beams.size(),
              f.modes.free_dofs, u.name());
+  if (f.step > 0) fmt::print("loads and supports of step {} ({})\n", f.step, model.steps[static_cast<std::size_t>(f.step - 1)].procedure);
   fmt::print("load PSD {} from {:.6g} to {:.6g} Hz (load factor RMS {:.6g}); {} modes up to {:.6g} Hz, zeta = {}, static correction {}; {} grid points\n",
              opt.psd, psd.lowest(), psd.highest(), p.load_factor_rms, r.modes_used, f.modes.modes.back().frequency_hz, opt.common.damping_ratio,
              r.static_correction ? "on" : "off", r.frequencies_hz.size());

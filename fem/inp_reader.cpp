@@ -357,6 +357,7 @@ struct RawStep {
   std::string procedure;            // STATIC, FREQUENCY; empty until the step names one
   std::optional<int> modes;         // *FREQUENCY's number of eigenvalues
   bool new_cloads = false, new_dloads = false;  // *CLOAD / *DLOAD with OP=NEW in this step
+  bool new_boundaries = false;      // its first *BOUNDARY has OP=NEW: the earlier supports are removed
   InputLocation where;
 };
 
@@ -430,16 +431,13 @@ void refuse_nonlinear_step(const Keyword& k) {
 
 // Beam offsets (CalculiX OFFSET1, OFFSET2): the beam's axis lies off its
 // nodes by that many section heights along the section's 1- and 2-directions
-// (docs/theory/fem.md, Eq. 3.5). framedyn reads them for the sections whose
-// heights CalculiX defines them by, RECT and BOX (a in 1, b in 2).
-double offset_parameter(const Keyword& k, const char* name, const std::string& shape) {
+// (docs/theory/fem.md, Eq. 3.5 and section 21); offset_heights says what a
+// section height is for each shape.
+double offset_parameter(const Keyword& k, const char* name) {
   auto it = k.params.find(name);
   if (it == k.params.end()) return 0.0;
   const double v = parse_double(it->second, k.where, name);
   if (!std::isfinite(v)) throw InputError(k.where, std::string("a finite ") + name, std::string(name) + "=" + it->second);
-  if (v != 0.0 && shape != "RECT" && shape != "BOX")
-    throw InputError(k.where, std::string(name) + " on a RECT or BOX section (offsets are in section heights, which framedyn takes from RECT and BOX only)",
-                     std::string(name) + "=" + it->second + " on SECTION=" + shape);
   return v;
 }
 struct RawDistributedLoad {  // *DLOAD
@@ -487,7 +485,8 @@ class Parser {
   // The step a load or support belongs to (0: model data), after checking
   // that it is not between two steps; whether OP=NEW was given.
   int data_step(const Keyword& k);
-  bool replaces_earlier(const Keyword& k, bool allowed);
+  bool replaces_earlier(const Keyword& k);
+  std::map<int, int> boundary_cards_;  // step (0: model data) -> *BOUNDARY cards read so far
 
   void node(const Block& b);
   void element(const Block& b);
@@ -680,8 +679,8 @@ void Parser::beam_section(const Block& b) {
   s.material = upper(required_param(b.keyword, "MATERIAL"));
   s.shape = upper(required_param(b.keyword, "SECTION"));
   if (s.shape == "RECTANGULAR") s.shape = "RECT";  // CalculiX reads the first four letters
-  s.offset1 = offset_parameter(b.keyword, "OFFSET1", s.shape);
-  s.offset2 = offset_parameter(b.keyword, "OFFSET2", s.shape);
+  s.offset1 = offset_parameter(b.keyword, "OFFSET1");
+  s.offset2 = offset_parameter(b.keyword, "OFFSET2");
   s.where = b.keyword.where;
   std::size_t count = 0, fewest = 0;
   if (s.shape == "RECT") count = 2, fewest = 1;  // CalculiX: one thickness is a square
@@ -800,24 +799,34 @@ int Parser::data_step(const Keyword& k) {
   return in_step_ ? steps_ : 0;
 }
 
-// OP=MOD (the default) keeps what earlier steps defined; OP=NEW (loads only)
-// removes it first (docs/theory/fem.md section 18).
-bool Parser::replaces_earlier(const Keyword& k, bool allowed) {
+// OP=MOD (the default) keeps what earlier steps defined; OP=NEW removes it
+// first (docs/theory/fem.md sections 18 and 21).
+bool Parser::replaces_earlier(const Keyword& k) {
   auto it = k.params.find("OP");
   if (it == k.params.end()) return false;
   const std::string op = upper(it->second);
   if (op == "MOD") return false;
-  if (op == "NEW" && allowed) return true;
-  if (op == "NEW")
-    throw InputError(k.where, "OP=MOD (framedyn keeps the supports of earlier steps; a step may add supports or change their values, not remove them)",
-                     "OP=" + it->second);
+  if (op == "NEW") return true;
   throw InputError(k.where, "OP=MOD or OP=NEW", "OP=" + it->second);
 }
 
 void Parser::boundary(const Block& b) {
   check_params(b.keyword, {"OP"});
   const int step = data_step(b.keyword);
-  (void)replaces_earlier(b.keyword, false);
+  // CalculiX: OP=NEW removes every support prescribed before the step, the
+  // model data's included, and "takes effect for the first *BOUNDARY card
+  // only" of the step. framedyn refuses it on a later card rather than guess
+  // whether the cards before it survive (docs/theory/fem.md section 21).
+  const int card = ++boundary_cards_[step];
+  if (replaces_earlier(b.keyword)) {
+    if (card > 1)
+      throw InputError(b.keyword.where,
+                       "OP=NEW on the first *BOUNDARY of its step only (it removes the supports prescribed before the step; CalculiX "
+                       "applies it to the first *BOUNDARY card of a step)",
+                       step > 0 ? fmt::format("OP=NEW on *BOUNDARY card {} of step {}", card, step)
+                                : fmt::format("OP=NEW on *BOUNDARY card {} of the model data", card));
+    if (step > 0) raw_steps_.back().new_boundaries = true;
+  }
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     RawBoundary r;
@@ -846,7 +855,7 @@ void Parser::boundary(const Block& b) {
 void Parser::cload(const Block& b) {
   check_params(b.keyword, {"OP"});
   const int step = data_step(b.keyword);
-  if (replaces_earlier(b.keyword, true) && step > 0) raw_steps_.back().new_cloads = true;
+  if (replaces_earlier(b.keyword) && step > 0) raw_steps_.back().new_cloads = true;
   for (const Line& l : b.data) {
     std::vector<std::string> f = split_fields(l.text);
     RawLoad r;
@@ -1093,7 +1102,7 @@ void Parser::step_keyword(const Block& b) {
 void Parser::dload(const Block& b) {
   check_params(b.keyword, {"OP"});
   const int step = data_step(b.keyword);
-  if (replaces_earlier(b.keyword, true) && step > 0) raw_steps_.back().new_dloads = true;
+  if (replaces_earlier(b.keyword) && step > 0) raw_steps_.back().new_dloads = true;
   if (b.data.empty()) throw InputError(b.keyword.where, "data lines: element or ELSET, load type, magnitude", "none");
   for (const Line& l : b.data) {
     const std::vector<std::string> f = split_fields(l.text);
@@ -1203,6 +1212,23 @@ void Parser::apply_section_extras(FrameModel& model, const core::UnitSystem& uni
   }
 }
 
+// The section heights (along 1, along 2; input units) that OFFSET1 and
+// OFFSET2 count in, as CalculiX 2.20 places the expanded section (measured on
+// the C3D20R mesh it writes, docs/theory/fem.md section 21): the outer widths
+// of RECT and BOX, the outer diameter 2r of PIPE, the value written on the
+// line of CIRC (CalculiX's thickness of a CIRC section). I and CHANNEL,
+// which CalculiX has no offsets for, count in their outline: the wider
+// flange along 1 and the height along 2.
+Eigen::Vector2d offset_heights(const RawSection& s) {
+  const std::vector<double>& d = s.dims;
+  if (s.shape == "RECT" || s.shape == "BOX") return {d[0], d[1]};
+  if (s.shape == "PIPE") return {2.0 * d[0], 2.0 * d[0]};
+  if (s.shape == "CIRC") return {d[0], d[0]};
+  if (s.shape == "I") return {std::max(d[2], d[3]), d[1]};
+  if (s.shape == "CHANNEL") return {d[1], d[0]};
+  return {0.0, 0.0};  // GENERAL: no OFFSET parameters (check_params)
+}
+
 // Offsets (Eq. 3.5) as rigid eccentricities: each end of an offset element
 // gets a node of its own on the element's axis, x + e, tied rigidly to the
 // mesh node (a rigid link, section R), and the element is moved onto them.
@@ -1221,7 +1247,8 @@ void Parser::apply_offsets(FrameModel& model) {
     const Eigen::Matrix3d axes = beam_local_axes(model.nodes[static_cast<std::size_t>(beam.node_a)].position,
                                                  model.nodes[static_cast<std::size_t>(beam.node_b)].position,
                                                  model.sections[static_cast<std::size_t>(beam.section)].n1_direction);
-    const Eigen::Vector3d e = kOffsetSign * (raw.offset1 * raw.dims[0] * l * axes.row(1).transpose() + raw.offset2 * raw.dims[1] * l * axes.row(2).transpose());
+    const Eigen::Vector2d h = offset_heights(raw) * l;
+    const Eigen::Vector3d e = kOffsetSign * (raw.offset1 * h(0) * axes.row(1).transpose() + raw.offset2 * h(1) * axes.row(2).transpose());
     for (int* end : {&beam.node_a, &beam.node_m, &beam.node_b}) {
       if (*end < 0) continue;
       const Node& mesh_node = model.nodes[static_cast<std::size_t>(*end)];
@@ -1369,6 +1396,18 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
+    // Time-dependent loads and the other procedures: named as such, not as
+    // unknown keywords, since a CalculiX user's deck has them for a reason.
+    else if (k == "*AMPLITUDE")
+      throw InputError(b.keyword.where,
+                       "loads that are constant in a step (framedyn reads no *AMPLITUDE: a transient's load history goes to "
+                       "framedyn frame-response as a CSV file, harmonic and random loads to framedyn harmonic and framedyn random)",
+                       b.keyword.params.count("NAME") ? "*AMPLITUDE, NAME=" + b.keyword.params.at("NAME") : std::string("*AMPLITUDE"));
+    else if (in_step_ && (k == "*MODAL DYNAMIC" || k == "*DYNAMIC" || k == "*STEADY STATE DYNAMICS" || k == "*BUCKLE" || k == "*HEAT TRANSFER"))
+      throw InputError(b.keyword.where,
+                       "*STATIC or *FREQUENCY as the step's procedure (framedyn's linear steps; a transient runs in framedyn "
+                       "frame-response from a load history, a harmonic sweep in framedyn harmonic)",
+                       fmt::format("{} in step {}", k, steps_));
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
@@ -1622,7 +1661,8 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   std::vector<RawDistributedLoad> dloads;
   const int step_count = static_cast<int>(raw_steps_.size());
   for (int step = 0; step <= step_count; ++step) {
-    // Supports: a DOF defined again takes the new value (OP=MOD).
+    // Supports: OP=NEW drops the earlier ones; a DOF defined again takes the new value (OP=MOD).
+    if (step > 0 && raw_steps_[static_cast<std::size_t>(step - 1)].new_boundaries) constraints.clear(), constraint_of.clear();
     for (const RawBoundary& b : boundaries_) {
       if (b.step != step) continue;
       for (int n : targets(b.target, b.where))

@@ -26,6 +26,7 @@ int node_id_of_dof(const fem::FrameModel& model, int global_dof) { return model.
 nlohmann::ordered_json input_entry(const FrequencyResponseRun& run, const core::UnitSystem& u, const nlohmann::ordered_json& specific) {
   nlohmann::ordered_json in = {{"mesh", run.mesh_path}, {"units", u.name()}};
   for (const auto& [key, value] : specific.items()) in[key] = value;
+  if (run.step > 0) in["step"] = run.step;
   in["damping_ratio"] = run.damping_ratio;
   in["output_set"] = run.output_set.empty() ? std::string("all nodes") : run.output_set;
   return in;

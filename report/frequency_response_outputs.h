@@ -26,6 +26,7 @@ struct FrequencyResponseRun {
   std::string psd_path;    // random: the load PSD's file
   bool figures = true;     // the PNG figures (gnuplot)
   std::vector<int> output_nodes;  // node indices of the tables' rows
+  int step = 0;                   // the input step whose loads are the amplitudes; 0: a deck without *STEP
 };
 
 // Where the harmonic response peaks: the largest translation amplitude's node,

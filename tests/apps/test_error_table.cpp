@@ -349,10 +349,11 @@ std::vector<Row> rows() {
       mesh_row("INP-60", kData, "*MPC\nTIE, 3, 2\n" + kData, "TIE, 3, 2", "*MPC"),
       // multi-step decks and offsets (issue 13)
       mesh_row("INP-61", "*END STEP\n", "*END STEP\n*CLOAD, OP=MOD\n3, 2, 500.\n*STEP\n*STATIC\n*END STEP\n", "*CLOAD, OP=MOD", "*CLOAD"),
-      mesh_row("INP-62", "*CLOAD\n3, 3", "*BOUNDARY, OP=NEW\n1, 1, 3\n*CLOAD\n3, 3", "*BOUNDARY, OP=NEW", "*BOUNDARY"),
       mesh_row("INP-63", "*CLOAD\n3, 3", "*CLOAD, OP=ADD\n3, 3", "*CLOAD, OP=ADD", "*CLOAD"),
       mesh_row("INP-64", "*STATIC\n", "*STATIC\n*FREQUENCY\n5\n", "*FREQUENCY", "*FREQUENCY"),
-      mesh_row("INP-65", "SECTION=RECT\n0.05, 0.1\n", "SECTION=PIPE, OFFSET1=0.5\n0.05, 0.01\n", "*BEAM SECTION", "*BEAM SECTION"),
+      mesh_row("INP-67", "*CLOAD\n3, 3", "*BOUNDARY\n2, 3, 3\n*BOUNDARY, OP=NEW\n1, 1, 6\n*CLOAD\n3, 3", "*BOUNDARY, OP=NEW", "*BOUNDARY"),
+      mesh_row("INP-68", kData, "*AMPLITUDE, NAME=RAMP\n0, 0, 1, 1\n" + kData, "*AMPLITUDE", "*AMPLITUDE"),
+      mesh_row("INP-69", "*STATIC\n", "*MODAL DYNAMIC\n", "*MODAL DYNAMIC", "*MODAL DYNAMIC"),
       mesh_row("INP-66", "*END STEP\n", "*END STEP\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n*END STEP\n", "", "*CLOAD"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
@@ -588,6 +589,12 @@ std::vector<Row> rows() {
       cli_row("CLI-26", "harmonic frame.inp -f 5:200:100 -z 0.02 --output-set TIP --no-figures --out results", "frame.inp: --output-set"),
       {"CLI-27", {{"frame.inp", edit(kMesh, "*CLOAD\n3, 3, 1000.\n", "")}}, "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results",
        "frame.inp: *CLOAD", true},
+      // ---- the step of a multi-step deck (apps/frequency_domain_input.cpp)
+      cli_row("CLI-57", "harmonic frame.inp -f 5:200:100 -z 0.02 --step 2 --no-figures --out results", "command line: --step"),
+      {"CLI-58", {{"frame.inp", edit(kMesh, "*END STEP\n", "*END STEP\n*STEP\n*STATIC\n*CLOAD\n2, 2, 500.\n*END STEP\n")}},
+       "harmonic frame.inp -f 5:200:100 -z 0.02 --no-figures --out results", "command line: --step", true},
+      {"CLI-59", {{"frame.inp", edit(kMesh, "*END STEP\n", "*END STEP\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n*END STEP\n")}},
+       "harmonic frame.inp -f 5:200:100 -z 0.02 --step 2 --no-figures --out results", "frame.inp: *CLOAD", true},
       cli_row("CLI-28", "random frame.inp --psd nothere.csv -z 0.02 --no-figures --out results", "nothere.csv", false),
       {"CLI-29", {{"frame.inp", kMesh}, {"psd.csv", "frequency [Hz],psd [1/Hz]\n5,0.01\n50;0.02\n500,0.01\n"}},
        "random frame.inp --psd psd.csv -z 0.02 --no-figures --out results", "psd.csv:3", true},

@@ -146,6 +146,38 @@ TEST(HarmonicCli, StaticCorrectionCanBeSwitchedOffAndIsReported) {
   EXPECT_EQ(read_csv(dir / "results" / "frf.csv").rows.size(), 9u * 50u);  // all nodes without --output-set
 }
 
+// A deck with a step per load case: harmonic (and random, which shares the
+// input) never takes step 1's loads silently. Without --step the run is
+// refused naming the steps; --step 2 gives exactly the response of a deck
+// that has step 2's loads alone, and summary.json says which step it was.
+TEST(HarmonicCli, MultiStepDeckRunsTheStepItIsToldAndNeverStepOneSilently) {
+  TempDir dir;
+  const std::string one = cantilever();
+  const std::string two = one + "*STEP\n*STATIC\n*CLOAD, OP=NEW\n9, 2, 2000.\n*END STEP\n";
+  std::string alone = one;
+  alone.replace(alone.find("9, 3, -1000."), 12, "9, 2, 2000.");
+  dir.write("two.inp", two);
+  dir.write("alone.inp", alone);
+  const std::string options = " -f 1:50:5 -z 0.05 --modes 4 --output-set TIP --no-figures -q";
+  const RunResult refused = framedyn(dir, "harmonic two.inp" + options + " --out refused");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("two.inp has several steps with loads: 1 (STATIC), 2 (STATIC)"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+  const RunResult r2 = framedyn(dir, "harmonic two.inp" + options + " --step 2 --out step2");
+  ASSERT_EQ(r2.status, 0) << r2.err;
+  const RunResult ra = framedyn(dir, "harmonic alone.inp" + options + " --out alone");
+  ASSERT_EQ(ra.status, 0) << ra.err;
+  const nlohmann::json j2 = nlohmann::json::parse(read_file(dir / "step2" / "summary.json"));
+  const nlohmann::json ja = nlohmann::json::parse(read_file(dir / "alone" / "summary.json"));
+  EXPECT_EQ(j2["input"]["step"], 2);
+  EXPECT_EQ(ja["input"]["step"], 1);  // a deck's only step with loads is used, and named
+  const nlohmann::json& h2 = j2["frame"]["harmonic"]["max_displacement"];
+  const nlohmann::json& ha = ja["frame"]["harmonic"]["max_displacement"];
+  EXPECT_EQ(h2["dof"], "uy");  // step 2's load is along y; step 1's along z
+  EXPECT_NEAR(h2["value"].get<double>(), ha["value"].get<double>(), 1e-9 * ha["value"].get<double>());
+  EXPECT_NEAR(h2["frequency"]["value"].get<double>(), ha["frequency"]["value"].get<double>(), 1e-9);
+}
+
 TEST(RandomCli, RmsTableIsTheIntegralOfTheResponsePsdTable) {
   TempDir dir;
   dir.write("frame.inp", cantilever());

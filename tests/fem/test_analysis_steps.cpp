@@ -93,4 +93,51 @@ TEST(AnalysisSteps, ModesUseTheFrequencyStepsSupports) {
   EXPECT_NEAR(r.modes.at(0).frequency_hz / f, 1.0, 5e-3);
 }
 
+// *BOUNDARY, OP=NEW (CalculiX, docs/theory/fem.md section 21): the step's
+// first *BOUNDARY card removes every support prescribed before the step, the
+// model data's clamp included; later cards of the step add to it; a later
+// step without *BOUNDARY keeps them. As CalculiX's test deck rot1: the clamp
+// moves from the root to mid-span, the tip load carried over.
+TEST(AnalysisSteps, BoundaryOpNewReplacesTheModelDataClampByTheStepsSupports) {
+  const fem::FrameModel m = fem::read_inp_text(cantilever("*BOUNDARY\n1, 1, 6\n"
+                                                          "*STEP\n*STATIC\n*CLOAD\n5, 3, 1000.\n*END STEP\n"
+                                                          "*STEP\n*STATIC\n*BOUNDARY, OP=NEW\n3, 1, 6\n*END STEP\n"
+                                                          "*STEP\n*STATIC\n*END STEP\n"),
+                                               "deck.inp", ".");
+  ASSERT_EQ(m.steps.size(), 3u);
+  for (std::size_t s : {1u, 2u}) {
+    ASSERT_EQ(m.steps[s].constraints.size(), 6u) << s;
+    for (const fem::Constraint& c : m.steps[s].constraints) EXPECT_EQ(c.node, m.node_index(3)) << s;
+  }
+  std::vector<fem::FrameModel> cases = {fem::with_step(m, 0), fem::with_step(m, 1)};
+  const std::vector<fem::StaticResult> r = fem::solve_static_cases(cases);
+  const int tip = 6 * m.node_index(5), root = 6 * m.node_index(1), mid = 6 * m.node_index(3);
+  const double uz1 = tip_deflection(1000.0, kI_z), uz2 = uz1 / 8.0;  // the free length halved: (L/2)^3
+  EXPECT_NEAR(r[0].displacement(tip + 2), uz1, 1e-9 * uz1);
+  EXPECT_NEAR(r[1].displacement(tip + 2), uz2, 1e-9 * uz2);
+  // Step 2: the unloaded half between the old root and the new clamp does not move, and the old root carries nothing.
+  for (int d = 0; d < 6; ++d) {
+    EXPECT_NEAR(r[1].displacement(root + d), 0.0, 1e-12) << d;
+    EXPECT_EQ(r[1].reaction(root + d), 0.0) << d;
+  }
+  EXPECT_NEAR(r[1].reaction(mid + 2), -1000.0, 1e-6);
+}
+
+TEST(AnalysisSteps, BoundaryOpNewInAFrequencyStepGivesItsOwnSupports) {
+  // Step 2 clamps the tip (OP=NEW, so the root is free) and its second card pins the root again:
+  // a propped cantilever mirrored, beta L = 3.9266; had the root clamp survived, it would be
+  // clamped-clamped (beta L = 4.7300).
+  const fem::FrameModel m = fem::with_frequency_step(fem::read_inp_text(
+      cantilever("*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*CLOAD\n5, 3, 1000.\n*END STEP\n"
+                 "*STEP\n*FREQUENCY\n1\n*BOUNDARY, OP=NEW\n5, 1, 6\n*BOUNDARY\n1, 1, 3\n*END STEP\n"),
+      "deck.inp", "."));
+  EXPECT_EQ(m.constraints.size(), 9u);  // 6 at the tip, 3 at the root
+  fem::ModalOptions o;
+  o.mode_count = 1;
+  const fem::ModalResult r = fem::compute_modes(m, o);
+  const double rho_a = 7850.0 * kA * kB, beta = 3.92660231 / kL;
+  const double f = beta * beta * std::sqrt(kE * kI_y / rho_a) / (2.0 * 3.14159265358979323846);
+  EXPECT_NEAR(r.modes.at(0).frequency_hz / f, 1.0, 5e-3);
+}
+
 }  // namespace

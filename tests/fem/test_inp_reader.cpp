@@ -1153,7 +1153,10 @@ std::vector<ErrorCase> error_cases() {
       {"SpringStiffnessText", kModel + "*ELEMENT, TYPE=SPRING1, ELSET=S\n10, 3\n*SPRING, ELSET=S\n1\nstiff\n", "stiff", "*SPRING", {"the spring stiffness (a finite number)", "found 'stiff'"}},
       // ---- steps
       {"LoadBetweenSteps", kModel + "*STEP\n*STATIC\n*END STEP\n*CLOAD\n3, 2, 1\n*STEP\n*STATIC\n*END STEP\n", "*CLOAD", "*CLOAD", {"expected *CLOAD inside a *STEP", "found it between two steps"}},
-      {"BoundaryOpNew", kModel + "*STEP\n*STATIC\n*BOUNDARY, OP=NEW\n1, 1, 6\n*END STEP\n", "*BOUNDARY, OP=NEW", "*BOUNDARY", {"expected OP=MOD (framedyn keeps the supports of earlier steps", "found OP=NEW"}},
+      {"AmplitudeIsNamedNotUnknown", "*AMPLITUDE, NAME=A1\n0, 0, 1, 1\n" + kModel, "*AMPLITUDE, NAME=A1", "*AMPLITUDE", {"expected loads that are constant in a step", "found *AMPLITUDE, NAME=A1"}},
+      {"ModalDynamicStepIsNamed", kModel + "*STEP\n*STATIC\n*END STEP\n*STEP\n*MODAL DYNAMIC\n1e-3, 1\n*END STEP\n", "*MODAL DYNAMIC", "*MODAL DYNAMIC", {"expected *STATIC or *FREQUENCY as the step's procedure", "found *MODAL DYNAMIC in step 2"}},
+      {"BoundaryOpNewOnALaterCardOfTheStep", kModel + "*STEP\n*STATIC\n*BOUNDARY\n1, 1, 3\n*BOUNDARY, OP=NEW\n1, 1, 6\n*END STEP\n", "*BOUNDARY, OP=NEW", "*BOUNDARY",
+       {"expected OP=NEW on the first *BOUNDARY of its step only", "found OP=NEW on *BOUNDARY card 2 of step 1"}},
       {"CloadOpUnknown", kModel + "*STEP\n*STATIC\n*CLOAD, OP=ADD\n3, 2, 1\n*END STEP\n", "*CLOAD, OP=ADD", "*CLOAD", {"expected OP=MOD or OP=NEW", "found OP=ADD"}},
       {"TwoProceduresInOneStep", kModel + "*STEP\n*STATIC\n*FREQUENCY\n5\n*END STEP\n", "*FREQUENCY", "*FREQUENCY", {"expected one procedure (*STATIC or *FREQUENCY) per *STEP", "found *STATIC and *FREQUENCY in step 1"}},
       {"StepInsideStep", kModel + "*STEP\n*STEP, NAME=INNER\n*END STEP\n", "*STEP, NAME=INNER", "*STEP", {"expected *END STEP before the next *STEP"}},

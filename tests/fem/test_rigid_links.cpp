@@ -570,3 +570,72 @@ TEST(BeamOffsets, AxialTipLoadOnAnOffsetAxisBendsByTheEccentricMoment) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------
+// Offsets on every section shape (docs/theory/fem.md section 21, Eq. 21.1).
+namespace {
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& e) {
+  Eigen::Matrix3d s;
+  s << 0, -e.z(), e.y(), e.z(), 0, -e.x(), -e.y(), e.x(), 0;
+  return s;
+}
+
+// A B33 cantilever along x (n1 = y, so local 1 = y, local 2 = z), clamped at
+// node 1, OFFSET1 = 0.5 and OFFSET2 = -0.25 section heights. The tip node's
+// flexibility (six unit loads at the node) must equal the centroidal
+// cantilever's, C_a (Euler-Bernoulli, exact for end loads), carried to the
+// node by the rigid arm from axis to node: C_n = T C_a T^T, T = [I, S(e); 0, I],
+// u_n = u_a + e x theta_a, with e = x_a - x_n = -(OFFSET1 h1 n1 + OFFSET2 h2 n2)
+// (Eq. 21.1). The section heights h1, h2 are the hand values CalculiX uses
+// (measured on its expanded mesh): CIRC the value written (0.1), PIPE the outer
+// diameter 2r; I and CHANNEL their outline (wider flange along 1, height along 2).
+// This couples axial force with both bending planes and torsion with the
+// transverse forces: every entry of the 6 x 6 matrix is checked.
+TEST(BeamOffsets, OffsetSectionIsTheCentroidalCantileverCarriedByTheRigidArmOnEveryShape) {
+  struct Shape {
+    const char* section;
+    const char* dims;
+    double h1, h2;
+  };
+  const std::vector<Shape> shapes = {{"CIRC", "0.1", 0.1, 0.1},
+                                     {"PIPE", "0.1, 0.01", 0.2, 0.2},
+                                     {"I", "0, 0.3, 0.15, 0.2, 0.02, 0.025, 0.01", 0.2, 0.3},
+                                     {"CHANNEL", "0.2, 0.08, 0.01, 0.008", 0.08, 0.2},
+                                     {"RECT", "0.1, 0.05", 0.1, 0.05}};
+  constexpr double kE = 2.1e11, kNu = 0.3, kL = 2.0;
+  const double g = kE / (2.0 * (1.0 + kNu));
+  for (const Shape& sh : shapes) {
+    std::string s = "** units: m-N-s\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 2, 0, 0\n*ELEMENT, TYPE=B33, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n";
+    s += fmt::format("*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION={}, OFFSET1=0.5, OFFSET2=-0.25\n{}\n0, 1, 0\n", sh.section, sh.dims);
+    s += "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*BOUNDARY\n1, 1, 6\n";
+    fem::FrameModel m = fem::read_inp_text(s, "deck.inp", ".");
+    const fem::SectionProperties& p = m.sections.at(0).properties;
+    const double a = p.area, i1 = p.i11, i2 = p.i22, j = p.torsion_constant;
+    // Centroidal cantilever, tip (F, M) -> (u, theta), global axes x, y = 1, z = 2.
+    Eigen::Matrix<double, 6, 6> ca = Eigen::Matrix<double, 6, 6>::Zero();
+    ca(0, 0) = kL / (kE * a);
+    ca(1, 1) = kL * kL * kL / (3 * kE * i2), ca(1, 5) = ca(5, 1) = kL * kL / (2 * kE * i2), ca(5, 5) = kL / (kE * i2);   // along 1: I22
+    ca(2, 2) = kL * kL * kL / (3 * kE * i1), ca(2, 4) = ca(4, 2) = -kL * kL / (2 * kE * i1), ca(4, 4) = kL / (kE * i1);  // along 2: I11
+    ca(3, 3) = kL / (g * j);
+    const Eigen::Vector3d e = -(0.5 * sh.h1 * Eigen::Vector3d::UnitY() + (-0.25) * sh.h2 * Eigen::Vector3d::UnitZ());
+    Eigen::Matrix<double, 6, 6> t = Eigen::Matrix<double, 6, 6>::Identity();
+    t.block<3, 3>(0, 3) = skew(e);
+    const Eigen::Matrix<double, 6, 6> expected = t * ca * t.transpose();
+    // The model's axis nodes lie at the mesh nodes + e.
+    EXPECT_LT((m.nodes.back().position - (Eigen::Vector3d(2, 0, 0) + e)).norm(), 1e-12) << sh.section;
+    Eigen::Matrix<double, 6, 6> measured;
+    const int tip = 6 * m.node_index(3);
+    for (int d = 0; d < 6; ++d) {
+      m.loads = {{m.node_index(3), d, 1.0}};
+      const fem::StaticResult r = fem::solve_static(m);
+      measured.col(d) = r.displacement.segment<6>(tip);
+    }
+    std::printf("%s: largest flexibility difference %.2e of the largest entry (e = (0, %.4g, %.4g) m)\n", sh.section,
+                (measured - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff(), e.y(), e.z());
+    EXPECT_LT((measured - expected).cwiseAbs().maxCoeff(), 1e-8 * expected.cwiseAbs().maxCoeff())
+        << sh.section << "\nmeasured\n" << measured << "\nexpected\n" << expected;
+  }
+}
+
+}  // namespace
