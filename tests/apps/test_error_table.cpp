@@ -452,6 +452,12 @@ std::vector<Row> rows() {
       frame_row("STUDY-45", "  mesh: frame.inp\n", "", "  loads:", "frame.mesh"),
       frame_row("STUDY-46", "mesh: frame.inp", "mesh: frame_v2.inp", "mesh:", "frame.mesh"),
       frame_row("STUDY-47", "supports: fixed_rear_end", "supports: pinned", "supports:", "frame.supports"),
+      [] {  // supports: axle_pins on a mesh without the rear axle pin's node set (docs/theory/coupling.md section 12)
+        const std::string text = edit(kFrameStudy, "supports: fixed_rear_end", "supports: axle_pins");
+        return Row{"STUDY-126",
+                   {{"study.yaml", text}, {"frame.inp", edit(shipped_frame(), "*NSET, NSET=P26_REAR_AXLE_PIN\n50\n", "")}, {"loads.csv", kLoads}},
+                   "frame-response study.yaml --out results", at("study.yaml", text, "supports:", "frame.supports")};
+      }(),
       frame_row("STUDY-48", "method: mode_displacement", "method: modal", "method:", "frame.method"),
       frame_row("STUDY-49", "modes: 4", "modes: 0", "modes:", "frame.modes"),
       frame_row("STUDY-50", "modal_ratio: 0.02", "modal_ratio: 1.5", "damping:", "frame.damping.modal_ratio"),
