@@ -123,7 +123,8 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   // dead_load in the pipeline only: the static loads come from the vehicle model.
   if (pipeline)
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load"});
+                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
+                  "compare_supports"});
   else
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
                   "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
@@ -160,6 +161,22 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
                     "supports: " + supports);
   } else if (r.supports == FrameSupports::clamped) {
     throw f.error("supports", "supports: clamped with support_set naming the node set(s) to clamp", "no support_set");
+  }
+  // Supports compared in the same run (pipeline only: the key is refused elsewhere).
+  if (f.has("compare_supports")) {
+    const YAML::Node n = f.node()["compare_supports"];
+    const std::vector<std::string> names = n.IsSequence() ? f.strings("compare_supports") : std::vector<std::string>{f.text("compare_supports")};
+    for (const std::string& name : names) {
+      FrameSupports c;
+      if (name == "none" || name == "free_free_inertia_relief") c = FrameSupports::free_free_inertia_relief;
+      else if (name == "axle_pins") c = FrameSupports::axle_pins;
+      else if (name == "fixed_rear_end") c = FrameSupports::fixed_rear_end;
+      else throw f.error("compare_supports", "a list of supports among none, axle_pins and fixed_rear_end", quoted(name));
+      if (c == r.supports || std::find(r.compare_supports.begin(), r.compare_supports.end(), c) != r.compare_supports.end())
+        throw f.error("compare_supports", "supports other than the run's own (supports: " + supports + ") and each once",
+                      quoted(name) + (c == r.supports ? ", the run's own support" : " twice"));
+      r.compare_supports.push_back(c);
+    }
   }
   // Output sets. Without the key: the pipeline's two rails, or none.
   if (!pipeline) r.rails.clear();

@@ -24,6 +24,7 @@
 //     stress_histories: hot_spots          # none | hot_spots | all: frame_stress_histories.csv
 //     yield_strength: 36000                # stress: warn when a von Mises stress exceeds it
 //     dead_load: true                      # pipeline only: static state (gravity, static loads) + dynamic
+//     compare_supports: [fixed_rear_end]   # pipeline only: the same loads on further supports, side by side
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -90,6 +91,11 @@ struct FrameStudyRequest {
   // The members' defaults are the pipeline's (a request built in code is a trencher frame's).
   FrameSupports supports = FrameSupports::fixed_rear_end;
   std::vector<std::string> support_sets = {"REAR_END"};  // node sets clamped by fixed_rear_end / clamped
+  // Pipeline only (frame_response.compare_supports): further supports the same
+  // run's loads are applied on, each a study of its own (its own assembly and
+  // factorisation), for the envelopes side by side and their peaks in the
+  // summary (none, axle_pins, fixed_rear_end). Default: none compared.
+  std::vector<FrameSupports> compare_supports;
   int modes = -1;                            // elastic modes used; -1: all (dense eigensolution)
   FrameMethod method = FrameMethod::mode_acceleration;
   fem::ModalDamping damping = fem::ModalDamping::ratio(0.02);

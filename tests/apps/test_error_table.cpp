@@ -508,6 +508,18 @@ std::vector<Row> rows() {
         return Row{"STUDY-106", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
                    at("study.yaml", text, "mesh_loads", "frame_response.mesh_loads")};
       }(),
+      [] {  // a support to compare that the pipeline does not know
+        const std::string text = edit(kStudy3D, "analysis:\n",
+                                      "frame_response: {mesh: frame.inp, compare_supports: [clamp]}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-127", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "compare_supports", "frame_response.compare_supports")};
+      }(),
+      [] {  // the run's own support compared with itself
+        const std::string text = edit(kStudy3D, "analysis:\n",
+                                      "frame_response: {mesh: frame.inp, supports: none, compare_supports: [fixed_rear_end, none]}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-128", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "compare_supports", "frame_response.compare_supports")};
+      }(),
       // ---- a frame part's mounts on the frame mesh (coupling/rigid_study_3d.cpp, frame_parts.cpp)
       mounts_row("STUDY-110", "[12, left]", "frame.parts[1].mounts[1]"),
       mounts_row("STUDY-111", "[12, 34, 14, 99]", "frame.parts[1].mounts[3]"),
