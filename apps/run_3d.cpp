@@ -61,6 +61,32 @@ void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::
   }
   report::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
 }
+// The bending-moment envelope along each rail under the run's support and
+// the compared ones (frame_response.compare_supports), one line per rail and support.
+void write_support_comparison_figure(const coupling::FrameStudyResults& f, const coupling::FrameStudyRequest& q,
+                                     const std::vector<coupling::FrameStudyResults>& compared, const core::UnitSystem& u,
+                                     const core::ResultsFolder& folder) {
+  report::LinePlot plot;
+  plot.title = "Bending moment along the rails under each support (envelope over the run)";
+  plot.x_label = "X along the frame";
+  plot.x_unit = u.label(Quantity::length);
+  plot.y_label = "peak bending moment";
+  plot.y_unit = u.label(Quantity::moment);
+  std::vector<std::pair<const coupling::FrameStudyResults*, coupling::FrameSupports>> runs = {{&f, q.supports}};
+  for (std::size_t k = 0; k < compared.size(); ++k) runs.push_back({&compared[k], q.compare_supports[k]});
+  for (const auto& [run, supports] : runs)
+    for (const coupling::RailRecovery& rail : run->rails) {
+      report::PlotSeries series;
+      series.name = rail.spec.name + ", " + coupling::supports_name(supports);
+      for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
+        series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
+        series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
+      }
+      plot.series.push_back(series);
+    }
+  report::write_png(plot, folder.path_of("frame_supports_envelopes.png"));
+}
+
 // Thesis Figures 22-24: forces at load points over time, one figure per
 // group. `file` names both the PNG and the CSV of the plotted values.
 struct LoadPointFigure {
@@ -214,6 +240,23 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
     j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
+    // The same loads on the supports compared (frame_response.compare_supports), each run on its own (one
+    // assembly and factorisation per support): their peaks in the summary, their envelopes in one figure.
+    std::vector<coupling::FrameStudyResults> compared;
+    for (const coupling::FrameSupports s : study.frame_response->compare_supports) {
+      progress.stage(fmt::format("frame transient (pipeline, supports: {})", coupling::supports_name(s)));
+      coupling::FrameStudyRequest cq = *study.frame_response;
+      cq.supports = s;
+      cq.compare_supports.clear();
+      cq.pvd = false;
+      cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
+      compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
+      const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
+      nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};
+      for (const char* key : {"peak_bending_moment", "peak_von_mises", "static"})
+        if (full.contains(key)) c[key] = full[key];
+      j["frame"]["compared_supports"].push_back(c);
+    }
     // The shaker near an elastic mode of the frame model (Eq. 8.3's band, on the beam model's modes).
     if (study.machine.attachment == rigid::Attachment::plow) {
       const std::vector<double> frame_hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + frame->frequencies_hz.size());
@@ -223,6 +266,10 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     if (figures) {
       write_rail_moment_figure(*frame, u, folder);
       figure_files.push_back("fig25_rail_bending_moment.png");
+      if (!compared.empty()) {
+        write_support_comparison_figure(*frame, *study.frame_response, compared, u, folder);
+        figure_files.push_back("frame_supports_envelopes.png");
+      }
       if (!frame->hot_spots.by_von_mises.empty()) {
         report::write_png(report::hot_spot_stress_figure(*frame, u), folder.path_of("frame_hot_spots.png"));
         figure_files.push_back("frame_hot_spots.png");

@@ -13,7 +13,7 @@ RigidBodyMass frame_rigid_body_mass(const fem::FrameModel& model) {
   const fem::DofMap dofs = fem::make_dof_map(bare);
   fem::AssemblyOptions options;
   options.storage = fem::Storage::full;
-  const fem::SparseMatrix mass = fem::assemble(bare, dofs, options).mass;
+  const fem::SparseMatrix mass = fem::assemble_mass(bare, dofs, options);
   // Rigid motions about the origin first: the mass and its first moment give the c.g.
   const auto rigid_about = [&](const Eigen::Vector3d& p) {
     const Eigen::MatrixXd all = fem::rigid_body_vectors(bare, p);

@@ -9,6 +9,7 @@
 #include "coupling/frame_balance.h"
 #include "fem/distributed_loads.h"
 #include "fem/rigid_body_modes.h"
+#include "fem/rigid_links.h"
 #include "fem/static_analysis.h"
 
 namespace framedyn::coupling {
@@ -28,10 +29,17 @@ fem::FrameModel with_gravity(const fem::FrameModel& model, const Eigen::Vector3d
   return out;
 }
 
-FrameStaticState frame_static_state(const fem::FrameModel& model_in, const Eigen::Vector3d& gravity, const fem::SparseMatrix* distribution,
+FrameStaticState frame_static_state(const fem::FrameModel& model, const Eigen::Vector3d& gravity, const fem::SparseMatrix* distribution,
                                     const Eigen::VectorXd* static_components, const std::vector<RailSpec>& outputs, int stations) {
+  const fem::FrameDynamics frame(model);
+  return frame_static_state(frame, frame_rigid_body_mass(model), gravity, distribution, static_components, outputs, stations);
+}
+
+FrameStaticState frame_static_state(const fem::FrameDynamics& frame, const RigidBodyMass& body, const Eigen::Vector3d& gravity,
+                                    const fem::SparseMatrix* distribution, const Eigen::VectorXd* static_components, const std::vector<RailSpec>& outputs,
+                                    int stations) {
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
-  fem::FrameModel model = with_gravity(model_in, gravity);
+  fem::FrameModel model = with_gravity(frame.model(), gravity);
   if (distribution && static_components) {
     if (distribution->rows() != model.dof_count() || distribution->cols() != static_components->size())
       throw std::invalid_argument("frame_static_state: the distribution does not match the model or the static loads");
@@ -41,18 +49,27 @@ FrameStaticState frame_static_state(const fem::FrameModel& model_in, const Eigen
   }
   FrameStaticState out;
   out.gravity = gravity;
-  fem::StaticOptions options;
-  options.inertia_relief = true;  // free rigid motions take the round-off imbalance only (Eq. 11.3 reports it)
-  const fem::StaticResult s = fem::solve_static(model, {}, options);
-  out.displacement = s.displacement;
-  out.applied = s.applied;
-  out.reaction = s.reaction;
-  out.free_rigid_motions = s.free_rigid_motions;
+  // Eq. 11.2 on the frame's own factor (the one the dynamic response uses: K, or
+  // K on the auxiliary supports for the rigid motions left free), no second
+  // assembly or factorisation; the free rigid motions take the round-off
+  // imbalance only (inertia relief, Eq. 11.3 reports it), as fem::solve_static's.
+  const fem::DofMap& dofs = frame.dofs();
+  out.applied = fem::applied_loads(model);  // nodal loads and the consistent loads of *DLOAD
+  Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(model.dof_count());
+  for (const fem::Constraint& c : model.constraints) prescribed(fem::kDofsPerNode * c.node + c.dof) = c.value;
+  fem::fill_slave_dofs(dofs.links, prescribed);
+  const Eigen::VectorXd rhs = fem::restrict_load(dofs, out.applied - fem::internal_force(model, prescribed));
+  const Eigen::VectorXd uf = frame.static_response(frame.relieve(rhs));
+  out.displacement = fem::expand_free(dofs, uf, prescribed);
+  Eigen::VectorXd residual_all = fem::internal_force(model, out.displacement) - out.applied;
+  fem::fold_slave_forces(dofs.links, residual_all);  // a supported reference node also carries its slaves' share (Eq. R.4)
+  out.reaction = Eigen::VectorXd::Zero(model.dof_count());
+  for (int g : dofs.constrained_dofs) out.reaction(g) = residual_all(g);
+  out.free_rigid_motions = frame.rigid_count();
 
   // Eq. 11.3: the resultant of f_s about the model's c.g., relative to W and W L.
-  const RigidBodyMass body = frame_rigid_body_mass(model);
   out.weight = body.mass * gravity.norm();
-  out.resultant = fem::rigid_body_vectors(model, body.cg).transpose() * s.applied;
+  out.resultant = fem::rigid_body_vectors(model, body.cg).transpose() * out.applied;
   Eigen::Vector3d lo = model.nodes.front().position, hi = lo;
   for (const fem::Node& n : model.nodes) {
     lo = lo.cwiseMin(n.position);
@@ -76,7 +93,7 @@ FrameStaticState frame_static_state(const fem::FrameModel& model_in, const Eigen
     for (int id : set->second) {
       const int b = model.beam_index(id);
       if (b < 0) continue;
-      for (fem::StationResult& r : fem::beam_stations(model, b, s.displacement, stations, line_loads[static_cast<std::size_t>(b)])) {
+      for (fem::StationResult& r : fem::beam_stations(model, b, out.displacement, stations, line_loads[static_cast<std::size_t>(b)])) {
         st.element_ids.push_back(r.element_id);
         st.station.push_back(r.station);
         st.points.push_back(r.point);

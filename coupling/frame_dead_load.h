@@ -31,9 +31,11 @@
 #include <string>
 #include <vector>
 
+#include "coupling/frame_balance.h"
 #include "coupling/rail_stress.h"
 #include "fem/assembly.h"
 #include "fem/frame_model.h"
+#include "fem/modal_transient.h"
 #include "fem/section_forces.h"
 
 namespace framedyn::coupling {
@@ -82,5 +84,12 @@ fem::FrameModel with_gravity(const fem::FrameModel& model, const Eigen::Vector3d
 // the stations of `outputs`. Throws core::NumericalError for a failed solve.
 FrameStaticState frame_static_state(const fem::FrameModel& model, const Eigen::Vector3d& gravity, const fem::SparseMatrix* distribution,
                                     const Eigen::VectorXd* static_components, const std::vector<RailSpec>& outputs, int stations);
+// The same on the frame as the dynamic response assembled and factorised it
+// (`frame`, its model with the supports and parts; `body` its rigid-body mass):
+// the pipeline's static state costs one solve, no assembly or factorisation
+// (issue 17). The model-only form above builds both for a single use.
+FrameStaticState frame_static_state(const fem::FrameDynamics& frame, const RigidBodyMass& body, const Eigen::Vector3d& gravity,
+                                    const fem::SparseMatrix* distribution, const Eigen::VectorXd* static_components, const std::vector<RailSpec>& outputs,
+                                    int stations);
 
 }  // namespace framedyn::coupling

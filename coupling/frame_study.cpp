@@ -12,12 +12,14 @@
 #include <tuple>
 #include <algorithm>
 #include <map>
+#include <memory>
 
 #include "core/error.h"
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
 #include "fem/quadratic_beam_element.h"
 #include "fem/section_forces.h"
+#include "fem/solver_counters.h"
 #include "fem/static_analysis.h"
 
 namespace framedyn::coupling {
@@ -54,6 +56,7 @@ const char* supports_name(FrameSupports s) {
     case FrameSupports::clamped: return "clamped";
     case FrameSupports::mesh_boundary: return "mesh_boundary";
     case FrameSupports::free_free_inertia_relief: return "free_free_inertia_relief";
+    case FrameSupports::axle_pins: return "axle_pins";
   }
   return "";
 }
@@ -120,7 +123,8 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   // dead_load in the pipeline only: the static loads come from the vehicle model.
   if (pipeline)
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
-                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load"});
+                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
+                  "compare_supports"});
   else
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
                   "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
@@ -145,17 +149,34 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   else if (supports == "clamped") r.supports = FrameSupports::clamped;
   else if (supports == "mesh_boundary") r.supports = FrameSupports::mesh_boundary;
   else if (supports == "free_free_inertia_relief" || supports == "none") r.supports = FrameSupports::free_free_inertia_relief;
-  else throw f.error("supports", "clamped, mesh_boundary, none (free_free_inertia_relief) or fixed_rear_end", quoted(supports));
+  else if (supports == "axle_pins") r.supports = FrameSupports::axle_pins;
+  else throw f.error("supports", "clamped, mesh_boundary, none (free_free_inertia_relief), axle_pins or fixed_rear_end", quoted(supports));
   // support_set: a node-set name or a list of them.
   if (f.has("support_set")) {
     const YAML::Node n = f.node()["support_set"];
     r.support_sets = n.IsSequence() ? f.strings("support_set") : std::vector<std::string>{f.text("support_set")};
     if (r.support_sets.empty()) throw f.error("support_set", "a node-set name or a list of them", "an empty list");
-    if (r.supports == FrameSupports::mesh_boundary || r.supports == FrameSupports::free_free_inertia_relief)
+    if (r.supports == FrameSupports::mesh_boundary || r.supports == FrameSupports::free_free_inertia_relief || r.supports == FrameSupports::axle_pins)
       throw f.error("support_set", "support_set only with supports: clamped or fixed_rear_end (the node sets they clamp)",
                     "supports: " + supports);
   } else if (r.supports == FrameSupports::clamped) {
     throw f.error("supports", "supports: clamped with support_set naming the node set(s) to clamp", "no support_set");
+  }
+  // Supports compared in the same run (pipeline only: the key is refused elsewhere).
+  if (f.has("compare_supports")) {
+    const YAML::Node n = f.node()["compare_supports"];
+    const std::vector<std::string> names = n.IsSequence() ? f.strings("compare_supports") : std::vector<std::string>{f.text("compare_supports")};
+    for (const std::string& name : names) {
+      FrameSupports c;
+      if (name == "none" || name == "free_free_inertia_relief") c = FrameSupports::free_free_inertia_relief;
+      else if (name == "axle_pins") c = FrameSupports::axle_pins;
+      else if (name == "fixed_rear_end") c = FrameSupports::fixed_rear_end;
+      else throw f.error("compare_supports", "a list of supports among none, axle_pins and fixed_rear_end", quoted(name));
+      if (c == r.supports || std::find(r.compare_supports.begin(), r.compare_supports.end(), c) != r.compare_supports.end())
+        throw f.error("compare_supports", "supports other than the run's own (supports: " + supports + ") and each once",
+                      quoted(name) + (c == r.supports ? ", the run's own support" : " twice"));
+      r.compare_supports.push_back(c);
+    }
   }
   // Output sets. Without the key: the pipeline's two rails, or none.
   if (!pipeline) r.rails.clear();
@@ -303,10 +324,38 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
   return model;
 }
 
+namespace {
+
+// supports: axle_pins (docs/theory/coupling.md, section 12): the six DOFs that
+// hold the frame where the machine does, statically determinately (3-2-1): the
+// rear axle pin's three translations (the rear axle is rigid with the frame),
+// the front axle pin's lateral and vertical translation (the front axle rolls
+// about its pin, so the pin takes no roll moment; with the rear pin they fix
+// pitch and yaw), and the leveling cylinder's vertical translation (roll); a
+// mesh without the cylinder's node set holds roll at the rear axle pin (RX).
+// The pins are the mesh's load-point node sets (the vehicle model's points 25-27).
+std::vector<int> axle_pin_supports(const fem::FrameModel& model, const FrameStudyRequest& q) {
+  const auto node_of = [&](const char* set_name) {
+    const auto set = model.node_sets.find(set_name);
+    return set == model.node_sets.end() || set->second.empty() ? -1 : set->second.front();
+  };
+  const int rear = node_of("P26_REAR_AXLE_PIN"), front = node_of("P25_FRONT_AXLE_PIN"), cylinder = node_of("P27_LEVELING_CYLINDER");
+  if (rear < 0 || front < 0)
+    throw core::InputError(q.where("supports"),
+                           "node sets P26_REAR_AXLE_PIN and P25_FRONT_AXLE_PIN in the mesh " + q.mesh.string() +
+                               " (where supports: axle_pins holds the frame; supports: none needs no node set)",
+                           fmt::format("no node set {}", rear < 0 ? "P26_REAR_AXLE_PIN" : "P25_FRONT_AXLE_PIN"));
+  constexpr int k = fem::kDofsPerNode;
+  return {k * rear + 0, k * rear + 1, k * rear + 2, k * front + 1, k * front + 2, cylinder >= 0 ? k * cylinder + 2 : k * rear + 3};
+}
+
+}  // namespace
+
 FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, const LoadHistory* static_loads,
                                   std::optional<double> rigid_steady_from) {
   const auto start = std::chrono::steady_clock::now();
   FrameStudyResults out;
+  const fem::SolverCounts counts_before = fem::solver_counts();
   out.model = read_frame_mesh(q);
   fem::FrameModel& model = out.model;
   const std::string mesh_name = q.mesh.string();
@@ -326,7 +375,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
                                  "(free-free)",
                              "no *BOUNDARY in the mesh");
   } else if (!model.constraints.empty()) {
-    throw core::InputError(q.where("supports"), "a mesh without *BOUNDARY for free_free_inertia_relief",
+    throw core::InputError(q.where("supports"), fmt::format("a mesh without *BOUNDARY for {}", supports_name(q.supports)),
                            fmt::format("{} constrained DOFs in {}", model.constraints.size(), mesh_name));
   }
   // The output sets, before the solve: a misspelt name costs no run.
@@ -369,9 +418,18 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   // node): their nodes are numbered after the mesh's, so the distribution gains zero rows for them.
   out.parts = mount_frame_parts(model, q.parts, mesh_name);
   out.mapping.distribution.conservativeResize(model.dof_count(), out.mapping.distribution.cols());
-  out.mass = frame_rigid_body_mass(model);
+  out.mass = frame_rigid_body_mass(model);  // M alone over all DOFs (supports freed): the one mass-only assembly
 
-  fem::FrameDynamics frame(model);
+  // One assembly of K and M and one factorisation of the frame per run (issue 17):
+  // the modes (dense, or the Lanczos on this K and M), the dynamic response
+  // (mode acceleration's static correction) and the static state all use them.
+  // Factorisations that remain are of other matrices: K - sigma M and M for
+  // the shift-invert Lanczos of `modes: N` (and its Sturm counts), and the
+  // Newmark matrix K + a0 M + a1 C of `method: direct`.
+  if (q.supports == FrameSupports::axle_pins) out.pin_supports = axle_pin_supports(model, q);
+  const std::unique_ptr<const fem::FrameDynamics> assembled =
+      out.pin_supports.empty() ? std::make_unique<const fem::FrameDynamics>(model) : std::make_unique<const fem::FrameDynamics>(model, out.pin_supports);
+  const fem::FrameDynamics& frame = *assembled;
   const int rigid_count = frame.rigid_count();  // free-free 6, supported 0, partially supported between
   out.free_rigid_motions = rigid_count;
   fem::ModalBasis basis;
@@ -384,7 +442,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     if (mo.mode_count >= frame.dofs().free_count())
       throw core::InputError(q.where("modes"), fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - rigid_count),
                              std::to_string(q.modes));
-    basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, mo));
+    basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, frame.dofs(), frame.system(), mo));
   }
 
   // The lowest elastic shapes on all DOFs (rigid-link slaves included), for the mode-shape figure.
@@ -461,7 +519,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
       if (!same) throw std::logic_error("the static loads are not at the load history's points");
       components = static_loads->component_matrix().col(0);
     }
-    out.static_state = frame_static_state(model, q.gravity, static_loads ? &out.mapping.distribution : nullptr, static_loads ? &components : nullptr,
+    out.static_state = frame_static_state(frame, out.mass, q.gravity, static_loads ? &out.mapping.distribution : nullptr, static_loads ? &components : nullptr,
                                           q.rails, q.stations);
     for (const StaticStations& st : out.static_state->outputs) static_stress.push_back(st.fiber_stress);
   }
@@ -498,6 +556,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     }
   }
   out.hot_spots = find_hot_spots(out.stress, steady_window(rigid_steady_from, q.steady_from, out.response.times), 10, &out.static_forces);
+  out.solver_counts = fem::solver_counts() - counts_before;
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -8,7 +8,7 @@
 //   frame:
 //     mesh: meshes/r100_frame.inp          # path relative to the study file
 //     loads: offset_plowing_loads.csv      # load-history file (coupling/load_history.h)
-//     supports: clamped                    # clamped | mesh_boundary | none (= free_free_inertia_relief) | fixed_rear_end
+//     supports: clamped                    # clamped | mesh_boundary | none (= free_free_inertia_relief) | axle_pins | fixed_rear_end
 //     support_set: REAR_END                # node set(s) clamped (a name or a list)
 //     modes: 20                            # elastic modes, or "all"
 //     method: mode_acceleration            # mode_displacement | mode_acceleration | direct
@@ -24,6 +24,7 @@
 //     stress_histories: hot_spots          # none | hot_spots | all: frame_stress_histories.csv
 //     yield_strength: 36000                # stress: warn when a von Mises stress exceeds it
 //     dead_load: true                      # pipeline only: static state (gravity, static loads) + dynamic
+//     compare_supports: [fixed_rear_end]   # pipeline only: the same loads on further supports, side by side
 //
 // Defaults: a `frame-response` study (read_frame_study) is supported by the
 // mesh's own *BOUNDARY and has no output sets unless it names them; the
@@ -58,6 +59,7 @@
 #include "coupling/yaml_input.h"
 #include "fem/direct_integration.h"
 #include "fem/frame_model.h"
+#include "fem/solver_counters.h"
 #include "fem/modal_transient.h"
 
 namespace framedyn::coupling {
@@ -67,6 +69,9 @@ enum class FrameSupports {
   clamped,                   // the same on any mesh: all six DOFs of the support sets fixed
   mesh_boundary,             // the mesh's own *BOUNDARY only
   free_free_inertia_relief,  // no supports ("none"); loads relieved by the rigid-body inertia (Eq. T.9)
+  axle_pins,                 // held where the machine holds it: the same inertia relief, its statically determinate
+                             // auxiliary supports at the rear axle pin, the front axle pin and the leveling cylinder
+                             // (docs/theory/coupling.md, section 12)
 };
 
 // The defaults of keys a `frame` block leaves out.
@@ -86,6 +91,11 @@ struct FrameStudyRequest {
   // The members' defaults are the pipeline's (a request built in code is a trencher frame's).
   FrameSupports supports = FrameSupports::fixed_rear_end;
   std::vector<std::string> support_sets = {"REAR_END"};  // node sets clamped by fixed_rear_end / clamped
+  // Pipeline only (frame_response.compare_supports): further supports the same
+  // run's loads are applied on, each a study of its own (its own assembly and
+  // factorisation), for the envelopes side by side and their peaks in the
+  // summary (none, axle_pins, fixed_rear_end). Default: none compared.
+  std::vector<FrameSupports> compare_supports;
   int modes = -1;                            // elastic modes used; -1: all (dense eigensolution)
   FrameMethod method = FrameMethod::mode_acceleration;
   fem::ModalDamping damping = fem::ModalDamping::ratio(0.02);
@@ -153,11 +163,19 @@ struct FrameStudyResults {
   std::vector<NodalHistory> nodal;           // the node-set outputs, in request.node_outputs' order
   std::vector<SectionHistory> sections;      // per element-set output with history (empty entries otherwise)
   double wall_seconds = 0.0;
+  // Assemblies and factorisations during the run (fem/solver_counters.h): one
+  // assembly of K and M, one mass-only assembly (the rigid-body mass) and one
+  // factorisation with modes: all (more for modes: N or method: direct, whose
+  // K - sigma M, M and Newmark matrices are other matrices than K).
+  fem::SolverCounts solver_counts;
   // The mesh's loads applied as constant loads (mesh_loads: constant), all
   // DOFs (N, N m); empty when none acted.
   Eigen::VectorXd constant_load;
   int constant_cloads = 0, constant_dloads = 0;  // *CLOAD entries (GRAV on masses among them), beams with *DLOAD
   int free_rigid_motions = 0;                    // rigid motions the supports leave free (relieved, docs/theory/fem.md section 19)
+  // supports: axle_pins: the six DOFs that hold the frame statically determinately (global DOF numbers,
+  // node * 6 + dof; section 12); empty otherwise (free-free's own 3-2-1 choice is internal to the solver).
+  std::vector<int> pin_supports;
   // With request.dead_load: the static state (gravity and the static loads),
   // whose section forces per output station the section-stress code takes.
   std::optional<FrameStaticState> static_state;

@@ -2,6 +2,7 @@
 #include "fem/assembly.h"
 
 #include "fem/quadratic_beam_element.h"
+#include "fem/solver_counters.h"
 
 #include <fmt/format.h>
 
@@ -201,67 +202,69 @@ SparseMatrix from_triplets(int n, Triplets& t) {
   return m;
 }
 
+// K (stiffness) or M on the free DOFs, element by element.
+SparseMatrix build(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options, bool stiffness) {
+  const std::size_t per_element = options.storage == Storage::lower ? 78 : 144;
+  Triplets t;
+  t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
+  ElementGeometries geometry(model);
+  QuadraticSections quadratic(model);
+  for (const BeamElement& beam : model.beams) {
+    if (beam.is_quadratic()) {
+      const SectionGeometry& s = quadratic(beam);
+      const Matrix18d global = stiffness ? quadratic_beam_stiffness(model, beam, s) : quadratic_beam_mass(model, beam, s, options.mass);
+      scatter<18>(t, global, quadratic_beam_dofs(beam), dofs, options.storage);
+      continue;
+    }
+    const BeamGeometry& g = geometry(beam);
+    const Matrix12d tr = beam_transformation(g.axes);
+    const Matrix12d local = stiffness ? beam_local_stiffness(g.data) : beam_local_mass(g.data, options.mass);
+    const Matrix12d global = tr.transpose() * local * tr;
+    scatter<12>(t, global, element_dofs(beam), dofs, options.storage);
+  }
+  if (stiffness) {
+    for (const Spring& s : model.springs) {
+      const int ga = kDofsPerNode * s.node_a + s.dof_a;
+      if (s.node_b < 0) {
+        scatter<1>(t, Eigen::Matrix<double, 1, 1>::Constant(s.stiffness), {ga}, dofs, options.storage);
+      } else {
+        Eigen::Matrix2d k;
+        k << s.stiffness, -s.stiffness, -s.stiffness, s.stiffness;
+        scatter<2>(t, k, {ga, kDofsPerNode * s.node_b + s.dof_b}, dofs, options.storage);
+      }
+    }
+  } else {
+    for (const PointMass& pm : model.point_masses) {
+      Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+      m.topLeftCorner<3, 3>().diagonal().setConstant(pm.mass);
+      m.bottomRightCorner<3, 3>() = pm.rotary_inertia;
+      std::array<int, 6> d{};
+      for (int i = 0; i < 6; ++i) d[static_cast<std::size_t>(i)] = kDofsPerNode * pm.node + i;
+      scatter<6>(t, m, d, dofs, options.storage);
+    }
+  }
+  return from_triplets(dofs.free_count(), t);
+}
+
 }  // namespace
 
 FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options) {
-  const int n = dofs.free_count();
-  const std::size_t per_element = options.storage == Storage::lower ? 78 : 144;
+  internal::count_system_assembly();
   FreeSystem sys;
   // K and M one after the other, so only one triplet list is alive at a time.
   // K and M are independent: build them on two threads (each writes only its
   // own matrix, so the result does not depend on scheduling). An exception in
   // the mass thread is carried over and rethrown here.
-  auto build = [&](bool stiffness) {
-    Triplets t;
-    t.reserve(per_element * model.beams.size() + 36 * model.point_masses.size() + 4 * model.springs.size());
-    ElementGeometries geometry(model);
-    QuadraticSections quadratic(model);
-    for (const BeamElement& beam : model.beams) {
-      if (beam.is_quadratic()) {
-        const SectionGeometry& s = quadratic(beam);
-        const Matrix18d global = stiffness ? quadratic_beam_stiffness(model, beam, s) : quadratic_beam_mass(model, beam, s, options.mass);
-        scatter<18>(t, global, quadratic_beam_dofs(beam), dofs, options.storage);
-        continue;
-      }
-      const BeamGeometry& g = geometry(beam);
-      const Matrix12d tr = beam_transformation(g.axes);
-      const Matrix12d local = stiffness ? beam_local_stiffness(g.data) : beam_local_mass(g.data, options.mass);
-      const Matrix12d global = tr.transpose() * local * tr;
-      scatter<12>(t, global, element_dofs(beam), dofs, options.storage);
-    }
-    if (stiffness) {
-      for (const Spring& s : model.springs) {
-        const int ga = kDofsPerNode * s.node_a + s.dof_a;
-        if (s.node_b < 0) {
-          scatter<1>(t, Eigen::Matrix<double, 1, 1>::Constant(s.stiffness), {ga}, dofs, options.storage);
-        } else {
-          Eigen::Matrix2d k;
-          k << s.stiffness, -s.stiffness, -s.stiffness, s.stiffness;
-          scatter<2>(t, k, {ga, kDofsPerNode * s.node_b + s.dof_b}, dofs, options.storage);
-        }
-      }
-    } else {
-      for (const PointMass& pm : model.point_masses) {
-        Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
-        m.topLeftCorner<3, 3>().diagonal().setConstant(pm.mass);
-        m.bottomRightCorner<3, 3>() = pm.rotary_inertia;
-        std::array<int, 6> d{};
-        for (int i = 0; i < 6; ++i) d[static_cast<std::size_t>(i)] = kDofsPerNode * pm.node + i;
-        scatter<6>(t, m, d, dofs, options.storage);
-      }
-    }
-    return from_triplets(n, t);
-  };
   std::exception_ptr mass_error;
   std::thread mass_thread([&] {
     try {
-      sys.mass = build(false);
+      sys.mass = build(model, dofs, options, false);
     } catch (...) {
       mass_error = std::current_exception();
     }
   });
   try {
-    sys.stiffness = build(true);
+    sys.stiffness = build(model, dofs, options, true);
   } catch (...) {
     mass_thread.join();
     throw;
@@ -269,6 +272,11 @@ FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyO
   mass_thread.join();
   if (mass_error) std::rethrow_exception(mass_error);
   return sys;
+}
+
+SparseMatrix assemble_mass(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options) {
+  internal::count_mass_assembly();
+  return build(model, dofs, options, false);
 }
 
 Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u) {

@@ -54,6 +54,8 @@ struct FreeSystem {
   SparseMatrix mass;
 };
 FreeSystem assemble(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options = {});
+// M_ff alone (rigid-body mass bookkeeping: no stiffness is built).
+SparseMatrix assemble_mass(const FrameModel& model, const DofMap& dofs, const AssemblyOptions& options = {});
 
 // f = K u over all DOFs (u and f of length model.dof_count()), element by element.
 Eigen::VectorXd internal_force(const FrameModel& model, const Eigen::VectorXd& u);

@@ -363,7 +363,12 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   if (options.mode_count < 1) throw std::invalid_argument("the number of modes must be at least 1");
   const DofMap dofs = make_dof_map(model);
   if (options.progress) options.progress(fmt::format("assembling {} beam elements ({} free DOFs)", model.beams.size(), dofs.free_count()));
-  FreeSystem sys = assemble(model, dofs, {options.mass, Storage::lower});
+  const FreeSystem sys = assemble(model, dofs, {options.mass, Storage::lower});
+  return compute_modes(model, dofs, sys, options);
+}
+
+ModalResult compute_modes(const FrameModel& model, const DofMap& dofs, const FreeSystem& sys, const ModalOptions& options) {
+  if (options.mode_count < 1) throw std::invalid_argument("the number of modes must be at least 1");
 
   const std::vector<int> massless = massless_dofs(model, dofs, sys.mass);
   if (!massless.empty()) {
@@ -414,7 +419,7 @@ ModalResult compute_modes(const FrameModel& model, const ModalOptions& options) 
   all.free_index.resize(static_cast<std::size_t>(model.dof_count()));
   std::iota(all.free_index.begin(), all.free_index.end(), 0);
   all.free_dofs = all.free_index;
-  const SparseMatrix mass_all = assemble(model, all, {options.mass, Storage::lower}).mass;
+  const SparseMatrix mass_all = assemble_mass(model, all, {options.mass, Storage::lower});
   const Eigen::MatrixXd r_all = rigid_body_vectors(model, options.reference_point);
   const Eigen::MatrixXd mr_all = mass_all.selfadjointView<Eigen::Lower>() * r_all;
   result.total_mass = (r_all.transpose() * mr_all).diagonal();

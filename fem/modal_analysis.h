@@ -128,5 +128,12 @@ struct ModalResult {
 // motion), a solve that did not converge or a set that could not be
 // certified, each with what to check.
 ModalResult compute_modes(const FrameModel& model, const ModalOptions& options = {});
+// The same on K and M already assembled (lower triangles on `dofs`, with
+// options.mass's formulation): a caller that holds the assembled frame
+// (fem::FrameDynamics) does not assemble it again. The shift-invert Lanczos
+// still factorises K - sigma M (and M): matrices other than K, which a static
+// solve's factor cannot stand in for (sigma < 0 keeps the free-free K - sigma M
+// positive definite).
+ModalResult compute_modes(const FrameModel& model, const DofMap& dofs, const FreeSystem& sys, const ModalOptions& options = {});
 
 }  // namespace framedyn::fem

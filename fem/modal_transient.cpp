@@ -115,6 +115,19 @@ ModalBasis modal_basis(const DofMap& dofs, const ModalResult& modes) {
 FrameDynamics::FrameDynamics(const FrameModel& model, MassFormulation mass) : model_(model) {
   dofs_ = make_dof_map(model);
   system_ = assemble(model, dofs_, {mass, Storage::lower});
+  set_up({});
+}
+
+FrameDynamics::FrameDynamics(const FrameModel& model, const std::vector<int>& auxiliary_dofs, MassFormulation mass) : model_(model) {
+  if (auxiliary_dofs.size() != 6) throw std::invalid_argument("FrameDynamics: six auxiliary supports are needed");
+  dofs_ = make_dof_map(model);
+  system_ = assemble(model, dofs_, {mass, Storage::lower});
+  set_up(auxiliary_dofs);
+  if (!free_free_) throw core::NumericalError("auxiliary supports of the caller's choice are for a free-free frame, and this one is supported");
+}
+
+void FrameDynamics::set_up(const std::vector<int>& requested) {
+  const FrameModel& model = model_;
   bool grounded = !model.constraints.empty();
   for (const Spring& s : model.springs) grounded = grounded || s.node_b < 0;
   free_free_ = !grounded;
@@ -155,6 +168,27 @@ FrameDynamics::FrameDynamics(const FrameModel& model, MassFormulation mass) : mo
   rigid_ = r * linv_t;
   mass_rigid_ = mr * linv_t;
 
+  if (!requested.empty()) {
+    // The caller's six supports: statically determinate when the rigid motions' values there determine the motion,
+    // i.e. the 6 x 6 rows of R are regular (relative to R's own scale).
+    Eigen::Matrix<double, 6, 6> at;
+    for (int q = 0; q < 6; ++q) {
+      const int g = requested[static_cast<std::size_t>(q)];
+      const int e = g >= 0 && g < model.dof_count() ? dofs_.free_index[static_cast<std::size_t>(g)] : -1;
+      if (e < 0) throw core::NumericalError(fmt::format("the auxiliary support at {} is not a free DOF of the frame", model.describe_dof(std::max(g, 0))));
+      at.row(q) = rigid_.row(e);
+      auxiliary_.push_back(e);
+    }
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>> svd(at);
+    if (!(svd.singularValues()(5) > 1e-8 * svd.singularValues()(0)))
+      throw core::NumericalError("the six auxiliary supports leave a rigid motion of the free-free frame free (not statically determinate)");
+    std::sort(auxiliary_.begin(), auxiliary_.end());
+    if (std::adjacent_find(auxiliary_.begin(), auxiliary_.end()) != auxiliary_.end())
+      throw core::NumericalError("an auxiliary support is given twice");
+    if (!static_solver_->factorize(with_auxiliary_supports(system_.stiffness, auxiliary_)))
+      throw core::NumericalError("the free-free frame on its auxiliary supports is still a mechanism (disconnected parts?)");
+    return;
+  }
   // Auxiliary supports, statically determinate (3-2-1, Eq. T.11): the three
   // translations of node A, and the three DOFs of nodes B (farthest from A)
   // and C (farthest from the line AB) that best fix the remaining rotations.

@@ -84,6 +84,14 @@ enum class ResponseMethod {
 class FrameDynamics {
  public:
   explicit FrameDynamics(const FrameModel& model, MassFormulation mass = MassFormulation::consistent);
+  // A free-free frame with its auxiliary supports chosen by the caller: six
+  // global DOFs (node * 6 + dof) that hold it statically determinately (e.g.
+  // where the machine holds it: coupling's supports: axle_pins). Inertia relief
+  // leaves no reaction at any statically determinate support, so the elastic
+  // response is the same as with the 3-2-1 choice, to solver round-off
+  // (docs/theory/coupling.md, section 12). Throws NumericalError when the
+  // model is not free-free or the six DOFs leave a rigid motion free.
+  FrameDynamics(const FrameModel& model, const std::vector<int>& auxiliary_dofs, MassFormulation mass = MassFormulation::consistent);
   ~FrameDynamics();
   FrameDynamics(const FrameDynamics&) = delete;
   FrameDynamics& operator=(const FrameDynamics&) = delete;
@@ -125,6 +133,7 @@ class FrameDynamics {
   Eigen::VectorXd stiffness_times(const Eigen::VectorXd& x) const;
 
  private:
+  void set_up(const std::vector<int>& auxiliary_dofs);
   void set_up_partial_supports(const Eigen::MatrixXd& rigid_free);
   const FrameModel& model_;
   DofMap dofs_;

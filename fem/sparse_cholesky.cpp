@@ -1,6 +1,8 @@
 // CHOLMOD behind a narrow interface (see sparse_cholesky.h).
 #include "fem/sparse_cholesky.h"
 
+#include "fem/solver_counters.h"
+
 #include <cholmod.h>
 
 #include <cmath>
@@ -40,6 +42,7 @@ SparseCholesky::~SparseCholesky() = default;
 
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower) {
   if (!lower.isCompressed()) throw std::invalid_argument("SparseCholesky: matrix must be compressed");
+  internal::count_factorisation();
   cholmod_sparse a{};
   a.nrow = static_cast<size_t>(lower.rows());
   a.ncol = static_cast<size_t>(lower.cols());
@@ -136,6 +139,7 @@ SparseCholesky::ExplicitFactor SparseCholesky::explicit_factor() const {
 
 Inertia ldlt_inertia(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& lower) {
   if (!lower.isCompressed()) throw std::invalid_argument("ldlt_inertia: matrix must be compressed");
+  internal::count_factorisation();
   cholmod_common c;
   cholmod_start(&c);
   c.print = 0;

@@ -377,6 +377,10 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
     supported.erase(std::unique(supported.begin(), supported.end()), supported.end());
     const char* meaning = q.supports == FrameSupports::free_free_inertia_relief
                               ? "no supports: the loads are balanced by the frame model's rigid-body inertia (inertia relief)"
+                          : q.supports == FrameSupports::axle_pins
+                              ? "held statically determinately at the axle pins and the leveling cylinder, the loads (the pins' forces "
+                                "included) balanced by the frame model's rigid-body inertia: the pins take no further reaction and the "
+                                "stresses are those of supports: none (docs/theory/coupling.md, section 12)"
                           : clamp ? "all six DOFs of the support nodes fixed: a support the moving machine does not have (thesis parity)"
                                   : "the mesh's own *BOUNDARY (the supports the mesh's author gave)";
     j["support"] = {{"kind", coupling::supports_name(q.supports)},
@@ -384,6 +388,11 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
                     {"nodes", supported},
                     {"artificial", clamp},
                     {"meaning", meaning}};
+    if (!r.pin_supports.empty()) {
+      std::vector<std::string> held;
+      for (int g : r.pin_supports) held.push_back(r.model.describe_dof(g));
+      j["support"]["held_at"] = held;  // the auxiliary supports, each with no reaction (section 12)
+    }
   }
   // Every load applied to the frame model: where it is, how it reaches the mesh, its largest force and moment.
   ordered_json points = ordered_json::array();
@@ -428,7 +437,7 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
                            {"meaning", "the mesh's *CLOAD and *DLOAD act at every time, added to the load history; the response starts from the "
                                        "static equilibrium under them and the history's first row"}};
   }  // absent: no constant load acted (a null would read as a broken-down number)
-  if (r.free_rigid_motions > 0 && q.supports != coupling::FrameSupports::free_free_inertia_relief)
+  if (r.free_rigid_motions > 0 && q.supports != coupling::FrameSupports::free_free_inertia_relief && q.supports != coupling::FrameSupports::axle_pins)
     j["free_rigid_motions"] = {{"count", r.free_rigid_motions},
                                {"meaning", "the supports leave these rigid motions free: the loads are relieved by their inertia and the "
                                            "displacements are the elastic part (as for supports: none)"}};

@@ -453,6 +453,12 @@ std::vector<Row> rows() {
       frame_row("STUDY-45", "  mesh: frame.inp\n", "", "  loads:", "frame.mesh"),
       frame_row("STUDY-46", "mesh: frame.inp", "mesh: frame_v2.inp", "mesh:", "frame.mesh"),
       frame_row("STUDY-47", "supports: fixed_rear_end", "supports: pinned", "supports:", "frame.supports"),
+      [] {  // supports: axle_pins on a mesh without the rear axle pin's node set (docs/theory/coupling.md section 12)
+        const std::string text = edit(kFrameStudy, "supports: fixed_rear_end", "supports: axle_pins");
+        return Row{"STUDY-126",
+                   {{"study.yaml", text}, {"frame.inp", edit(shipped_frame(), "*NSET, NSET=P26_REAR_AXLE_PIN\n50\n", "")}, {"loads.csv", kLoads}},
+                   "frame-response study.yaml --out results", at("study.yaml", text, "supports:", "frame.supports")};
+      }(),
       frame_row("STUDY-48", "method: mode_displacement", "method: modal", "method:", "frame.method"),
       frame_row("STUDY-49", "modes: 4", "modes: 0", "modes:", "frame.modes"),
       frame_row("STUDY-50", "modal_ratio: 0.02", "modal_ratio: 1.5", "damping:", "frame.damping.modal_ratio"),
@@ -502,6 +508,18 @@ std::vector<Row> rows() {
                                       "frame_response: {mesh: frame.inp, mesh_loads: constant}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
         return Row{"STUDY-106", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
                    at("study.yaml", text, "mesh_loads", "frame_response.mesh_loads")};
+      }(),
+      [] {  // a support to compare that the pipeline does not know
+        const std::string text = edit(kStudy3D, "analysis:\n",
+                                      "frame_response: {mesh: frame.inp, compare_supports: [clamp]}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-127", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "compare_supports", "frame_response.compare_supports")};
+      }(),
+      [] {  // the run's own support compared with itself
+        const std::string text = edit(kStudy3D, "analysis:\n",
+                                      "frame_response: {mesh: frame.inp, supports: none, compare_supports: [fixed_rear_end, none]}\nanalysis:\n  response: {duration: 0.01, output_interval: 0.001}\n");
+        return Row{"STUDY-128", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
+                   at("study.yaml", text, "compare_supports", "frame_response.compare_supports")};
       }(),
       // ---- a frame part's mounts on the frame mesh (coupling/rigid_study_3d.cpp, frame_parts.cpp)
       mounts_row("STUDY-110", "[12, left]", "frame.parts[1].mounts[1]"),

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "core/error.h"
@@ -114,7 +115,7 @@ TEST(FrameStudyInput, StrictErrorsNameKeyAndLine) {
   };
   EXPECT_NE(error_of("  method: modal\n").find("frame.method"), std::string::npos);
   EXPECT_NE(error_of("  mthod: direct\n").find("mthod"), std::string::npos);
-  EXPECT_NE(error_of("  supports: pinned\n").find("clamped, mesh_boundary, none (free_free_inertia_relief) or fixed_rear_end"), std::string::npos);
+  EXPECT_NE(error_of("  supports: pinned\n").find("clamped, mesh_boundary, none (free_free_inertia_relief), axle_pins or fixed_rear_end"), std::string::npos);
   EXPECT_NE(error_of("  supports: clamped\n").find("frame.supports: expected supports: clamped with support_set"), std::string::npos);
   EXPECT_NE(error_of("  method: direct\n  damping: {modal_ratio: 0.02}\n").find("rayleigh"), std::string::npos);
   EXPECT_NE(error_of("  modes: 0\n").find("frame.modes"), std::string::npos);
@@ -160,3 +161,89 @@ TEST(FrameStudy, HotSpotsTakeTheSteadyStartInOrderAndMatchARecomputationFromTheD
 }
 
 }  // namespace
+
+namespace {
+
+// The load file's history as a request built in code (R-100-like frame, free-free, dead load on: the pipeline's path).
+coupling::FrameStudyRequest pipeline_request(const framedyn::testing::TempDir& dir, coupling::FrameSupports supports) {
+  coupling::FrameStudyRequest q;
+  q.file = (dir / "study.yaml").string();
+  q.units = core::UnitSystem::from_name("in-lbf-s");
+  q.mesh = std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp";
+  q.loads = dir / "loads.csv";
+  q.supports = supports;
+  q.support_sets = {"REAR_END"};
+  q.modes = -1;  // all: the pipeline's (examples/offset_plowing.yaml)
+  q.dead_load = true;
+  q.output_interval = 0.01;
+  return q;
+}
+
+double largest_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).cwiseAbs().maxCoeff(); }
+
+}  // namespace
+
+// Issue 17: the modes, the dynamic response (mode acceleration's static
+// correction) and the static state share one assembly of K and M and one
+// factorisation per support; the rigid-body mass is one mass-only assembly.
+// Counted by fem/solver_counters.h, not timed.
+TEST(FrameStudy, OnePipelineRunAssemblesAndFactorisesTheFrameOncePerSupport) {
+  framedyn::testing::TempDir dir;
+  dir.write("loads.csv", load_file());
+  for (const coupling::FrameSupports s : {coupling::FrameSupports::free_free_inertia_relief, coupling::FrameSupports::fixed_rear_end,
+                                          coupling::FrameSupports::axle_pins}) {
+    const coupling::FrameStudyResults r = coupling::run_frame_study(pipeline_request(dir, s));
+    ASSERT_TRUE(r.static_state) << coupling::supports_name(s);
+    EXPECT_EQ(r.solver_counts.system_assemblies, 1) << coupling::supports_name(s);
+    EXPECT_EQ(r.solver_counts.factorisations, 1) << coupling::supports_name(s);
+    EXPECT_EQ(r.solver_counts.mass_assemblies, 1) << coupling::supports_name(s);
+  }
+  // modes: N adds the shift-invert Lanczos's own matrices (K - sigma M, M, the Sturm count's LDL^T), never a second K.
+  coupling::FrameStudyRequest q = pipeline_request(dir, coupling::FrameSupports::free_free_inertia_relief);
+  q.modes = 12;
+  const coupling::FrameStudyResults r = coupling::run_frame_study(q);
+  std::printf("[ measured ] modes: 12: %ld system assemblies, %ld mass assemblies, %ld factorisations\n", r.solver_counts.system_assemblies,
+              r.solver_counts.mass_assemblies, r.solver_counts.factorisations);
+  EXPECT_EQ(r.solver_counts.system_assemblies, 1);
+  EXPECT_EQ(r.solver_counts.mass_assemblies, 2);  // the rigid-body mass and compute_modes' total mass over all DOFs (Eq. 7.4)
+  EXPECT_GE(r.solver_counts.factorisations, 4);   // K on the auxiliary supports, K - sigma M, M, at least one Sturm count
+}
+
+// Section 12 of docs/theory/coupling.md: inertia relief leaves no reaction at a
+// statically determinate support, so holding the free-free frame at the axle
+// pins instead of the solver's 3-2-1 choice changes no stress, static or dynamic
+// (the vehicle model's pin forces are loads on the frame model, as under none).
+TEST(FrameStudy, AxlePinsGiveTheStressesOfFreeFreeInertiaReliefToSolverTolerance) {
+  framedyn::testing::TempDir dir;
+  dir.write("loads.csv", load_file());
+  const coupling::FrameStudyResults none = coupling::run_frame_study(pipeline_request(dir, coupling::FrameSupports::free_free_inertia_relief));
+  const coupling::FrameStudyResults pins = coupling::run_frame_study(pipeline_request(dir, coupling::FrameSupports::axle_pins));
+  ASSERT_EQ(pins.pin_supports.size(), 6u);
+  EXPECT_EQ(pins.free_rigid_motions, 6);
+  // The pins: rear axle pin (node 50) UX UY UZ, front axle pin (node 47) UY UZ, leveling cylinder (node 41) UZ.
+  EXPECT_EQ(pins.model.nodes[static_cast<std::size_t>(pins.pin_supports[0] / 6)].id, 50);
+  EXPECT_EQ(pins.model.nodes[static_cast<std::size_t>(pins.pin_supports[3] / 6)].id, 47);
+  EXPECT_EQ(pins.model.nodes[static_cast<std::size_t>(pins.pin_supports[5] / 6)].id, 41);
+  ASSERT_EQ(none.rails.size(), pins.rails.size());
+  for (std::size_t k = 0; k < none.rails.size(); ++k) {
+    const coupling::RailRecovery &a = none.rails[k], &b = pins.rails[k];
+    const double scale = a.envelope_normal_stress.cwiseAbs().maxCoeff();
+    const double dynamic = largest_difference(a.envelope_normal_stress, b.envelope_normal_stress);
+    const double total = largest_difference(a.envelope_total_normal_stress, b.envelope_total_normal_stress);
+    std::printf("[ measured ] %s: none vs axle_pins: dynamic envelope %.2e, total %.2e of %.4g Pa\n", a.spec.name.c_str(), dynamic, total, scale);
+    EXPECT_GT(scale, 1e5);  // the loads do stress the rails (the comparison is not of zeros)
+    EXPECT_LT(dynamic, 1e-8 * scale);
+    EXPECT_LT(total, 1e-8 * scale);
+  }
+  // The relieved loads leave the pins no reaction (Eq. T.11): the pin forces stay the vehicle model's.
+  fem::FrameModel model = coupling::read_frame_mesh(pipeline_request(dir, coupling::FrameSupports::axle_pins));
+  const fem::FrameDynamics frame(model, pins.pin_supports);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(frame.dofs().free_count());
+  f(frame.dofs().free_index[6 * 44 + 2]) = 1000.0;  // a vertical load at one node, far from the pins
+  f(frame.dofs().free_index[6 * 10 + 1]) = -400.0;
+  const Eigen::VectorXd held = frame.auxiliary_reactions(frame.relieve(f));
+  std::printf("[ measured ] pin reactions under a relieved load: %.2e N of 1000 N\n", held.cwiseAbs().maxCoeff());
+  EXPECT_LT(held.cwiseAbs().maxCoeff(), 1e-9 * 1000.0);
+  // Unrelieved, the pins do react (the test is not of a support that holds nothing).
+  EXPECT_GT(frame.auxiliary_reactions(f).cwiseAbs().maxCoeff(), 100.0);
+}
