@@ -227,7 +227,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     // frame_response.xdmf + frame_response.h5: the fields of the next output
     // time are computed on a second thread while this one writes (HDF5's
     // serial library takes one writer).
-    XdmfSeries series(folder, "frame_response", m, lf);
+    XdmfSeries series(folder, "frame_response", m, lf, static_cast<int>(frames));
     std::pair<std::vector<VtuField>, std::vector<VtuField>> current;
     if (frames > 0) current = frame_fields(0);
     for (Eigen::Index j = 0; j < frames; ++j) {

@@ -131,7 +131,7 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
     // Each mode a time step (its number): one field name, so one Warp By
     // Vector and one colour map serve every mode while the time controls
     // step through them; the frequency is in modes.csv under the same number.
-    XdmfSeries series(folder, "modes", model, length_scale);
+    XdmfSeries series(folder, "modes", model, length_scale, static_cast<int>(r.shapes.cols()));
     for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) series.add(static_cast<double>(i + 1), {shape_field(i, "mode_shape")}, {});
     series.finish();
     return;

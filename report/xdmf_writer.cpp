@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <tuple>
@@ -57,7 +58,8 @@ struct XdmfSeries::State {
   std::string topology, geometry;  // the first grid's XML
   std::string grids;               // every grid's XML
   std::string mesh_attributes;     // node_id, element_id, section
-  int steps = 0;
+  int steps = 0, planned = 0;
+  std::vector<std::pair<std::string, hid_t>> series;  // per field its dataset (all steps), in the order of the first add()
 
   // A dataset of `rows` x `columns` values (columns 1: a 1-D dataset) at `path`.
   void write(const std::string& path, hid_t type, const void* data, std::size_t rows, int columns) {
@@ -86,25 +88,58 @@ struct XdmfSeries::State {
                        xml_attribute(f.name), f.components == 3 ? "Vector" : "Scalar", center, item(path, count, f.components, "Float", 8));
   }
 
-  void field(const VtuField& f, const std::string& group, const char* center, std::size_t count, std::string& xml) {
+  // Field f at the current step: row `steps` of its dataset (steps x count x
+  // components, created at the first step), named in the grid's XML by a hyperslab.
+  void field(const VtuField& f, const char* center, std::size_t count, std::string& xml) {
     if (f.values.size() != count * static_cast<std::size_t>(f.components))
       throw std::logic_error(fmt::format("XDMF field {} has {} values for {} entries", f.name, f.values.size(), count));
     for (std::size_t i = 0; i < f.values.size(); ++i)
       if (!std::isfinite(f.values[i]))
         throw core::NumericalError(fmt::format(
-            "{}: {} entry {} of {} is {}: the computation broke down before this output (a NaN or an infinity), and framedyn writes no "
+            "{}: {} entry {} of step {} is {}: the computation broke down before this output (a NaN or an infinity), and framedyn writes no "
             "file with non-finite numbers, so the run stops here. Check the inputs this quantity depends on for zero, "
             "missing or extreme values, and the response for a divergence",
-            h5_file, f.name, i / static_cast<std::size_t>(f.components), group, std::isnan(f.values[i]) ? "NaN" : "infinite"));
-    const std::string path = group + "/" + hdf5_dataset_name(f.name);
-    write(path, H5T_NATIVE_DOUBLE, f.values.data(), count, f.components);
-    xml += attribute(f, path, center, count);
+            h5_file, f.name, i / static_cast<std::size_t>(f.components), steps + 1, std::isnan(f.values[i]) ? "NaN" : "infinite"));
+    const std::string path = fmt::format("/{}/{}", center[0] == 'N' ? "point" : "cell", hdf5_dataset_name(f.name));
+    const int rank = f.components == 1 ? 2 : 3;
+    const hsize_t dims[3] = {static_cast<hsize_t>(planned), count, static_cast<hsize_t>(f.components)};
+    auto at = std::find_if(series.begin(), series.end(), [&](const auto& e) { return e.first == path; });
+    if (at == series.end()) {
+      if (steps != 0) throw std::logic_error("XDMF field " + f.name + " appears after the first step");
+      const hid_t space = H5Screate_simple(rank, dims, nullptr);
+      const hid_t links = H5Pcreate(H5P_LINK_CREATE);
+      H5Pset_create_intermediate_group(links, 1);
+      const hid_t set = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, links, H5P_DEFAULT, H5P_DEFAULT);
+      H5Pclose(links);
+      H5Sclose(space);
+      if (set < 0) throw std::runtime_error(fmt::format("cannot write the HDF5 file {}: cannot create {}", h5_path.string(), path));
+      series.emplace_back(path, set);
+      at = std::prev(series.end());
+    }
+    const hsize_t start[3] = {static_cast<hsize_t>(steps), 0, 0}, block[3] = {1, count, static_cast<hsize_t>(f.components)};
+    const hid_t file_space = H5Dget_space(at->second);
+    H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, block, nullptr);
+    const hid_t memory = H5Screate_simple(rank, block, nullptr);
+    const herr_t status = H5Dwrite(at->second, H5T_NATIVE_DOUBLE, memory, file_space, H5P_DEFAULT, f.values.data());
+    H5Sclose(memory);
+    H5Sclose(file_space);
+    check(status, fmt::format("{}: {}", h5_path.string(), path));
+    // The row as XDMF 3's HDF5 controller names a slab (what libXdmf3 itself
+    // writes and ParaView's Xdmf3 readers read): file:dataset|start:stride:count:dimensions.
+    const std::string shape = f.components == 1 ? std::to_string(count) : fmt::format("{} {}", count, f.components);
+    const std::string slab = f.components == 1 ? fmt::format("{} 0:1 1:1 {}:{} {}", steps, count, planned, count)
+                                               : fmt::format("{} 0 0:1 1 1:1 {} {}:{} {} {}", steps, count, f.components, planned, count, f.components);
+    xml += fmt::format(
+        "        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n"
+        "          <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:{}|{}</DataItem>\n        </Attribute>\n",
+        xml_attribute(f.name), f.components == 3 ? "Vector" : "Scalar", center, shape, h5_file, path, slab);
   }
 };
 
-XdmfSeries::XdmfSeries(const core::ResultsFolder& folder, const std::string& name, const fem::FrameModel& model, double length_scale)
+XdmfSeries::XdmfSeries(const core::ResultsFolder& folder, const std::string& name, const fem::FrameModel& model, double length_scale, int steps)
     : s_(std::make_unique<State>()) {
   State& s = *s_;
+  s.planned = steps;
   s.folder = &folder;
   s.name = name;
   s.h5_file = name + ".h5";
@@ -163,20 +198,24 @@ XdmfSeries::XdmfSeries(const core::ResultsFolder& folder, const std::string& nam
 }
 
 XdmfSeries::~XdmfSeries() {
-  if (s_ && s_->file >= 0) H5Fclose(s_->file);
+  if (!s_) return;
+  for (const auto& e : s_->series) H5Dclose(e.second);
+  if (s_->file >= 0) H5Fclose(s_->file);
 }
 
 void XdmfSeries::add(double time, const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields) {
   State& s = *s_;
-  const std::string group = fmt::format("/step_{:05d}", s.steps);
+  if (s.steps >= s.planned) throw std::logic_error(fmt::format("XDMF series {}: more than the {} steps planned", s.name, s.planned));
   std::string xml = fmt::format("      <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_attribute(s.name));
   // The first grid holds the mesh; the others include it (FEniCS's xpointer).
-  xml += s.steps == 0 ? s.topology + s.geometry
-                      : "        <xi:include xpointer=\"xpointer(/Xdmf/Domain/Grid/Grid[1]/*[self::Topology or self::Geometry])\" />\n";
+  // and its node_id, element_id and section attributes (the light data of a
+  // step is then its time and its fields only).
   xml += fmt::format("        <Time Value=\"{}\" />\n", core::format_number(time));
-  xml += s.mesh_attributes;
-  for (const VtuField& f : point_fields) s.field(f, group, "Node", s.points, xml);
-  for (const VtuField& f : cell_fields) s.field(f, group, "Cell", s.cells, xml);
+  xml += s.steps == 0 ? s.topology + s.geometry + s.mesh_attributes
+                      : "        <xi:include xpointer=\"xpointer(/Xdmf/Domain/Grid/Grid[1]/*[self::Topology or self::Geometry or "
+                        "@Name='node_id' or @Name='element_id' or @Name='section'])\" />\n";
+  for (const VtuField& f : point_fields) s.field(f, "Node", s.points, xml);
+  for (const VtuField& f : cell_fields) s.field(f, "Cell", s.cells, xml);
   xml += "      </Grid>\n";
   s.grids += xml;
   ++s.steps;
@@ -184,6 +223,9 @@ void XdmfSeries::add(double time, const std::vector<VtuField>& point_fields, con
 
 void XdmfSeries::finish() {
   State& s = *s_;
+  if (s.steps != s.planned) throw std::logic_error(fmt::format("XDMF series {}: {} steps written of the {} planned", s.name, s.steps, s.planned));
+  for (const auto& e : s.series) H5Dclose(e.second);
+  s.series.clear();
   const herr_t closed = H5Fclose(s.file);
   s.file = -1;
   check(closed, s.h5_path.string());
