@@ -61,14 +61,29 @@ struct XdmfSeries::State {
   int steps = 0, planned = 0;
   std::vector<std::pair<std::string, hid_t>> series;  // per field its dataset (all steps), in the order of the first add()
 
+  // Creation properties without modification times, so that two runs write
+  // the same bytes (HDF5 stamps objects with their creation time by default).
+  hid_t timeless(hid_t kind) const {
+    const hid_t p = H5Pcreate(kind);
+    H5Pset_obj_track_times(p, 0);
+    return p;
+  }
+
+  void group(const char* path) {
+    const hid_t properties = timeless(H5P_GROUP_CREATE);
+    const hid_t g = H5Gcreate2(file, path, H5P_DEFAULT, properties, H5P_DEFAULT);
+    H5Pclose(properties);
+    if (g < 0) throw std::runtime_error(fmt::format("cannot write the HDF5 file {}: cannot create {}", h5_path.string(), path));
+    H5Gclose(g);
+  }
+
   // A dataset of `rows` x `columns` values (columns 1: a 1-D dataset) at `path`.
   void write(const std::string& path, hid_t type, const void* data, std::size_t rows, int columns) {
     const hsize_t dims[2] = {rows, static_cast<hsize_t>(columns)};
     const hid_t space = H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr);
-    const hid_t links = H5Pcreate(H5P_LINK_CREATE);
-    H5Pset_create_intermediate_group(links, 1);
-    const hid_t set = H5Dcreate2(file, path.c_str(), type, space, links, H5P_DEFAULT, H5P_DEFAULT);
-    H5Pclose(links);
+    const hid_t properties = timeless(H5P_DATASET_CREATE);
+    const hid_t set = H5Dcreate2(file, path.c_str(), type, space, H5P_DEFAULT, properties, H5P_DEFAULT);
+    H5Pclose(properties);
     H5Sclose(space);
     if (set < 0) throw std::runtime_error(fmt::format("cannot write the HDF5 file {}: cannot create {}", h5_path.string(), path));
     const herr_t status = rows == 0 ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
@@ -107,10 +122,9 @@ struct XdmfSeries::State {
     if (at == series.end()) {
       if (steps != 0) throw std::logic_error("XDMF field " + f.name + " appears after the first step");
       const hid_t space = H5Screate_simple(rank, dims, nullptr);
-      const hid_t links = H5Pcreate(H5P_LINK_CREATE);
-      H5Pset_create_intermediate_group(links, 1);
-      const hid_t set = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, links, H5P_DEFAULT, H5P_DEFAULT);
-      H5Pclose(links);
+      const hid_t properties = timeless(H5P_DATASET_CREATE);
+      const hid_t set = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, properties, H5P_DEFAULT);
+      H5Pclose(properties);
       H5Sclose(space);
       if (set < 0) throw std::runtime_error(fmt::format("cannot write the HDF5 file {}: cannot create {}", h5_path.string(), path));
       series.emplace_back(path, set);
@@ -153,6 +167,7 @@ XdmfSeries::XdmfSeries(const core::ResultsFolder& folder, const std::string& nam
   }
   if (s.file < 0) throw std::runtime_error("cannot create the HDF5 file " + s.h5_path.string());
 
+  for (const char* g : {"/mesh", "/point", "/cell"}) s.group(g);
   std::vector<double> xyz;
   std::vector<long long> node_ids, element_ids, sections;
   xyz.reserve(3 * s.points);

@@ -124,7 +124,7 @@ TEST_P(FrameCommands, EveryUnitOfModesStaticHarmonicAndRandomIsALabelOfTheMeshsU
   TempDir dir("unit_labels");
   write(dir / "frame.inp", cantilever(u.name()));
   write(dir / "psd.csv", "frequency [Hz],psd [1/Hz]\n1,0.01\n100,0.01\n");
-  for (const std::string& args : {std::string("modes frame.inp --modes 4 --out modes -q"), std::string("static frame.inp --out static -q"),
+  for (const std::string& args : {std::string("modes frame.inp --modes 4 --mode-shapes-csv --paraview vtu --out modes -q"), std::string("static frame.inp --out static -q"),
                                   std::string("harmonic frame.inp -f 1:100:20 -z 0.02 --no-figures --out harmonic -q"),
                                   std::string("random frame.inp --psd psd.csv -z 0.02 --no-figures --output-set TIP --out random -q")}) {
     const RunResult r = framedyn(dir, args);
