@@ -61,6 +61,18 @@ struct XdmfSeries::State {
   int steps = 0, planned = 0;
   std::vector<std::pair<std::string, hid_t>> series;  // per field its dataset (all steps), in the order of the first add()
 
+  // No NaN or infinity reaches the file (as ResultsFolder::write_text checks
+  // every text file): the message names the array, the entry and the component.
+  void refuse_non_finite(const std::vector<double>& values, int components, const std::string& what) const {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw core::NumericalError(fmt::format(
+            "{}: {}, entry {}, component {} (both counted from 0) is {}: the computation broke down before this output (a NaN or an infinity), "
+            "and framedyn writes no file with non-finite numbers, so the run stops here. Check the inputs this quantity depends on for zero, "
+            "missing or extreme values, and the response for a divergence",
+            h5_file, what, i / static_cast<std::size_t>(components), i % static_cast<std::size_t>(components), std::isnan(values[i]) ? "NaN" : "infinite"));
+  }
+
   // Creation properties without modification times, so that two runs write
   // the same bytes (HDF5 stamps objects with their creation time by default).
   hid_t timeless(hid_t kind) const {
@@ -108,13 +120,7 @@ struct XdmfSeries::State {
   void field(const VtuField& f, const char* center, std::size_t count, std::string& xml) {
     if (f.values.size() != count * static_cast<std::size_t>(f.components))
       throw std::logic_error(fmt::format("XDMF field {} has {} values for {} entries", f.name, f.values.size(), count));
-    for (std::size_t i = 0; i < f.values.size(); ++i)
-      if (!std::isfinite(f.values[i]))
-        throw core::NumericalError(fmt::format(
-            "{}: {} entry {} of step {} is {}: the computation broke down before this output (a NaN or an infinity), and framedyn writes no "
-            "file with non-finite numbers, so the run stops here. Check the inputs this quantity depends on for zero, "
-            "missing or extreme values, and the response for a divergence",
-            h5_file, f.name, i / static_cast<std::size_t>(f.components), steps + 1, std::isnan(f.values[i]) ? "NaN" : "infinite"));
+    refuse_non_finite(f.values, f.components, fmt::format("{} of step {}", f.name, steps + 1));
     const std::string path = fmt::format("/{}/{}", center[0] == 'N' ? "point" : "cell", hdf5_dataset_name(f.name));
     const int rank = f.components == 1 ? 2 : 3;
     const hsize_t dims[3] = {static_cast<hsize_t>(planned), count, static_cast<hsize_t>(f.components)};
@@ -175,6 +181,7 @@ XdmfSeries::XdmfSeries(const core::ResultsFolder& folder, const std::string& nam
     for (int d = 0; d < 3; ++d) xyz.push_back(n.position(d) * length_scale);
     node_ids.push_back(n.id);
   }
+  s.refuse_non_finite(xyz, 3, "the node coordinates");
   bool linear = false, quadratic = false;
   for (const fem::BeamElement& b : model.beams) {
     (b.is_quadratic() ? quadratic : linear) = true;
