@@ -110,13 +110,8 @@ struct XdmfSeries::State {
                        precision, h5_file, path);
   }
 
-  std::string attribute(const VtuField& f, const std::string& path, const char* center, std::size_t count) const {
-    return fmt::format("        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n          {}\n        </Attribute>\n",
-                       xml_attribute(f.name), f.components == 3 ? "Vector" : "Scalar", center, item(path, count, f.components, "Float", 8));
-  }
-
   // Field f at the current step: row `steps` of its dataset (steps x count x
-  // components, created at the first step), named in the grid's XML by a hyperslab.
+  // components, created at the first step), named in the grid's XML as a slab.
   void field(const VtuField& f, const char* center, std::size_t count, std::string& xml) {
     if (f.values.size() != count * static_cast<std::size_t>(f.components))
       throw std::logic_error(fmt::format("XDMF field {} has {} values for {} entries", f.name, f.values.size(), count));

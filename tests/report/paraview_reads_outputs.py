@@ -11,7 +11,10 @@ mode_shapes.csv's translations scaled to a largest nodal translation of 1.
 (2) frame_response.xdmf (examples/portal_frame_sway.yaml) and (3) the same
 study's frame_response.pvd: as many time steps as frame_nodes_corners.csv has
 times, the same times, and the displacement of each corner node at the time
-of its largest |UX| equal to the CSV's. Exit status 0 if all hold."""
+of its largest |UX| equal to the CSV's. (4) A mesh of three-node beams
+(B32R, B32) and a two-node beam (B31): the XDMF Mixed topology reads as two
+VTK quadratic edges (type 21, midside node third) and one line (VTK_LINE 3 or
+VTK_POLY_LINE 4 of two points). Exit status 0 if all hold."""
 import csv
 import math
 import os
@@ -106,5 +109,20 @@ for fmt in ("xdmf", "vtu"):
         scale = max(abs(ux), abs(uy), abs(uz))
         check(all(close(g, c, scale) for g, c in zip(got, (ux, uy, uz))),
               f"frame_response ({fmt}) node {node} at t = {t} s: displacement {got} = frame_nodes_corners.csv {(ux, uy, uz)} m")
-print("points", data.GetNumberOfPoints(), "cells", data.GetNumberOfCells())
+
+# (4) Three-node and two-node beams in one mesh.
+deck = open(os.path.join(source, "tests", "fuzz", "seeds", "inp", "three_node_beams.inp")).read()
+deck = deck.replace("5, 1.5, 0.5, 0\n", "5, 1.5, 0.5, 0\n6, 1.5, 1.0, 0\n")
+deck = deck.replace("*MATERIAL", "*ELEMENT, TYPE=B31, ELSET=TIE\n3, 5, 6\n*MATERIAL", 1)
+deck = deck.replace("*BOUNDARY", "*BEAM SECTION, ELSET=TIE, MATERIAL=STEEL, SECTION=RECT\n0.1, 0.1\n0, 0, 1\n*BOUNDARY")
+with open(os.path.join(work, "mixed.inp"), "w") as f:
+    f.write(deck)
+run("modes", os.path.join(work, "mixed.inp"), "-n", "2", "--out", os.path.join(work, "mixed"))
+reader = Xdmf3ReaderS(FileName=[os.path.join(work, "mixed", "modes.xdmf")])
+data = read(reader, 1.0)
+cells = [(data.GetCellType(i), [int(data.GetCell(i).GetPointIds().GetId(k)) for k in range(data.GetCell(i).GetNumberOfPoints())])
+         for i in range(data.GetNumberOfCells())]
+check(data.GetNumberOfPoints() == 6 and cells[0] == (21, [0, 2, 1]) and cells[1] == (21, [2, 4, 3]) and cells[2][0] in (3, 4) and cells[2][1] == [4, 5],
+      f"mixed mesh: 6 points and cells {cells} (B32R 1-3 mid 2, B32 3-5 mid 4, B31 5-6)")
+
 sys.exit(1 if failures else 0)
