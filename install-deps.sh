@@ -2,6 +2,9 @@
 # Installs everything framedyn needs from Debian 12's packages (and nothing
 # else): the compiler and CMake, the numerical libraries, the test framework,
 # and CalculiX (ccx), the peer FE code the tests compare the beam model with.
+# libhdf5-dev (HDF5's C library) writes the heavy data of the XDMF ParaView output;
+# paraview + python3-paraview give pvbatch, with which a test reads that output
+# back with ParaView's own readers (185 packages, 198 MB, about 1.5 min);
 # gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`;
 # clang with its runtime (libFuzzer, sanitizers) and its OpenMP (SUNDIALS's CMake
 # package asks for OpenMP) builds the fuzz harnesses of tests/fuzz.
@@ -13,6 +16,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   calculix-ccx
   gnuplot-nox
+  libhdf5-dev
+  paraview python3-paraview
   clang libclang-rt-14-dev libomp-dev
 )
 missing=()

@@ -6,7 +6,7 @@
 // sets; the command runs the transient, recovers the section forces and
 // fiber stresses of the element sets and the nodal histories of the node
 // sets, and writes DIR/summary.json (key "frame"), CSV tables and, with
-// `pvd: true`, a ParaView time series.
+// a ParaView time series (frame.paraview: xdmf by default, vtu or none).
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 

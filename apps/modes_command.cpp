@@ -1,6 +1,7 @@
 // `framedyn modes MESH.inp`: natural frequencies and mode shapes of a frame.
 // Parses the options, computes the modes (fem/modal_analysis), writes them with
-// report/modes_outputs (summary.json, modes.csv, mode_shapes.csv, modes.vtu)
+// report/modes_outputs (summary.json, modes.csv, modes.xdmf + modes.h5 or
+// modes.vtu, on request mode_shapes.csv)
 // and prints a table.
 #include <fmt/format.h>
 
@@ -30,6 +31,8 @@ struct ModesOptions {
   bool lumped = false;
   double shift_hz = 1.0;
   bool figures = false;
+  std::string paraview = "xdmf";
+  bool mode_shapes_csv = false;
   ProgressFlags progress;
 };
 
@@ -52,7 +55,10 @@ int run_modes(const ModesOptions& opt) {
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
 
-  report::write_modes_results(model, r, {opt.mesh.path, opt.lumped, opt.shift_hz}, folder);
+  const report::ParaviewOutput paraview = opt.paraview == "vtu"    ? report::ParaviewOutput::vtu
+                                         : opt.paraview == "none" ? report::ParaviewOutput::none
+                                                                  : report::ParaviewOutput::xdmf;
+  report::write_modes_results(model, r, {opt.mesh.path, opt.lumped, opt.shift_hz, paraview, opt.mode_shapes_csv}, folder);
   bool drew = false;
   if (opt.figures) {
     // The lowest elastic modes (a rigid-body mode has no shape worth a picture).
@@ -100,7 +106,12 @@ int run_modes(const ModesOptions& opt) {
   std::string line = fmt::format("{:>5}  {:>14}                            ", "sum", "");
   for (int d = 0; d < 6; ++d) line += fmt::format("{:7.3f}", fraction(sum_all, d));
   fmt::print("{}\n", line);
-  fmt::print("\nresults in {}/ (summary.json, modes.csv, mode_shapes.csv, modes.vtu{})\n", out_dir, drew ? ", mode_shapes.png" : "");
+  std::string files = "summary.json, modes.csv";
+  if (opt.mode_shapes_csv) files += ", mode_shapes.csv";
+  if (paraview == report::ParaviewOutput::xdmf) files += ", modes.xdmf, modes.h5";
+  if (paraview == report::ParaviewOutput::vtu) files += ", modes.vtu";
+  if (drew) files += ", mode_shapes.png";
+  fmt::print("\nresults in {}/ ({})\n", out_dir, files);
   return 0;
 }
 
@@ -115,6 +126,14 @@ void add_modes_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--lumped", opt->lumped, "Lumped mass instead of consistent mass");
   cmd->add_option("--shift", opt->shift_hz, "Shift of the shift-invert iteration, Hz below zero (default 1)")->check(number_check("a positive shift in Hz", [](double hz) { return hz > 0; }, false));
   cmd->add_flag("--figures", opt->figures, "Draw the lowest four elastic mode shapes, three views each, into mode_shapes.png (gnuplot)");
+  cmd->add_option("--paraview", opt->paraview, "ParaView output: xdmf (modes.xdmf + modes.h5, each mode a time step; default), vtu (modes.vtu) or none")
+      ->check(CLI::Validator(
+          [](std::string& input) {
+            return input == "xdmf" || input == "vtu" || input == "none" ? std::string()
+                                                                        : fmt::format("expected xdmf, vtu or none, found '{}'", input);
+          },
+          ""));
+  cmd->add_flag("--mode-shapes-csv", opt->mode_shapes_csv, "Also write mode_shapes.csv, the mass-normalised shapes as a text table (large)");
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_modes(*opt); }; });
 }

@@ -207,7 +207,7 @@ struct FrameRun {
 FrameRun run_frame(const c::FrameStudyRequest& q0, const c::LoadHistory& loads, c::FrameSupports supports) {
   c::FrameStudyRequest q = q0;
   q.output_interval.reset();
-  q.pvd = false;
+  q.paraview = c::ParaviewOutput::none;
   q.supports = supports;
   FrameRun fr{c::run_frame_study(q, &loads), {}};
   for (Eigen::Index j = 0; j < fr.r.response.times.size(); ++j) fr.t.push_back(fr.r.response.times(j));

@@ -122,11 +122,11 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   const bool pipeline = defaults == FrameDefaults::pipeline;
   // dead_load in the pipeline only: the static loads come from the vehicle model.
   if (pipeline)
-    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
+    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
                   "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
                   "compare_supports"});
   else
-    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "pvd",
+    f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
                   "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
   FrameStudyRequest r;
   r.file = f.file();
@@ -268,7 +268,20 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     r.stations = f.integer("stations");
     if (r.stations < 2) throw f.error("stations", "at least 2 stations per element (the ends)", std::to_string(r.stations));
   }
-  r.pvd = f.boolean_or("pvd", false);
+  // paraview: xdmf | vtu | none; the older pvd: true / false means vtu / none.
+  if (f.has("pvd") && f.has("paraview"))
+    throw f.error("pvd", "either paraview (xdmf, vtu or none) or the older pvd (true: vtu, false: none), not both", "both keys");
+  if (f.has("pvd")) {
+    r.paraview = f.boolean_or("pvd", false) ? ParaviewOutput::vtu : ParaviewOutput::none;
+  } else {
+    const std::string paraview = f.text_or("paraview", "xdmf");
+    if (paraview == "xdmf") r.paraview = ParaviewOutput::xdmf;
+    else if (paraview == "vtu") r.paraview = ParaviewOutput::vtu;
+    else if (paraview == "none") r.paraview = ParaviewOutput::none;
+    else
+      throw f.error("paraview", "xdmf (one .xdmf + .h5 file per run), vtu (a .pvd + one .vtu per output time) or none for the ParaView time series",
+                    quoted(paraview));
+  }
   if (f.has("steady_from")) r.steady_from = f.non_negative("steady_from", core::Quantity::time);
   if (f.has("yield_strength")) r.yield_strength = f.positive("yield_strength", core::Quantity::stress);
   const std::string histories = f.text_or("stress_histories", "none");

@@ -18,7 +18,7 @@
 //     outputs:                             # output sets by name
 //       left_rail: {element_set: LEFT_RAIL}
 //       tip: {node_set: TIP}
-//     pvd: true                            # ParaView time series
+//     paraview: xdmf                       # ParaView time series: xdmf (default) | vtu | none (older key pvd: true = vtu)
 //     mesh_loads: constant                 # the mesh's *CLOAD/*DLOAD: constant loads throughout | none
 //     steady_from: 0.5                     # s: steady operation from (else the rigid model's report, else the last half)
 //     stress_histories: hot_spots          # none | hot_spots | all: frame_stress_histories.csv
@@ -82,6 +82,10 @@ enum class FrameDefaults {
 
 enum class FrameMethod { mode_displacement, mode_acceleration, direct };
 
+// The ParaView time series: one XDMF 3 file + one HDF5 file (report/xdmf_writer),
+// a .pvd collection + one .vtu per output time (report/vtu_writer), or none.
+enum class ParaviewOutput { xdmf, vtu, none };
+
 struct FrameStudyRequest {
   std::string file;                          // the study file, for messages
   std::string name;
@@ -101,7 +105,7 @@ struct FrameStudyRequest {
   fem::ModalDamping damping = fem::ModalDamping::ratio(0.02);
   std::optional<double> output_interval;     // s
   int stations = 5;
-  bool pvd = false;
+  ParaviewOutput paraview = ParaviewOutput::none;  // a study file's default: xdmf
   int direct_substeps = 4;                   // Newmark steps per load-history interval
   bool convert_units = false;                // mesh or load history in other units than the study: convert (else refuse)
   // The mesh's own *CLOAD and *DLOAD (gravity) as constant loads acting

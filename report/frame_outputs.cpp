@@ -18,6 +18,7 @@
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
+#include "report/xdmf_writer.h"
 
 namespace framedyn::report {
 
@@ -178,15 +179,13 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
   }
   write_stress_histories(r, q, folder);
-  if (!q.pvd) return;
-  // ParaView time series: one VTU per output time, a PVD collection naming them.
+  if (q.paraview == coupling::ParaviewOutput::none) return;
+  // ParaView time series: the same fields per output time in either format.
   const fem::FrameModel& m = r.model;
   std::vector<fem::BeamGeometry> geometry;
   for (const fem::BeamElement& b : m.beams) geometry.push_back(fem::beam_geometry(m, b));
-  // One VTU per output time, built and written on two threads (the files are
-  // independent, so the bytes do not depend on the order): writing ~1,000
-  // small files is most of a pipeline run's time.
-  const auto write_frame = [&](Eigen::Index j) {
+  // Point fields (displacement, rotation) and cell fields (peak stress, moment, mid-length axial force) at output time j.
+  const auto frame_fields = [&](Eigen::Index j) -> std::pair<std::vector<VtuField>, std::vector<VtuField>> {
     const Eigen::VectorXd uj = r.response.displacement.col(j);
     report::VtuField disp{fmt::format("displacement [{}]", u.label(Quantity::length)), 3, {}};
     report::VtuField rot{fmt::format("rotation [{}]", u.label(Quantity::angle)), 3, {}};
@@ -221,9 +220,49 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
       moment.values.push_back(mmax * mf);
       axial.values.push_back(fem::section_forces_at(f, 0.5 * geometry[e].data.length).n / u.to_si_factor(Quantity::force));
     }
-    folder.write_text(fmt::format("frame_response_{:05d}.vtu", j), report::vtu_document(m, lf, {disp, rot}, {stress, moment, axial}));
+    return {{disp, rot}, {stress, moment, axial}};
   };
   const Eigen::Index frames = r.response.times.size();
+  if (q.paraview == coupling::ParaviewOutput::xdmf) {
+    // frame_response.xdmf + frame_response.h5: the fields of the next output
+    // time are computed on a second thread while this one writes (HDF5's
+    // serial library takes one writer).
+    XdmfSeries series(folder, "frame_response", m, lf, static_cast<int>(frames));
+    std::pair<std::vector<VtuField>, std::vector<VtuField>> current;
+    if (frames > 0) current = frame_fields(0);
+    for (Eigen::Index j = 0; j < frames; ++j) {
+      std::pair<std::vector<VtuField>, std::vector<VtuField>> next;
+      std::exception_ptr failure;
+      std::thread ahead;
+      if (j + 1 < frames)
+        ahead = std::thread([&] {
+          try {
+            next = frame_fields(j + 1);
+          } catch (...) {
+            failure = std::current_exception();
+          }
+        });
+      try {
+        series.add(r.response.times(j), current.first, current.second);
+      } catch (...) {
+        if (ahead.joinable()) ahead.join();
+        throw;
+      }
+      if (ahead.joinable()) ahead.join();
+      if (failure) std::rethrow_exception(failure);
+      current = std::move(next);
+      if (written) written(static_cast<int>(j + 1), static_cast<int>(frames));
+    }
+    series.finish();
+    return;
+  }
+  // One VTU per output time, built and written on two threads (the files are
+  // independent, so the bytes do not depend on the order), and a PVD
+  // collection naming them.
+  const auto write_frame = [&](Eigen::Index j) {
+    const auto [points, cells] = frame_fields(j);
+    folder.write_text(fmt::format("frame_response_{:05d}.vtu", j), report::vtu_document(m, lf, points, cells));
+  };
   // Progress: the writing thread below counts, this one reports (the callback need not be thread-safe).
   std::atomic<int> done{0};
   const auto write_counted = [&](Eigen::Index j) {

@@ -16,8 +16,9 @@ namespace framedyn::report {
 
 // frame_modes.csv; with element-set outputs frame_rails_envelope.csv,
 // frame_rails_series.csv and frame_sections_<name>.csv (history); per
-// node-set output frame_nodes_<name>.csv; with request.pvd,
-// frame_response.pvd + frame_response_NNNNN.vtu; in the study's units.
+// node-set output frame_nodes_<name>.csv; the ParaView series of
+// request.paraview: frame_response.xdmf + frame_response.h5 (xdmf) or
+// frame_response.pvd + frame_response_NNNNN.vtu (vtu); in the study's units.
 void write_frame_outputs(const coupling::FrameStudyResults& results, const coupling::FrameStudyRequest& request, const core::ResultsFolder& folder,
                          const std::function<void(int, int)>& written = {});  // written(files done, files in all)
 // The summary's "frame" object as JSON text: modes[i].frequency_hz,

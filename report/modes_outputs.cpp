@@ -10,6 +10,7 @@
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
+#include "report/xdmf_writer.h"
 
 namespace framedyn::report {
 
@@ -101,24 +102,44 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
   const double tr_f = sqrt_m / u.to_si_factor(Quantity::length);
   const std::string tr_unit = u.label(Quantity::mass_normalised_translation);
   const std::string rot_unit = u.label(Quantity::mass_normalised_rotation);
-  report::CsvTable shapes({"mode", "node", report::column("ux", tr_unit), report::column("uy", tr_unit), report::column("uz", tr_unit),
-                         report::column("rx", rot_unit), report::column("ry", rot_unit), report::column("rz", rot_unit)});
-  std::vector<report::VtuField> fields;
-  for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) {
+  if (run.mode_shapes_csv) {
+    report::CsvTable shapes({"mode", "node", report::column("ux", tr_unit), report::column("uy", tr_unit), report::column("uz", tr_unit),
+                             report::column("rx", rot_unit), report::column("ry", rot_unit), report::column("rz", rot_unit)});
+    for (Eigen::Index i = 0; i < r.shapes.cols(); ++i)
+      for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        const auto s = r.shapes.col(i).segment<6>(static_cast<Eigen::Index>(6 * n));
+        shapes.row().add(static_cast<int>(i + 1)).add(model.nodes[n].id);
+        for (int d = 0; d < 6; ++d) shapes.add(s(d) * (d < 3 ? tr_f : sqrt_m));
+      }
+    folder.write_text("mode_shapes.csv", shapes.str());
+  }
+  if (run.paraview == ParaviewOutput::none) return;
+  // ParaView: the translations scaled to a largest nodal translation of 1 (a
+  // shape to look at; mode_shapes.csv has the mass-normalised values).
+  const double length_scale = 1.0 / u.to_si_factor(Quantity::length);
+  const auto shape_field = [&](Eigen::Index i, const std::string& name) {
     double max_translation = 0.0;
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
       max_translation = std::max(max_translation, r.shapes.col(i).segment<3>(static_cast<Eigen::Index>(6 * n)).norm());
-    report::VtuField f{fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz), 3, {}};
-    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-      const auto s = r.shapes.col(i).segment<6>(static_cast<Eigen::Index>(6 * n));
-      shapes.row().add(static_cast<int>(i + 1)).add(model.nodes[n].id);
-      for (int d = 0; d < 6; ++d) shapes.add(s(d) * (d < 3 ? tr_f : sqrt_m));
-      for (int d = 0; d < 3; ++d) f.values.push_back(max_translation > 0 ? s(d) / max_translation : 0.0);
-    }
-    fields.push_back(std::move(f));
+    report::VtuField f{name, 3, {}};
+    f.values.reserve(3 * model.nodes.size());
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+      for (int d = 0; d < 3; ++d) f.values.push_back(max_translation > 0 ? r.shapes(static_cast<Eigen::Index>(6 * n) + d, i) / max_translation : 0.0);
+    return f;
+  };
+  if (run.paraview == ParaviewOutput::xdmf) {
+    // Each mode a time step (its number): one field name, so one Warp By
+    // Vector and one colour map serve every mode while the time controls
+    // step through them; the frequency is in modes.csv under the same number.
+    XdmfSeries series(folder, "modes", model, length_scale, static_cast<int>(r.shapes.cols()));
+    for (Eigen::Index i = 0; i < r.shapes.cols(); ++i) series.add(static_cast<double>(i + 1), {shape_field(i, "mode_shape")}, {});
+    series.finish();
+    return;
   }
-  folder.write_text("mode_shapes.csv", shapes.str());
-  folder.write_text("modes.vtu", report::vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), fields, {}));
+  std::vector<report::VtuField> fields;
+  for (Eigen::Index i = 0; i < r.shapes.cols(); ++i)
+    fields.push_back(shape_field(i, fmt::format("mode_{:02d}_{:.4g}Hz", i + 1, r.modes[static_cast<std::size_t>(i)].frequency_hz)));
+  folder.write_text("modes.vtu", report::vtu_document(model, length_scale, fields, {}));
 }
 
 }  // namespace framedyn::report

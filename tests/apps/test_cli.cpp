@@ -99,17 +99,17 @@ std::string cantilever_deck(const std::string& type = "B31", double pz = kPz) {
 
 // With framedyn's manifest of them (core/results_folder.h).
 const std::vector<std::string> kStaticFiles = {"displacements.csv", "reactions.csv", "section_forces.csv", "static.vtu", "summary.json", ".framedyn-manifest"};
-const std::vector<std::string> kModesFiles = {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu", ".framedyn-manifest"};
+const std::vector<std::string> kModesFiles = {"summary.json", "modes.csv", "modes.xdmf", "modes.h5", ".framedyn-manifest"};  // the defaults
 
 // ------------------------------------------------------------------ modes
 
 TEST(Cli, ModesOfTheShippedFrame) {
   TempDir dir;
   const fs::path out = dir / "r100";
-  const RunResult r = framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 10 --out " + quote(out.string()) + " -q");
+  const RunResult r = framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 10 --mode-shapes-csv --paraview vtu --out " + quote(out.string()) + " -q");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");  // -q: no progress lines
-  for (const std::string& f : kModesFiles) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+  for (const std::string& f : {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu", ".framedyn-manifest"}) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
 
   const nlohmann::json j = nlohmann::json::parse(read_file(out / "summary.json"));
   EXPECT_EQ(j.at("framedyn").at("command"), "modes");
@@ -147,6 +147,26 @@ TEST(Cli, ModesOfTheShippedFrame) {
   EXPECT_NE(vtu.find("<VTKFile"), std::string::npos);
   EXPECT_NE(vtu.find("mode_07_"), std::string::npos);
   EXPECT_TRUE(entries_containing(dir.path(), ".partial-").empty());
+}
+
+// By default: the ParaView output as XDMF + HDF5 (each mode a time step), no
+// text table of the full shapes; --paraview none leaves ParaView out.
+TEST(Cli, ModesWritesXdmfAndNoShapeTableByDefault) {
+  TempDir dir;
+  ASSERT_EQ(framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 3 --out m -q").status, 0);
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir / "m")) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{".framedyn-manifest", "modes.csv", "modes.h5", "modes.xdmf", "summary.json"}));
+  const std::string xdmf = read_file(dir / "m" / "modes.xdmf");
+  EXPECT_NE(xdmf.find("<Xdmf Version=\"3.0\""), std::string::npos);
+  EXPECT_NE(xdmf.find("CollectionType=\"Temporal\""), std::string::npos);
+  for (const char* t : {"<Time Value=\"1\" />", "<Time Value=\"2\" />", "<Time Value=\"3\" />"}) EXPECT_NE(xdmf.find(t), std::string::npos) << t;
+  EXPECT_EQ(xdmf.find("<Time Value=\"4\" />"), std::string::npos);
+  ASSERT_EQ(framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 3 --paraview none --out n -q").status, 0);
+  EXPECT_FALSE(fs::exists(dir / "n" / "modes.h5"));
+  EXPECT_FALSE(fs::exists(dir / "n" / "modes.xdmf"));
+  EXPECT_FALSE(fs::exists(dir / "n" / "modes.vtu"));
 }
 
 TEST(Cli, ModesTakesTheCountFromTheFrequencyStep) {

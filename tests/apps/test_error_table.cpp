@@ -497,6 +497,8 @@ std::vector<Row> rows() {
       frame_row("STUDY-82", "units: in-lbf-s", "units: m-N-s", "mesh:", "frame.mesh"),
       frame_row("STUDY-90", "  stations: 3\n", "  stations: 3\n  mesh_loads: gravity\n", "mesh_loads:", "frame.mesh_loads"),
       frame_row("STUDY-102", "  stations: 3\n", "  stations: 3\n  stress_histories: yes\n", "stress_histories:", "frame.stress_histories"),
+      frame_row("OUT-06", "  stations: 3\n", "  stations: 3\n  paraview: vtk\n", "paraview:", "frame.paraview"),
+      frame_row("OUT-07", "  stations: 3\n", "  stations: 3\n  pvd: true\n  paraview: xdmf\n", "pvd:", "frame.pvd"),
       // ---- the frame structure's mass from the frame mesh (coupling/frame_mass_source.cpp)
       study_row("STUDY-96", kStructurePart, "{name: frame_structure, from: frame_mesh}", "from: frame_mesh", "frame.parts[0].from", kStudy3D),
       structure_row("STUDY-97", kStructurePart, "{name: tubes, weight: 565.6, position: [27.5, 0, 0], radii_of_gyration: [14, 30.3, 33.5]}",
@@ -582,6 +584,7 @@ std::vector<Row> rows() {
       cli_row("CLI-03", "static frame.inp --no-such-option", "command line"),
       cli_row("CLI-04", "static --out results", "command line: mesh"),
       cli_row("CLI-05", "modes frame.inp --modes 0 --out results", "command line: --modes"),
+      cli_row("CLI-61", "modes frame.inp --paraview vtk --out results", "command line: --paraview"),
       cli_row("CLI-06", "modes frame.inp --modes ten --out results", "command line: --modes"),
       cli_row("CLI-07", "modes frame.inp --shift -1 --out results", "command line: --shift"),
       cli_row("CLI-08", "static frame.inp --stations 1 --out results", "command line: --stations"),

@@ -18,6 +18,7 @@
 #include "core/finite_output.h"
 #include "core/results_folder.h"
 #include "report/vtu_writer.h"
+#include "report/xdmf_writer.h"
 #include "tests/support/temp_dir.h"
 
 namespace framedyn {
@@ -93,6 +94,37 @@ TEST(FiniteOutput, VtuNamesTheDataArrayEntryAndComponent) {
   // A non-finite node coordinate is in the Points array.
   model.nodes[1].position.y() = kNaN;
   expect_contains(refusal("modes.vtu", report::vtu_document(model, 1.0, {}, {})), "modes.vtu: DataArray \"Points\", entry 1, component 1 (both counted from 0;");
+}
+
+// The XDMF series' HDF5 arrays are checked as they are written: the message
+// names the .h5 file, the field, the step (from 1), entry and component; the
+// results folder, never committed, does not appear.
+TEST(FiniteOutput, XdmfSeriesNamesTheFieldStepEntryAndComponent) {
+  testing::TempDir dir;
+  fem::FrameModel model;
+  model.nodes = {{1, Eigen::Vector3d(0, 0, 0)}, {2, Eigen::Vector3d(1, 0, 0)}, {3, Eigen::Vector3d(2, 0, 0)}};
+  std::string m;
+  {
+    core::ResultsFolder folder(dir / "out");
+    report::XdmfSeries series(folder, "frame_response", model, 1.0, 2);
+    series.add(0.0, {{"displacement [m]", 3, std::vector<double>(9, 0.0)}}, {});
+    try {
+      series.add(0.1, {{"displacement [m]", 3, {0, 0, 0, 0.1, 0.2, 0.3, 0.4, kInf, 0.6}}}, {});
+    } catch (const NumericalError& e) {
+      m = e.what();
+    }
+  }
+  expect_contains(m, "frame_response.h5: displacement [m] of step 2, entry 2, component 1 (both counted from 0) is infinite");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  model.nodes[1].position.y() = kNaN;  // a node coordinate, before any step
+  core::ResultsFolder folder(dir / "out2");
+  try {
+    report::XdmfSeries series(folder, "modes", model, 1.0, 1);
+    m.clear();
+  } catch (const NumericalError& e) {
+    m = e.what();
+  }
+  expect_contains(m, "modes.h5: the node coordinates, entry 1, component 1 (both counted from 0) is NaN");
 }
 
 TEST(FiniteOutput, JsonSummaryNullFromANaNNamesTheKeyPath) {

@@ -246,7 +246,7 @@ TEST(FrameParts, ShippedPipelinesInertiaReliefAccelerationIsTheVehicleModelsFram
   coupling::FrameStudyRequest q = *s.study.frame_response;  // the pipeline's own request: its parts from the study
   q.supports = coupling::FrameSupports::free_free_inertia_relief;
   q.support_sets.clear();
-  q.pvd = false;
+  q.paraview = coupling::ParaviewOutput::none;
   EXPECT_EQ(q.structure_part, "frame_structure");
   EXPECT_EQ(q.parts.size(), 5u);
   const coupling::LoadHistory loads = coupling::all_frame_loads(*s.results.frame_loads);
