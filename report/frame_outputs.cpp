@@ -18,6 +18,7 @@
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
+#include "report/fatigue_outputs.h"
 
 namespace framedyn::report {
 
@@ -178,6 +179,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
   }
   write_stress_histories(r, q, folder);
+  write_life_map(r, q, folder);
   if (!q.pvd) return;
   // ParaView time series: one VTU per output time, a PVD collection naming them.
   const fem::FrameModel& m = r.model;
