@@ -20,8 +20,8 @@ namespace {
 
 double life_of(double damage_per_hour) { return damage_per_hour > 0.0 ? 1.0 / damage_per_hour : std::numeric_limits<double>::infinity(); }
 
-// "inf" in the CSV for a point without damage (below every cut-off).
-std::string life_text(double life) { return std::isfinite(life) ? fmt::format("{:.6g}", life) : "inf"; }
+// An empty cell for a point without damage (every cycle below the cut-off): framedyn writes no "inf".
+std::string life_text(double life) { return std::isfinite(life) ? fmt::format("{:.6g}", life) : ""; }
 
 }  // namespace
 
