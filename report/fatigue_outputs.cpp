@@ -43,14 +43,19 @@ void write_life_map(const coupling::FrameStudyResults& r, const coupling::FrameS
     }
   }
   folder.write_text("life_map.csv", t.str());
-  // ParaView: per beam element the largest damage per hour over its stations and points (0 off the outputs).
-  VtuField damage{"fatigue_damage_per_hour [1/h]", 1, std::vector<double>(r.model.beams.size(), 0.0)};
-  for (std::size_t s = 0; s < r.stress.stations.size(); ++s) {
-    const int b = r.model.beam_index(r.stress.stations[s].element_id);
+  write_life_vtu(r.model, r.stress, m.damage_per_hour, u, folder);
+}
+
+void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
+                    const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  // Per beam element the largest damage per hour over its stations and points (0 off the outputs).
+  VtuField damage{"fatigue_damage_per_hour [1/h]", 1, std::vector<double>(model.beams.size(), 0.0)};
+  for (std::size_t s = 0; s < stress.stations.size(); ++s) {
+    const int b = model.beam_index(stress.stations[s].element_id);
     if (b < 0) continue;
-    for (double d : m.damage_per_hour[s]) damage.values[static_cast<std::size_t>(b)] = std::max(damage.values[static_cast<std::size_t>(b)], d);
+    for (double d : damage_per_hour[s]) damage.values[static_cast<std::size_t>(b)] = std::max(damage.values[static_cast<std::size_t>(b)], d);
   }
-  folder.write_text("frame_life.vtu", vtu_document(r.model, 1.0 / u.to_si_factor(Quantity::length), {}, {damage}));
+  folder.write_text("frame_life.vtu", vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), {}, {damage}));
 }
 
 ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const coupling::FrameStudyRequest& q) {
@@ -87,27 +92,32 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
 }
 
 LinePlot life_along_rails_figure(const coupling::FrameStudyResults& r, const core::UnitSystem& u) {
+  if (!r.life) return life_along_rails_figure(r.stress, {}, "", u);
+  return life_along_rails_figure(r.stress, r.life->damage_per_hour, r.life->code, u);
+}
+
+LinePlot life_along_rails_figure(const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour, const std::string& code,
+                                 const core::UnitSystem& u) {
   LinePlot plot;
-  plot.title = r.life ? fmt::format("Fatigue life along the element-set outputs ({}; shortest over the section points)", r.life->code) : "Fatigue life";
+  plot.title = fmt::format("Fatigue life along the element-set outputs ({}; shortest over the section points)", code);
   plot.x_label = "X along the frame";
   plot.x_unit = u.label(Quantity::length);
   plot.y_label = "life";
   plot.y_unit = "h";
   plot.log_y = true;
   plot.mark_points = true;
-  if (!r.life) return plot;
   std::map<std::string, std::size_t> series_of;
-  for (std::size_t s = 0; s < r.stress.stations.size(); ++s) {
+  for (std::size_t s = 0; s < damage_per_hour.size() && s < stress.stations.size(); ++s) {
     double worst = 0.0;
-    for (double d : r.life->damage_per_hour[s]) worst = std::max(worst, d);
+    for (double d : damage_per_hour[s]) worst = std::max(worst, d);
     if (!(worst > 0.0)) continue;
-    const std::string& set = r.stress.stations[s].set;
+    const std::string& set = stress.stations[s].set;
     auto at = series_of.find(set);
     if (at == series_of.end()) {
       at = series_of.emplace(set, plot.series.size()).first;
       plot.series.push_back({set, {}, {}, false, ""});
     }
-    plot.series[at->second].x.push_back(u.from_si(r.stress.stations[s].point.x(), Quantity::length));
+    plot.series[at->second].x.push_back(u.from_si(stress.stations[s].point.x(), Quantity::length));
     plot.series[at->second].y.push_back(1.0 / worst);
   }
   // Along X within each output (its elements need not be listed in X order); stable for equal X.

@@ -22,5 +22,11 @@ nlohmann::ordered_json fatigue_summary(const coupling::FrameStudyResults& result
 // The shortest life over the section points at every station, along X, one series per
 // element-set output, logarithmic life axis (stations without damage are left out).
 LinePlot life_along_rails_figure(const coupling::FrameStudyResults& results, const core::UnitSystem& units);
+// The same from any damage-per-hour table over the stations and points of `stress` (a duty cycle's).
+LinePlot life_along_rails_figure(const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour, const std::string& code,
+                                 const core::UnitSystem& units);
+// frame_life.vtu: the mesh with the cell field fatigue_damage_per_hour [1/h] (per element the largest).
+void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
+                    const core::UnitSystem& units, const core::ResultsFolder& folder);
 
 }  // namespace framedyn::report
