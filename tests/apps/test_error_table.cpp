@@ -271,6 +271,9 @@ Row cli_row(const std::string& id, const std::string& args, const std::string& w
   return {id, {{"frame.inp", kMesh}, {"study.yaml", kStudy2D}}, args, where, expected_found};
 }
 
+// A duty cycle's head (coupling/duty_cycle.h); the rows add its scenarios.
+const std::string kDutyCycle = "framedyn_study: 1\nname: error table, duty cycle\nmodel: duty_cycle\n";
+
 // A stress history for `framedyn rainflow` (a time column and one stress column in MPa).
 const std::string kSeries = "time [s],sg1 [MPa]\n0,10\n0.1,50\n0.2,-20\n0.3,40\n";
 
@@ -462,6 +465,13 @@ std::vector<Row> rows() {
       frame_row("STUDY-55", "modes: 4", "modes: 100000", "modes: 100000", "frame.modes"),
       frame_row("STUDY-56", "damping: {modal_ratio: 0.02}", "damping: {rayleigh: {alpha: -1, beta: 0}}", "damping:", "frame.damping.rayleigh.alpha"),
       frame_row("STUDY-57", "model: frame_transient", "model: rigid_2d", "model:", "model"),
+      // ---- ISO 8608 rough ground under a tire (coupling/study_blocks.cpp)
+      study_row("STUDY-125", "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: {kind: road, class: J, speed: 80}\n", "kind: road",
+                "tires.front.normal_input.class"),
+      // ---- duty cycles (coupling/duty_cycle.cpp)
+      Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
+      Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
+          at("study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n", "plowing.yaml", "scenarios[0].study")},
       // ---- the fatigue life map (coupling/frame_fatigue.cpp)
       frame_row("STUDY-114", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {code: AWS}\n", "fatigue:", "frame.fatigue.code"),
       frame_row("STUDY-115", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {default: FAT7l}\n", "fatigue:", "frame.fatigue.default"),
