@@ -97,7 +97,7 @@ int run_duty_cycle_study(const std::string& file, const std::string& out, bool f
   report::write_life_vtu(first.frame.model, h, per_hour, u, folder);
   std::vector<std::string> figure_files;
   if (figures) {
-    const report::LinePlot plot = report::life_along_rails_figure(h, per_hour, first.frame.life->code + ", duty cycle " + q.name, u);
+    const report::LinePlot plot = report::life_along_rails_figure(h, per_hour, "duty cycle, " + first.frame.life->code.substr(0, first.frame.life->code.find(' ')), u);
     if (!plot.series.empty()) {
       report::write_png(plot, folder.path_of("frame_life.png"));
       figure_files.push_back("frame_life.png");

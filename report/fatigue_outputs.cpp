@@ -99,7 +99,7 @@ LinePlot life_along_rails_figure(const coupling::FrameStudyResults& r, const cor
 LinePlot life_along_rails_figure(const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour, const std::string& code,
                                  const core::UnitSystem& u) {
   LinePlot plot;
-  plot.title = fmt::format("Fatigue life along the element-set outputs ({}; shortest over the section points)", code);
+  plot.title = fmt::format("Fatigue life along the outputs, shortest over the section points ({})", code);
   plot.x_label = "X along the frame";
   plot.x_unit = u.label(Quantity::length);
   plot.y_label = "life";
