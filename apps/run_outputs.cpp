@@ -99,6 +99,12 @@ void print_fatigue_line(const coupling::FrameStudyResults& f, const coupling::Fr
   fmt::print("fatigue ({}): shortest life {} at {} element {} station {} ({}), X = {:.4g} {}; damage {:.3g} in {:g} h\n", m.code,
              d > 0.0 ? fmt::format("{:.4g} h", 1.0 / d) : std::string("unlimited (no damaging cycle)"), st.set, st.element_id, st.station, point,
              q.units.from_si(st.point.x(), core::Quantity::length), q.units.label(core::Quantity::length), d * q.fatigue->hours, q.fatigue->hours);
+  // Which detail categories were assumed where (normal stress range; shear not combined).
+  for (std::size_t c = 0; c < m.curves.size(); ++c) {
+    std::size_t n = 0;
+    for (int k : m.curve_of_station) n += k == static_cast<int>(c);
+    fmt::print("  detail assumed: {} on {} ({} stations)\n", m.curves[c], m.assignment[c], n);
+  }
 }
 
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at, const core::UnitSystem& units) {
