@@ -19,6 +19,7 @@
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
+#include "report/fatigue_outputs.h"
 #include "report/frame_outputs.h"
 
 namespace framedyn::apps {
@@ -54,6 +55,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
   j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
                 {"loads", q.loads ? q.loads->string() : std::string()}};
   j["frame"] = report::frame_summary(r, q);
+  if (r.life) j["fatigue"] = report::fatigue_summary(r, q);
   add_warnings(j, coupling::frame_warnings(r, q));
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
@@ -83,6 +85,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
   }
   if (!r.rails.empty()) fmt::print("\n");
   print_hot_spot_line(r, u);
+  print_fatigue_line(r, q);
   for (const coupling::NodalHistory& h : r.nodal) {
     fmt::print("\n{}: peak displacement {:.5g} {} ({} of node {}), t = {:.4g} s\n", h.spec.name, h.peak_displacement.value * lf, u.label(Quantity::length),
                fem::dof_name(h.peak_displacement.dof), h.peak_displacement.node_id, h.peak_displacement.time);

@@ -31,6 +31,7 @@
 #include "report/plot.h"
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
+#include "report/fatigue_outputs.h"
 #include "report/frame_outputs.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
@@ -239,6 +240,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
     report::write_frame_outputs(*frame, *study.frame_response, folder, progress.step_callback());
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
     j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
+    if (frame->life) j["fatigue"] = report::fatigue_summary(*frame, *study.frame_response);
     add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response));
     // The same loads on the supports compared (frame_response.compare_supports), each run on its own (one
     // assembly and factorisation per support): their peaks in the summary, their envelopes in one figure.
@@ -273,6 +275,13 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
       if (!frame->hot_spots.by_von_mises.empty()) {
         report::write_png(report::hot_spot_stress_figure(*frame, u), folder.path_of("frame_hot_spots.png"));
         figure_files.push_back("frame_hot_spots.png");
+      }
+      if (frame->life) {
+        const report::LinePlot life = report::life_along_rails_figure(*frame, u);
+        if (!life.series.empty()) {  // no station with damage: nothing to draw on a log axis
+          report::write_png(life, folder.path_of("frame_life.png"));
+          figure_files.push_back("frame_life.png");
+        }
       }
       if (frame->mode_shapes.cols() > 0) {
         const std::vector<double> hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + std::min<Eigen::Index>(frame->frequencies_hz.size(), frame->mode_shapes.cols()));
@@ -320,6 +329,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
                    rail.peak_total_normal_stress.point.x() * lf, u.label(Quantity::length), rail.peak_total_normal_stress.time);
     }
     print_hot_spot_line(f, u);
+    print_fatigue_line(f, *study.frame_response);
   }
   if (figures) {
     std::string list;

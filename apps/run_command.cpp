@@ -20,6 +20,7 @@
 #include "core/results_folder.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
+#include "apps/duty_cycle_command.h"
 #include "apps/run_3d.h"
 
 namespace framedyn::apps {
@@ -38,6 +39,7 @@ struct RunOptions {
 
 int run_study(const RunOptions& opt) {
   if (coupling::study_model(opt.study) == "rigid_3d") return run_study_3d(opt.study, opt.out, opt.figures, opt.progress);  // issue 4
+  if (coupling::study_model(opt.study) == "duty_cycle") return run_duty_cycle_study(opt.study, opt.out, opt.figures, opt.progress);  // issue 18
   Progress progress(opt.progress);
   if (opt.figures) report::require_gnuplot();
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_results" : opt.out;

@@ -90,6 +90,23 @@ void print_hot_spot_line(const coupling::FrameStudyResults& f, const core::UnitS
              u.from_si(h.steady_peak.von_mises_total, Quantity::stress), u.label(Quantity::stress));
 }
 
+void print_fatigue_line(const coupling::FrameStudyResults& f, const coupling::FrameStudyRequest& q) {
+  if (!f.life || !q.fatigue) return;
+  const coupling::LifeMap& m = *f.life;
+  const coupling::StressStation& st = f.stress.stations.at(m.worst_station);
+  const double d = m.max_damage_per_hour();
+  const std::string point = f.stress.points[static_cast<std::size_t>(st.section)][static_cast<std::size_t>(m.worst_point)].name;
+  fmt::print("fatigue ({}): shortest life {} at {} element {} station {} ({}), X = {:.4g} {}; damage {:.3g} in {:g} h\n", m.code,
+             d > 0.0 ? fmt::format("{:.4g} h", 1.0 / d) : std::string("unlimited (no damaging cycle)"), st.set, st.element_id, st.station, point,
+             q.units.from_si(st.point.x(), core::Quantity::length), q.units.label(core::Quantity::length), d * q.fatigue->hours, q.fatigue->hours);
+  // Which detail categories were assumed where (normal stress range; shear not combined).
+  for (std::size_t c = 0; c < m.curves.size(); ++c) {
+    std::size_t n = 0;
+    for (int k : m.curve_of_station) n += k == static_cast<int>(c);
+    fmt::print("  detail assumed: {} on {} ({} stations)\n", m.curves[c], m.assignment[c], n);
+  }
+}
+
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at, const core::UnitSystem& units) {
   nlohmann::ordered_json j;
   j["reached_at"] = reached_at ? nlohmann::ordered_json{{"value", *reached_at}, {"unit", "s"}} : nlohmann::ordered_json(nullptr);

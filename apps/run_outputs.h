@@ -42,6 +42,8 @@ nlohmann::ordered_json steady_json(const coupling::SteadyReport& steady, const c
 // The console's line on the frame's peak von Mises stress and the steady window of its hot spots
 // (docs/theory/coupling.md section 10); nothing without section points.
 void print_hot_spot_line(const coupling::FrameStudyResults& frame, const core::UnitSystem& units);
+// The fatigue life map's shortest life, where, and the damage over fatigue.hours; nothing without a life map.
+void print_fatigue_line(const coupling::FrameStudyResults& frame, const coupling::FrameStudyRequest& request);
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at,
                                          const core::UnitSystem& units);
 

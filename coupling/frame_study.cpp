@@ -124,10 +124,10 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   if (pipeline)
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
                   "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
-                  "compare_supports"});
+                  "compare_supports", "fatigue"});
   else
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
-                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength"});
+                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "fatigue"});
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -292,6 +292,7 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     throw f.error("stress_histories",
                   "none, hot_spots (the top stations' worst points) or all (every station and section point) for frame_stress_histories.csv",
                   quoted(histories));
+  if (f.has("fatigue")) r.fatigue = read_fatigue_block(f.map("fatigue"));
   if (f.has("direct_substeps")) {
     r.direct_substeps = f.integer("direct_substeps");
     if (r.direct_substeps < 1) throw f.error("direct_substeps", "an integer >= 1", std::to_string(r.direct_substeps));
@@ -570,6 +571,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   }
   out.hot_spots = find_hot_spots(out.stress, steady_window(rigid_steady_from, q.steady_from, out.response.times), 10, &out.static_forces);
   out.solver_counts = fem::solver_counts() - counts_before;
+  if (q.fatigue) out.life = frame_life_map(out.model, out.stress, out.static_forces, out.hot_spots.window, *q.fatigue);
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -50,6 +50,7 @@
 #include "core/warnings.h"
 #include "coupling/frame_balance.h"
 #include "coupling/frame_dead_load.h"
+#include "coupling/frame_fatigue.h"
 #include "coupling/frame_parts.h"
 #include "coupling/hot_spots.h"
 #include "coupling/load_history.h"
@@ -143,6 +144,8 @@ struct FrameStudyRequest {
   std::optional<double> steady_from;
   enum class StressHistoryOutput { none, hot_spots, all } stress_histories = StressHistoryOutput::none;
   std::optional<double> yield_strength;
+  // The fatigue life map (coupling/frame_fatigue.h): FAT classes per element set, hours.
+  std::optional<FatigueRequest> fatigue;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
   core::InputLocation where(const std::string& key) const;
@@ -191,6 +194,8 @@ struct FrameStudyResults {
   StressHistories stress;
   std::vector<fem::SectionForces> static_forces;
   HotSpotReport hot_spots;
+  // With request.fatigue: damage per hour and life at every station and section point.
+  std::optional<LifeMap> life;
 };
 
 // The study's mesh, refused (naming frame.mesh) when it is in other units than

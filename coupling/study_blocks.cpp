@@ -146,8 +146,9 @@ rigid::SpringDamperValues read_spring_damper(const YamlMap& m) {
 }
 
 rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
-  if (with_table) m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values"});
-  else m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration"});
+  if (with_table)
+    m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values", "class", "speed", "behind", "seed", "length"});
+  else m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "class", "speed", "behind", "seed", "length"});
   rigid::GroundInput g;
   const std::string kind = m.text("kind");
   if (kind == "sine") {
@@ -168,8 +169,26 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
       throw m.error("values", "as many values as times (at least two)", fmt::format("{} times and {} values", g.times.size(), g.values.size()));
     for (std::size_t i = 1; i < g.times.size(); ++i)
       if (!(g.times[i] > g.times[i - 1])) throw m.error("times", "increasing times", "a time that does not increase");
+  } else if (kind == "road") {  // ISO 8608 rough ground (docs/theory/fatigue.md section 6)
+    g.kind = rigid::GroundInput::Kind::road;
+    const std::string cls = m.text("class");
+    rigid::RoadProfileOptions o;
+    if (cls.size() != 1 || std::string("ABCDEFGHabcdefgh").find(cls[0]) == std::string::npos)
+      throw m.error("class", "an ISO 8608 road class, A to H", "'" + cls + "'");
+    o.road_class = rigid::road_class_from_letter(cls[0]);
+    if (m.has("seed")) {
+      const int seed = m.integer("seed");
+      if (seed < 0) throw m.error("seed", "a seed >= 0", std::to_string(seed));
+      o.seed = static_cast<std::uint64_t>(seed);
+    }
+    o.length = m.has("length") ? m.positive("length", Quantity::length) : 100.0;
+    if (o.length * (o.n_max - o.n_min) < 1.0 || o.length * o.n_min > 1e6)
+      throw m.error("length", "a profile length L (m) with at least one line k / L in ISO 8608's band 0.011 to 2.83 cycle/m", describe(m.node()["length"]));
+    g.road = std::make_shared<const rigid::RoadProfile>(o);
+    g.speed = m.positive("speed", Quantity::velocity);
+    g.behind = m.has("behind") ? m.non_negative("behind", Quantity::length) : 0.0;
   } else {
-    throw m.error("kind", with_table ? "sine, bump or table" : "sine or bump", "'" + kind + "'");
+    throw m.error("kind", with_table ? "sine, bump, table or road" : "sine, bump or road", "'" + kind + "'");
   }
   return g;
 }

@@ -18,6 +18,7 @@
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
+#include "report/fatigue_outputs.h"
 #include "report/xdmf_writer.h"
 
 namespace framedyn::report {
@@ -179,6 +180,7 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
     folder.write_text("frame_nodes_" + h.spec.name + ".csv", t.str());
   }
   write_stress_histories(r, q, folder);
+  write_life_map(r, q, folder);
   if (q.paraview == coupling::ParaviewOutput::none) return;
   // ParaView time series: the same fields per output time in either format.
   const fem::FrameModel& m = r.model;

@@ -26,6 +26,7 @@ double GroundInput::displacement(double t) const {
       const double w = (t - times[i - 1]) / (times[i] - times[i - 1]);
       return values[i - 1] + w * (values[i] - values[i - 1]);
     }
+    case Kind::road: return road ? road->height(speed * t - behind) : 0.0;
   }
   return 0.0;
 }
@@ -43,6 +44,7 @@ double GroundInput::velocity(double t) const {
       const std::size_t i = static_cast<std::size_t>(it - times.begin());
       return (values[i] - values[i - 1]) / (times[i] - times[i - 1]);
     }
+    case Kind::road: return road ? speed * road->slope(speed * t - behind) : 0.0;
   }
   return 0.0;
 }

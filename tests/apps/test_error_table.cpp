@@ -271,6 +271,9 @@ Row cli_row(const std::string& id, const std::string& args, const std::string& w
   return {id, {{"frame.inp", kMesh}, {"study.yaml", kStudy2D}}, args, where, expected_found};
 }
 
+// A duty cycle's head (coupling/duty_cycle.h); the rows add its scenarios.
+const std::string kDutyCycle = "framedyn_study: 1\nname: error table, duty cycle\nmodel: duty_cycle\n";
+
 // A stress history for `framedyn rainflow` (a time column and one stress column in MPa).
 const std::string kSeries = "time [s],sg1 [MPa]\n0,10\n0.1,50\n0.2,-20\n0.3,40\n";
 
@@ -469,6 +472,23 @@ std::vector<Row> rows() {
       frame_row("STUDY-55", "modes: 4", "modes: 100000", "modes: 100000", "frame.modes"),
       frame_row("STUDY-56", "damping: {modal_ratio: 0.02}", "damping: {rayleigh: {alpha: -1, beta: 0}}", "damping:", "frame.damping.rayleigh.alpha"),
       frame_row("STUDY-57", "model: frame_transient", "model: rigid_2d", "model:", "model"),
+      // ---- ISO 8608 rough ground under a tire (coupling/study_blocks.cpp)
+      study_row("STUDY-125", "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: {kind: road, class: J, speed: 80}\n", "kind: road",
+                "tires.front.normal_input.class"),
+      // ---- duty cycles (coupling/duty_cycle.cpp)
+      Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
+      Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
+          at("study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n", "plowing.yaml", "scenarios[0].study")},
+      // ---- the fatigue life map (coupling/frame_fatigue.cpp)
+      frame_row("STUDY-114", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {code: AWS}\n", "fatigue:", "frame.fatigue.code"),
+      frame_row("STUDY-115", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {default: FAT7l}\n", "fatigue:", "frame.fatigue.default"),
+      frame_row("STUDY-116", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {mean_stress: gerber}\n", "fatigue:", "frame.fatigue.mean_stress"),
+      frame_row("STUDY-117", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {mean_stress: goodman}\n", "fatigue:", "frame.fatigue.mean_stress"),
+      frame_row("STUDY-118", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {ultimate_strength: 58000}\n", "fatigue:", "frame.fatigue.ultimate_strength"),
+      frame_row("STUDY-119", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue: {code: EN1993, thickness_exponent: 0.3}\n", "fatigue:", "frame.fatigue.thickness_exponent"),
+      frame_row("STUDY-120", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue:\n    details: [{element_set: LEFT_RAILS, class: FAT80}]\n", "details:", "frame.fatigue.details[0].element_set"),
+      frame_row("STUDY-121", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  fatigue:\n    details: [{element_set: CROSS_MEMBERS, class: FAT80}]\n", "details:", "frame.fatigue.details[0].element_set"),
+      frame_row("STUDY-122", "    right_rail: {element_set: RIGHT_RAIL}\n", "    right_rail: {element_set: RIGHT_RAIL}\n" "  steady_from: 1\n  fatigue: {hours: 100}\n", "fatigue:", "frame.fatigue"),
       study_row("STUDY-58", "soil: {stiffness: 40000,", "soil: {stiffness: 1e308,", "soil: {stiffness: 1e308", "soil.stiffness"),
       // names that label frame loads and sweep parameters
       study_row("STUDY-59", "{name: rear_axle,", "{name: engine,", "{name: engine, weight: 900", "frame.added_masses[1].name"),

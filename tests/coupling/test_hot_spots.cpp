@@ -5,7 +5,10 @@
 //  - the start-up / steady split where the steady report (or frame.steady_from,
 //    or half the record) puts it;
 //  - static = 0 gives total = dynamic; a static axial force adds N / A;
-//  - the yield-strength warning.
+//  - the yield-strength warning;
+//  - the fatigue life map (coupling/frame_fatigue.h): a sine's closed-form Miner damage
+//    per hour, fatigue/ applied by hand at a point, FAT classes per element set, and a
+//    duty cycle's damages adding with hours.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -14,7 +17,10 @@
 #include <cmath>
 #include <vector>
 
+#include "coupling/frame_fatigue.h"
 #include "coupling/frame_study.h"
+#include "fatigue/miner_damage.h"
+#include "fatigue/rainflow.h"
 #include "coupling/hot_spots.h"
 #include "fem/beam_section.h"
 #include "fem/section_stress.h"
@@ -182,3 +188,111 @@ TEST(HotSpots, AStressAboveTheDeclaredYieldStrengthWarns) {
 }
 
 }  // namespace
+
+// ---- The fatigue life map (coupling/frame_fatigue.h, docs/theory/fatigue.md sections 7-9).
+
+namespace fatigue = framedyn::fatigue;
+
+// A request of code IIW with the default FAT71 and the given details.
+coupling::FatigueRequest fatigue_request(std::vector<coupling::FatigueDetail> details = {}) {
+  coupling::FatigueRequest q;
+  q.details = std::move(details);
+  q.where = {"study.yaml", 1, "frame.fatigue"};
+  for (coupling::FatigueDetail& d : q.details) d.where = {"study.yaml", 2, "frame.fatigue.details"};
+  return q;
+}
+
+// 1000 samples at 10 ms, steady from 5 s: 500 samples, a block of 5 s holding
+// exactly 5 periods of a 1 Hz sine (sampled at its peaks, t = 0.25 + 0.5 k).
+// Corner +1+2 sees sigma = My c / I11: amplitude 71 MPa (range 142 MPa = 2 FAT71):
+// N = 2e6 (71 / 142)^3 = 2.5e5 on the m = 3 branch, so the block does 5 / 2.5e5 and an
+// hour 720 blocks: 0.0144 per hour, a life of 69.4 h (closed form, F.20-F.21).
+TEST(FatigueLifeMap, SineAtAStationGivesTheClosedFormMinerDamagePerHour) {
+  const double c = kB / 2, sigma = 71e6, m = sigma * kI11 / c;
+  const coupling::StressHistories h = histories(2, 1000, [&](int s, double t) { return (s == 0 ? 1.0 : 0.5) * m * std::sin(2 * 3.14159265358979 * t); });
+  fem::FrameModel model;
+  const coupling::LifeMap life = coupling::frame_life_map(model, h, {}, {5.0, "test"}, fatigue_request());
+  EXPECT_EQ(life.block_samples, 500u);
+  EXPECT_NEAR(life.block_seconds, 5.0, 1e-12);
+  const double expected = 5.0 / 2.5e5 * 3600.0 / 5.0;
+  EXPECT_NEAR(life.damage_per_hour[0][0], expected, 1e-5 * expected);  // float storage of the forces: ~1e-7 in stress
+  EXPECT_EQ(life.worst_station, 0u);
+  // Station 1 at half the amplitude: (1/2)^-3 = 8 times the life on the m = 3 branch (71 MPa range, above the knee's 41.5 MPa).
+  EXPECT_NEAR(life.damage_per_hour[1][0], expected / 8.0, 1e-5 * expected);
+}
+
+// At another point and with a static force and Goodman, the map's damage is fatigue/
+// applied by hand to the point's total stress over the steady window.
+TEST(FatigueLifeMap, DamageAtAPointEqualsFatigueModuleAppliedByHandToItsSteadyHistory) {
+  const double m = 800.0;
+  const coupling::StressHistories h = histories(1, 400, [&](int, double t) {
+    return m * (std::sin(2 * 3.14159265358979 * 7 * t) + 0.4 * std::sin(2 * 3.14159265358979 * 23 * t));
+  });
+  std::vector<fem::SectionForces> statics(1);
+  statics[0].n = 2e4;  // N: a tensile mean of 4 MPa
+  statics[0].my = 150.0;
+  coupling::FatigueRequest q = fatigue_request();
+  q.mean_stress = fatigue::MeanStressCorrection::goodman(400e6);
+  const coupling::LifeMap life = coupling::frame_life_map(fem::FrameModel{}, h, statics, {1.0, "test"}, q);
+  for (int point : {0, 3}) {
+    const std::vector<fem::PointStress> all = coupling::point_stress_history(h, 0, point, &statics);
+    std::vector<double> steady;
+    for (Eigen::Index j = 0; j < h.times.size(); ++j)
+      if (h.times(j) >= 1.0 - 1e-12) steady.push_back(all[static_cast<std::size_t>(j)].normal);
+    fatigue::MinerDamage by_hand(fatigue::iiw_normal_stress(71.0), 1.0, q.mean_stress);
+    fatigue::count_cycles(steady, fatigue::Residue::repeated_block, by_hand);
+    const double per_hour = by_hand.damage() * 3600.0 / (0.01 * static_cast<double>(steady.size()));
+    ASSERT_GT(per_hour, 0.0);
+    EXPECT_NEAR(life.damage_per_hour[0][static_cast<std::size_t>(point)], per_hour, 1e-12 * per_hour) << h.points[0][static_cast<std::size_t>(point)].name;
+  }
+}
+
+// Each station takes the class of the first listed set holding its element, else the default;
+// the same history on every station then scales its damage as FAT^-3 (m = 3 branch).
+TEST(FatigueLifeMap, FatClassPerElementSetFirstListedSetWinsElseTheDefault) {
+  const double c = kB / 2, m = 60e6 * kI11 / c;  // range 120 MPa: above every knee below
+  const coupling::StressHistories h = histories(4, 200, [&](int, double t) { return m * std::sin(2 * 3.14159265358979 * 10 * t); });
+  fem::FrameModel model;
+  model.element_sets["LEFT"] = {100, 101};
+  model.element_sets["BOTH"] = {101, 102};
+  const coupling::LifeMap life =
+      coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"left", 90.0, {}}, {"BOTH", 50.0, {}}}));
+  ASSERT_EQ(life.curve_of_station.size(), 4u);
+  EXPECT_EQ(life.assignment[static_cast<std::size_t>(life.curve_of_station[0])], "left (details[0])");
+  EXPECT_EQ(life.assignment[static_cast<std::size_t>(life.curve_of_station[1])], "left (details[0])");
+  EXPECT_EQ(life.assignment[static_cast<std::size_t>(life.curve_of_station[2])], "BOTH (details[1])");
+  EXPECT_EQ(life.assignment[static_cast<std::size_t>(life.curve_of_station[3])], "default");
+  const double d71 = life.damage_per_hour[3][0];
+  EXPECT_NEAR(life.damage_per_hour[0][0] / d71, std::pow(71.0 / 90.0, 3), 1e-9);
+  EXPECT_NEAR(life.damage_per_hour[1][0] / d71, std::pow(71.0 / 90.0, 3), 1e-9);
+  EXPECT_NEAR(life.damage_per_hour[2][0] / d71, std::pow(71.0 / 50.0, 3), 1e-9);
+  EXPECT_EQ(life.worst_station, 2u);
+  // A set the mesh lacks, and a set none of whose elements carries a station, are refused.
+  EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"RIGHT", 90.0, {}}})), framedyn::core::InputError);
+  model.element_sets["CROSS"] = {7};
+  EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"CROSS", 90.0, {}}})), framedyn::core::InputError);
+}
+
+// Two scenarios' maps with hours: the cycle's damage is sum H_i d_i at every location (Miner),
+// the dominant scenario the larger H_i d_i, and one scenario of H hours is that run scaled.
+TEST(FatigueLifeMap, DutyCycleDamagesAddWithHoursAndOneScenarioIsTheRunScaled) {
+  const double c = kB / 2, m = 60e6 * kI11 / c;
+  const coupling::StressHistories a = histories(2, 200, [&](int s, double t) { return (s == 0 ? 1.0 : 0.3) * m * std::sin(2 * 3.14159265358979 * 10 * t); });
+  const coupling::StressHistories b = histories(2, 200, [&](int s, double t) { return (s == 0 ? 0.3 : 1.0) * m * std::sin(2 * 3.14159265358979 * 20 * t); });
+  const coupling::LifeMap la = coupling::frame_life_map(fem::FrameModel{}, a, {}, {0.0, "test"}, fatigue_request());
+  const coupling::LifeMap lb = coupling::frame_life_map(fem::FrameModel{}, b, {}, {0.0, "test"}, fatigue_request());
+  const coupling::DutyLife duty = coupling::combine_duty_cycle({{"a", 100.0, &la}, {"b", 50.0, &lb}});
+  EXPECT_DOUBLE_EQ(duty.cycle_hours, 150.0);
+  for (std::size_t s = 0; s < 2; ++s)
+    for (std::size_t p = 0; p < la.damage_per_hour[s].size(); ++p)
+      EXPECT_NEAR(duty.damage_per_cycle[s][p], 100.0 * la.damage_per_hour[s][p] + 50.0 * lb.damage_per_hour[s][p], 1e-14 * duty.damage_per_cycle[s][p]);
+  EXPECT_EQ(duty.dominant[0][0], 0);  // station 0: a's full swing
+  EXPECT_EQ(duty.dominant[1][0], 1);  // station 1: b's, at twice the rate
+  EXPECT_NEAR(duty.life_hours(1, 0), 150.0 / duty.damage_per_cycle[1][0], 1e-12 * duty.life_hours(1, 0));
+  const double hours = 1234.0;
+  const coupling::DutyLife one = coupling::combine_duty_cycle({{"a", hours, &la}});
+  EXPECT_NEAR(one.damage_per_cycle[0][0], hours * la.damage_per_hour[0][0], 1e-14 * one.damage_per_cycle[0][0]);
+  EXPECT_NEAR(one.life_hours(0, 0), 1.0 / la.damage_per_hour[0][0], 1e-12 * one.life_hours(0, 0));
+  EXPECT_EQ(one.worst_station, la.worst_station);
+  EXPECT_EQ(one.worst_point, la.worst_point);
+}

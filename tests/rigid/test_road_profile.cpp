@@ -8,7 +8,10 @@
 #include <cstdio>
 #include <vector>
 
+#include "rigid/ground_input.h"
 #include "rigid/road_profile.h"
+
+#include <memory>
 
 namespace {
 
@@ -108,3 +111,26 @@ TEST(Iso8608RoadProfile, ASeedGivesTheSameGroundAndAnotherSeedAnother) {
 }
 
 }  // namespace
+
+// The tires' ground input of kind road (rigid/ground_input.h): a rear tire `behind` = the
+// wheelbase sees the front tire's height and vertical velocity wheelbase / speed later, and
+// both equal RoughGroundInput's axles on the same profile.
+TEST(Iso8608RoadProfile, RoadGroundInputsRearDelayIsWheelbaseOverSpeed) {
+  const double v = 2.0, wheelbase = 1.8288;  // m/s; 72 in
+  auto profile = std::make_shared<const RoadProfile>(options(RoadClass::D, 100.0));
+  GroundInput front, rear;
+  front.kind = rear.kind = GroundInput::Kind::road;
+  front.road = rear.road = profile;
+  front.speed = rear.speed = v;
+  rear.behind = wheelbase;
+  const RoughGroundInput axles(*profile, v, wheelbase);
+  const double scale = std::sqrt(profile->mean_square());
+  for (double t : {1.0, 2.345, 6.5}) {
+    EXPECT_NEAR(rear.displacement(t + wheelbase / v), front.displacement(t), 1e-9 * scale);
+    EXPECT_NEAR(rear.velocity(t + wheelbase / v), front.velocity(t), 1e-9 * v);
+    EXPECT_NEAR(front.displacement(t), axles.at(t).front_height, 1e-12 * scale);
+    EXPECT_NEAR(rear.displacement(t), axles.at(t).rear_height, 1e-12 * scale);
+    EXPECT_NEAR(rear.velocity(t), axles.at(t).rear_velocity, 1e-12 * v);
+  }
+  EXPECT_TRUE(front.breakpoints().empty());  // smooth: no kinks for the integrator to stop at
+}

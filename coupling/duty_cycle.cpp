@@ -1,0 +1,94 @@
+// A duty cycle: read, run every scenario's pipeline, combine the life maps; see duty_cycle.h.
+#include "coupling/duty_cycle.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <functional>
+#include <set>
+
+#include "coupling/rigid_study_3d.h"
+
+namespace framedyn::coupling {
+
+DutyCycleRequest read_duty_cycle(const std::string& file) {
+  const YAML::Node doc = load_yaml_file(file);
+  const core::UnitSystem si = core::UnitSystem::si();
+  YamlMap top(doc, "", file, &si);
+  top.allow_only({"framedyn_study", "name", "model", "units", "scenarios", "fatigue"});
+  DutyCycleRequest q;
+  q.file = file;
+  q.name = top.text_or("name", std::filesystem::path(file).stem().string());
+  const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+  const std::vector<YamlMap> scenarios = top.list_of_maps("scenarios");
+  if (scenarios.empty()) throw top.error("scenarios", "a list of scenarios {name, study, hours}", top.has("scenarios") ? "an empty list" : "no scenarios");
+  std::set<std::string> names;
+  for (const YamlMap& s : scenarios) {
+    s.allow_only({"name", "study", "hours"});
+    DutyCycleScenarioSpec spec;
+    spec.name = s.text("name");
+    if (!names.insert(spec.name).second) throw s.error("name", "a scenario name used once", "'" + spec.name + "' again");
+    const std::filesystem::path p(s.text("study"));
+    spec.study = p.is_absolute() ? p : dir / p;
+    spec.hours = s.positive("hours", core::Quantity::dimensionless);
+    spec.where = s.location("study");
+    spec.where.key = s.path() + ".study";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(spec.study, ec))
+      throw core::InputError(spec.where, "a study file (a path relative to the duty-cycle file)", "'" + spec.study.string() + "', no such file");
+    q.scenarios.push_back(spec);
+  }
+  // The details are assessed the same way in every scenario: one fatigue block for the cycle
+  // (its hours, if given, are replaced by each scenario's).
+  if (top.has("fatigue")) {
+    const YamlMap f = top.map("fatigue");
+    q.fatigue = read_fatigue_block(f);
+  } else {
+    q.fatigue.where = top.location("");
+    q.fatigue.where.key = "fatigue";
+  }
+  return q;
+}
+
+DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<void(const std::string&)>& stage) {
+  DutyCycleResults out;
+  for (const DutyCycleScenarioSpec& spec : q.scenarios) {
+    if (stage) stage(fmt::format("scenario {} ({})", spec.name, spec.study.string()));
+    const auto start = std::chrono::steady_clock::now();
+    if (const std::string model = study_model(spec.study.string()); model != "rigid_3d")
+      throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block", "'" + spec.study.string() + "', model " + model);
+    const RigidStudy3D study = read_rigid_study_3d(spec.study.string());
+    if (!study.frame_response || !study.response)
+      throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block",
+                             "'" + spec.study.string() + "', without " + (study.response ? "frame_response" : "analysis.response"));
+    FrameStudyRequest request = *study.frame_response;
+    request.fatigue = q.fatigue;
+    request.fatigue->hours = spec.hours;
+    request.pvd = false;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
+    const RigidResults3D r = run_rigid_study_3d(study);
+    const LoadHistory loads = all_frame_loads(*r.frame_loads), static_loads = all_frame_loads(*r.static_frame_loads);
+    DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
+    s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The same stations in every scenario: the same mesh, outputs and stations per element.
+    if (!out.scenarios.empty()) {
+      const StressHistories& a = out.scenarios.front().frame.stress;
+      const StressHistories& b = s.frame.stress;
+      bool same = a.stations.size() == b.stations.size();
+      for (std::size_t k = 0; same && k < a.stations.size(); ++k)
+        same = a.stations[k].element_id == b.stations[k].element_id && a.stations[k].station == b.stations[k].station && a.stations[k].set == b.stations[k].set &&
+               a.points[static_cast<std::size_t>(a.stations[k].section)].size() == b.points[static_cast<std::size_t>(b.stations[k].section)].size();
+      if (!same)
+        throw core::InputError(spec.where,
+                               fmt::format("a frame_response with the same mesh, element-set outputs and stations as scenario {} ({} stations)",
+                                           out.scenarios.front().name, a.stations.size()),
+                               fmt::format("{} stations", b.stations.size()) + (a.stations.size() == b.stations.size() ? " at other elements or stations" : ""));
+    }
+    out.scenarios.push_back(std::move(s));
+  }
+  std::vector<DutyScenario> parts;
+  for (const DutyCycleScenarioResult& s : out.scenarios) parts.push_back({s.name, s.hours, &*s.frame.life});
+  out.life = combine_duty_cycle(parts);
+  return out;
+}
+
+}  // namespace framedyn::coupling

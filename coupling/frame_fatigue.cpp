@@ -1,0 +1,228 @@
+// Fatigue life of the frame and of a duty cycle; see frame_fatigue.h and docs/theory/fatigue.md sections 7-9.
+#include "coupling/frame_fatigue.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+#include "fatigue/miner_damage.h"
+#include "fatigue/rainflow.h"
+#include "fem/section_stress.h"
+
+namespace framedyn::coupling {
+
+namespace {
+
+constexpr double kTie = 1e-6;  // relative: values this close count as equal (round-off differs between CPUs)
+constexpr double kSecondsPerHour = 3600.0;
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// "FAT71", "EN71" or 71: the class in MPa; nullopt otherwise.
+std::optional<double> parse_class(const YAML::Node& n) {
+  if (!n.IsScalar()) return std::nullopt;
+  std::string s = n.Scalar();
+  for (const char* prefix : {"FAT", "EN"})
+    if (upper(s).rfind(prefix, 0) == 0) {
+      s = s.substr(std::string(prefix).size());
+      break;
+    }
+  if (s.empty() || s.find_first_not_of("0123456789.") != std::string::npos) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || !(v > 0.0) || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+double read_class(const YamlMap& m, const std::string& key) {
+  const std::optional<double> c = parse_class(m.node()[key]);
+  if (!c) throw m.error(key, "a FAT class or detail category in MPa (e.g. FAT71 or 71)", describe(m.node()[key]));
+  return *c;
+}
+
+}  // namespace
+
+std::string fatigue_code_name(FatigueCode code) {
+  return code == FatigueCode::iiw ? "IIW 2016 (Hobbacher, IIW-2259-15)" : "EN 1993-1-9:2005";
+}
+
+FatigueRequest read_fatigue_block(const YamlMap& f) {
+  f.allow_only({"code", "default", "details", "mean_stress", "ultimate_strength", "thickness", "thickness_exponent", "hours"});
+  FatigueRequest r;
+  r.where = f.location("");
+  r.where.key = f.path();
+  const std::string code = f.text_or("code", "IIW");
+  if (code == "IIW") r.code = FatigueCode::iiw;
+  else if (code == "EN1993") r.code = FatigueCode::en1993;
+  else throw f.error("code", "IIW (IIW 2016 FAT classes) or EN1993 (EN 1993-1-9 detail categories)", "'" + code + "'");
+  if (f.has("default")) r.default_class_mpa = read_class(f, "default");
+  const std::vector<YamlMap> details = f.list_of_maps("details");
+  for (const YamlMap& d : details) {
+    d.allow_only({"element_set", "class"});
+    FatigueDetail detail;
+    detail.element_set = d.text("element_set");
+    detail.class_mpa = read_class(d, "class");
+    detail.where = d.location("element_set");
+    detail.where.key = d.path() + ".element_set";
+    r.details.push_back(detail);
+  }
+  const std::string mean = f.text_or("mean_stress", "none");
+  if (mean == "goodman") {
+    if (!f.has("ultimate_strength"))
+      throw f.error("mean_stress", "mean_stress: goodman with ultimate_strength (the base metal's tensile strength)", "no ultimate_strength");
+    r.mean_stress = fatigue::MeanStressCorrection::goodman(f.positive("ultimate_strength", core::Quantity::stress));
+  } else if (mean == "none") {
+    if (f.has("ultimate_strength"))
+      throw f.error("ultimate_strength", "ultimate_strength only with mean_stress: goodman (as-welded details take no mean stress)", "mean_stress: none");
+  } else {
+    throw f.error("mean_stress", "none (as-welded details) or goodman (base metal)", "'" + mean + "'");
+  }
+  if (f.has("thickness")) r.thickness = f.positive("thickness", core::Quantity::length);
+  if (f.has("thickness_exponent")) {
+    if (r.code != FatigueCode::iiw) throw f.error("thickness_exponent", "no thickness_exponent with code: EN1993 (its k_s takes n = 0.2)", "thickness_exponent");
+    r.thickness_exponent = f.non_negative("thickness_exponent", core::Quantity::dimensionless);
+  }
+  if (f.has("hours")) r.hours = f.positive("hours", core::Quantity::dimensionless);
+  return r;
+}
+
+fatigue::SnCurve fatigue_curve(const FatigueRequest& q, double class_mpa) {
+  fatigue::SnCurve c = q.code == FatigueCode::iiw ? fatigue::iiw_normal_stress(class_mpa) : fatigue::en1993_normal_stress(class_mpa);
+  if (q.thickness) c = q.code == FatigueCode::iiw ? fatigue::iiw_thickness_correction(c, *q.thickness, q.thickness_exponent) : fatigue::en1993_size_effect(c, *q.thickness);
+  return c;
+}
+
+double repeated_block_damage(const std::vector<double>& stress_pa, const fatigue::SnCurve& curve, const fatigue::MeanStressCorrection& mean_stress) {
+  fatigue::MinerDamage damage(curve, 1.0, mean_stress);
+  fatigue::count_cycles(stress_pa, fatigue::Residue::repeated_block, damage);
+  return damage.damage();
+}
+
+std::pair<std::size_t, int> worst_location(const std::vector<std::vector<double>>& v) {
+  double m = -std::numeric_limits<double>::infinity();
+  for (const auto& row : v)
+    for (double x : row) m = std::max(m, x);
+  const double threshold = m - kTie * std::abs(m);
+  for (std::size_t s = 0; s < v.size(); ++s)
+    for (std::size_t p = 0; p < v[s].size(); ++p)
+      if (v[s][p] >= threshold) return {s, static_cast<int>(p)};
+  return {0, 0};
+}
+
+double LifeMap::max_damage_per_hour() const {
+  if (worst_station >= damage_per_hour.size() || damage_per_hour[worst_station].empty()) return 0.0;
+  return damage_per_hour[worst_station][static_cast<std::size_t>(worst_point)];
+}
+
+LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, const std::vector<fem::SectionForces>& static_forces,
+                       const SteadyWindow& window, const FatigueRequest& q) {
+  LifeMap out;
+  out.code = fatigue_code_name(q.code);
+  // Each station's curve: the first details entry whose set holds its element, else the default (F.22).
+  std::map<int, std::size_t> detail_of_element;
+  for (std::size_t d = q.details.size(); d-- > 0;) {  // backwards: the first listed wins
+    const auto set = model.element_sets.find(upper(q.details[d].element_set));
+    if (set == model.element_sets.end())
+      throw core::InputError(q.details[d].where, "an element set of the frame mesh", "'" + q.details[d].element_set + "', not in the mesh");
+    for (int id : set->second) detail_of_element[id] = d;
+  }
+  std::vector<bool> used(q.details.size(), false);
+  std::map<std::string, int> curve_index;
+  std::vector<fatigue::SnCurve> curves;
+  out.curve_of_station.reserve(h.stations.size());
+  for (const StressStation& st : h.stations) {
+    const auto at = detail_of_element.find(st.element_id);
+    const double cls = at == detail_of_element.end() ? q.default_class_mpa : q.details[at->second].class_mpa;
+    const std::string who = at == detail_of_element.end() ? "default" : fmt::format("{} (details[{}])", q.details[at->second].element_set, at->second);
+    if (at != detail_of_element.end()) used[at->second] = true;
+    const std::string key = fmt::format("{:.10g}|{}", cls, who);
+    auto found = curve_index.find(key);
+    if (found == curve_index.end()) {
+      found = curve_index.emplace(key, static_cast<int>(curves.size())).first;
+      curves.push_back(fatigue_curve(q, cls));
+      out.curves.push_back(curves.back().name());
+      out.assignment.push_back(who);
+    }
+    out.curve_of_station.push_back(found->second);
+  }
+  for (std::size_t d = 0; d < q.details.size(); ++d)
+    if (!used[d])
+      throw core::InputError(q.details[d].where, "an element set with elements on the frame's element-set outputs (the stations the life map covers)",
+                             "'" + q.details[d].element_set + "', on none of them");
+  // The steady window as a repeated block: its n samples at spacing dt repeat with period n dt (F.20).
+  const double edge = window.from - 1e-9 * std::max(1.0, std::abs(window.from));
+  std::vector<Eigen::Index> steady;
+  for (Eigen::Index j = 0; j < h.times.size(); ++j)
+    if (h.times(j) >= edge) steady.push_back(j);
+  if (steady.size() < 2)
+    throw core::InputError(q.where, fmt::format("a steady window with at least two output times (steady from {:g} s, {})", window.from, window.source),
+                           fmt::format("{} output times from {:g} s on", steady.size(), window.from));
+  const double span = h.times(steady.back()) - h.times(steady.front());
+  out.block_samples = steady.size();
+  out.block_seconds = span * static_cast<double>(steady.size()) / static_cast<double>(steady.size() - 1);
+  const double per_hour = kSecondsPerHour / out.block_seconds;
+  out.damage_per_hour.resize(h.stations.size());
+  std::vector<double> sigma(steady.size());
+  for (std::size_t s = 0; s < h.stations.size(); ++s) {
+    const std::size_t sec = static_cast<std::size_t>(h.stations[s].section);
+    const fem::SectionForces fs = static_forces.empty() ? fem::SectionForces{} : static_forces.at(s);
+    const std::vector<fem::SectionPoint>& points = h.points[sec];
+    out.damage_per_hour[s].resize(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      for (std::size_t k = 0; k < steady.size(); ++k) {
+        fem::SectionForces f = h.forces_at(s, steady[k]);
+        f.n += fs.n, f.vy += fs.vy, f.vz += fs.vz, f.t += fs.t, f.my += fs.my, f.mz += fs.mz;
+        sigma[k] = fem::point_stress(h.sections[sec], points[p], f).normal;
+      }
+      out.damage_per_hour[s][p] = repeated_block_damage(sigma, curves[static_cast<std::size_t>(out.curve_of_station[s])], q.mean_stress) * per_hour;
+    }
+  }
+  std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_hour);
+  return out;
+}
+
+double DutyLife::life_hours(std::size_t station, int point) const {
+  const double d = damage_per_cycle.at(station).at(static_cast<std::size_t>(point));
+  return d > 0.0 ? cycle_hours / d : std::numeric_limits<double>::infinity();
+}
+
+DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios) {
+  if (scenarios.empty()) throw std::invalid_argument("a duty cycle needs at least one scenario");
+  DutyLife out;
+  const LifeMap& first = *scenarios.front().map;
+  out.damage_per_cycle.resize(first.damage_per_hour.size());
+  out.dominant.resize(first.damage_per_hour.size());
+  for (std::size_t s = 0; s < first.damage_per_hour.size(); ++s) {
+    out.damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
+    out.dominant[s].assign(first.damage_per_hour[s].size(), 0);
+  }
+  for (const DutyScenario& sc : scenarios) {
+    bool same = sc.map && sc.map->damage_per_hour.size() == first.damage_per_hour.size();
+    for (std::size_t s = 0; same && s < first.damage_per_hour.size(); ++s) same = sc.map->damage_per_hour[s].size() == first.damage_per_hour[s].size();
+    if (!same) throw std::invalid_argument("scenario " + sc.name + ": its life map has other stations or points than the first scenario's");
+    out.cycle_hours += sc.hours;
+  }
+  for (std::size_t s = 0; s < out.damage_per_cycle.size(); ++s)
+    for (std::size_t p = 0; p < out.damage_per_cycle[s].size(); ++p) {
+      std::vector<double> part;
+      for (const DutyScenario& sc : scenarios) part.push_back(sc.hours * sc.map->damage_per_hour[s][p]);  // F.23
+      double sum = 0.0;
+      for (double d : part) sum += d;
+      out.damage_per_cycle[s][p] = sum;
+      out.dominant[s][p] = static_cast<int>(stable_argmax(part));
+    }
+  std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_cycle);
+  return out;
+}
+
+}  // namespace framedyn::coupling

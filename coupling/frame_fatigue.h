@@ -1,0 +1,116 @@
+// Fatigue life of the frame (docs/theory/fatigue.md, sections 7-9, Eqs. F.20-F.25): at
+// every stress station and section point of the element-set outputs, the total normal
+// stress (static + dynamic, coupling/hot_spots.h) over the steady window is rainflow-
+// counted as a repeated block (ASTM E1049, fatigue/rainflow.h), its Palmgren-Miner damage
+// taken on the S-N curve of the station's element set (a FAT class of IIW 2016 or a
+// detail category of EN 1993-1-9, fatigue/sn_curve.h), and scaled from the window to an
+// hour (F.20): d_h = D_window * 3600 s / T_block, the life L = 1 / d_h hours (F.21).
+// Which stress: the normal stress range of the section point (details loaded normal to
+// the weld toe, IIW §3.2 / EN 1993-1-9 Table 8.1-8.5); the codes' normal + shear
+// combination is not taken (the section points carry |tau| only: its sign, and so its
+// range, is lost; docs/theory/fatigue.md section 7 says what that leaves out).
+//
+// A duty cycle (F.23-F.25): scenarios i with hours H_i, each a life map per hour d_h,i;
+// the damage over the cycle D = sum_i H_i d_h,i (Miner: damage adds), the life in
+// cycles 1 / D and in hours sum_i H_i / D; the scenario with the largest H_i d_h,i
+// dominates a location (the lowest scenario index among those within 1e-6 relative).
+//
+// The study key (frame.fatigue / frame_response.fatigue, docs/user-guide.md "Fatigue"):
+//   fatigue:
+//     code: IIW                     # IIW (2016) | EN1993 (EN 1993-1-9)
+//     default: FAT71                # FAT class / detail category of sets not listed (MPa)
+//     details: [{element_set: LEFT_RAIL, class: FAT80}]   # first listed set holding an element wins
+//     mean_stress: none             # none (as-welded) | goodman (with ultimate_strength)
+//     ultimate_strength: 58000      # stress, Goodman only
+//     thickness: 0.5                # length: wall thickness for the thickness correction (none at <= 25 mm)
+//     thickness_exponent: 0.3       # IIW n (EN 1993-1-9 uses 0.2)
+//     hours: 1000                   # h: the damage reported is over this many hours
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "coupling/hot_spots.h"
+#include "coupling/yaml_input.h"
+#include "fatigue/mean_stress.h"
+#include "fatigue/sn_curve.h"
+#include "fem/frame_model.h"
+
+namespace framedyn::coupling {
+
+enum class FatigueCode { iiw, en1993 };
+
+struct FatigueDetail {
+  std::string element_set;     // as the study spells it (mesh sets are matched case-insensitively)
+  double class_mpa = 71.0;     // FAT class / detail category: the normal stress range at 2e6 cycles, MPa
+  core::InputLocation where;   // for messages about the set
+};
+
+struct FatigueRequest {
+  FatigueCode code = FatigueCode::iiw;
+  double default_class_mpa = 71.0;
+  std::vector<FatigueDetail> details;
+  fatigue::MeanStressCorrection mean_stress = fatigue::MeanStressCorrection::none();
+  std::optional<double> thickness;  // m
+  double thickness_exponent = 0.3;  // IIW n
+  double hours = 1.0;               // h
+  core::InputLocation where;        // the block, for messages
+};
+
+// The `fatigue` map (STUDY-114 .. STUDY-119).
+FatigueRequest read_fatigue_block(const YamlMap& block);
+// The S-N curve of a class under the request's code and thickness correction.
+fatigue::SnCurve fatigue_curve(const FatigueRequest& request, double class_mpa);
+// "IIW 2016 (Hobbacher, IIW-2259-15)" or "EN 1993-1-9:2005".
+std::string fatigue_code_name(FatigueCode code);
+
+// Damage per hour and life at every station and section point.
+struct LifeMap {
+  std::string code;                       // the code's full name
+  double block_seconds = 0.0;             // T_block: the steady window as a repeated block (n samples x dt)
+  std::size_t block_samples = 0;
+  std::vector<int> curve_of_station;      // index into curves, per StressHistories station
+  std::vector<std::string> curves;        // curve names (SnCurve::name), in first use order
+  std::vector<std::string> assignment;    // per curve: "LEFT_RAIL (details[0])" / "default" ...
+  // Per station s, per section point p of its section: damage per hour (1/h).
+  std::vector<std::vector<double>> damage_per_hour;
+  // The location of the largest damage per hour (ties to the lowest station, then point).
+  std::size_t worst_station = 0;
+  int worst_point = 0;
+  double max_damage_per_hour() const;
+};
+
+// The life map of one run. Throws core::InputError (STUDY-120) for a details set the mesh
+// lacks or whose elements no output station lies on.
+LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& histories, const std::vector<fem::SectionForces>& static_forces,
+                       const SteadyWindow& window, const FatigueRequest& request);
+
+// The damage of one stress history (Pa) rainflow-counted as a repeated block on `curve`:
+// what the life map does at every point, exposed so a test can apply fatigue/ by hand.
+double repeated_block_damage(const std::vector<double>& stress_pa, const fatigue::SnCurve& curve, const fatigue::MeanStressCorrection& mean_stress);
+
+// A duty cycle's life: scenarios' life maps (same stations and points) with their hours.
+struct DutyScenario {
+  std::string name;
+  double hours = 0.0;
+  const LifeMap* map = nullptr;
+};
+struct DutyLife {
+  double cycle_hours = 0.0;                           // sum H_i
+  std::vector<std::vector<double>> damage_per_cycle;  // D per station and point (F.23)
+  std::vector<std::vector<int>> dominant;             // the scenario index doing most damage there
+  std::size_t worst_station = 0;
+  int worst_point = 0;
+  // Life in hours of the duty cycle at a location: cycle_hours / D (infinite for D = 0).
+  double life_hours(std::size_t station, int point) const;
+};
+// Throws std::invalid_argument when the maps do not have the same stations and points.
+DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios);
+
+// The worst location of a per-station-and-point table (largest value; ties within 1e-6
+// relative to the lowest station, then the lowest point).
+std::pair<std::size_t, int> worst_location(const std::vector<std::vector<double>>& values);
+
+}  // namespace framedyn::coupling
