@@ -250,7 +250,8 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
       coupling::FrameStudyRequest cq = *study.frame_response;
       cq.supports = s;
       cq.compare_supports.clear();
-      cq.pvd = false;
+      cq.paraview = coupling::ParaviewOutput::none;
+      cq.fatigue.reset();  // the life map is the run's own support's
       cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
       compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
       const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);

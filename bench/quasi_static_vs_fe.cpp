@@ -44,6 +44,7 @@
 namespace c = framedyn::coupling;
 namespace fem = framedyn::fem;
 namespace core = framedyn::core;
+namespace report = framedyn::report;
 
 namespace {
 

@@ -64,7 +64,7 @@ DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<v
     FrameStudyRequest request = *study.frame_response;
     request.fatigue = q.fatigue;
     request.fatigue->hours = spec.hours;
-    request.pvd = false;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
+    request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
     const RigidResults3D r = run_rigid_study_3d(study);
     const LoadHistory loads = all_frame_loads(*r.frame_loads), static_loads = all_frame_loads(*r.static_frame_loads);
     DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};

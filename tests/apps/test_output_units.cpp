@@ -358,7 +358,7 @@ TEST(OutputUnits, FramePartsInertiaScaleIsTheTotalInertiaInTheStudysUnit) {
 // or it sits under a key that names something dimensionless. A unit carried
 // in a key's name (`frequency_hz`) fails here.
 const std::set<std::string> kDimensionlessKeys = {
-    "mode", "dofs", "free_dofs", "nodes", "elements", "beam_elements", "output_times", "events", "steps", "count", "grid_points",
+    "mode", "dofs", "free_dofs", "nodes", "elements", "beam_elements", "output_times", "events", "steps", "step", "count", "grid_points",
     "mode_count", "rigid_body_modes", "free_rigid_motions", "rigid_body_modes_expected", "parts", "eigenvalues_below", "lanczos_runs",
     "restarts", "operator_solves", "iterations", "relative_residual", "target_count", "independent_targets", "shape_components", "jobs", "node", "element",
     "station", "frame_node", "fiber", "mount_nodes", "startup_times", "steady_times",
