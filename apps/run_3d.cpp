@@ -120,7 +120,8 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
     plot.y_unit = u.label(Quantity::force);
     std::vector<std::string> header = {report::column("time", u.label(Quantity::time))};
     for (const auto& [point, c] : f.series) {
-      const auto it = std::find_if(h.points.begin(), h.points.end(), [&](const coupling::LoadPointHistory& p) { return p.name == point; });
+      const std::string& name = point;  // C++17 lambdas cannot capture a structured binding (clang refuses it)
+      const auto it = std::find_if(h.points.begin(), h.points.end(), [&](const coupling::LoadPointHistory& p) { return p.name == name; });
       if (it == h.points.end()) throw std::logic_error("the frame loads have no load point " + point);
       report::PlotSeries ps{point + " " + coupling::kLoadComponents[c], time, {}};
       for (Eigen::Index i = 0; i < it->values.rows(); ++i) ps.y.push_back(u.from_si(it->values(i, c), Quantity::force));
