@@ -231,3 +231,33 @@ TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
 }
 
 }  // namespace
+
+// A duty cycle of one scenario is that scenario's own pipeline run with the same
+// fatigue block: the same damage per hour and the same shortest-life location
+// (the cycle's Miner sum over one scenario, theory/fatigue.md section 9, wired
+// end to end through `framedyn run` on both file kinds).
+TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
+  framedyn::testing::TempDir dir("framedyn_test_duty_cycle");
+  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
+  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
+  ASSERT_NE(text.find(mesh), std::string::npos);
+  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
+  const std::size_t support = text.find("\n  supports: none");
+  ASSERT_NE(support, std::string::npos);
+  text.insert(support + 1, "  fatigue: {code: IIW, default: FAT71}\n");
+  dir.write("offset.yaml", text);
+  const fs::path cycle = dir.write("cycle.yaml",
+                                   "framedyn_study: 1\nname: one scenario\nmodel: duty_cycle\n"
+                                   "scenarios:\n  - {name: offset, study: offset.yaml, hours: 40}\n"
+                                   "fatigue: {code: IIW, default: FAT71}\n");
+  ASSERT_EQ(run("run " + (dir / "offset.yaml").string() + " -q -o " + (dir / "single").string(), dir / "single.log"), 0) << slurp(dir / "single.log");
+  ASSERT_EQ(run("run " + cycle.string() + " -q -o " + (dir / "cycle").string(), dir / "cycle.log"), 0) << slurp(dir / "cycle.log");
+  const nlohmann::json single = nlohmann::json::parse(slurp(dir / "single" / "summary.json"))["fatigue"];
+  const nlohmann::json duty = nlohmann::json::parse(slurp(dir / "cycle" / "summary.json"))["fatigue"];
+  const double d = single["damage_per_hour"]["value"].get<double>();
+  ASSERT_GT(d, 0.0);
+  EXPECT_NEAR(duty["damage_per_hour"]["value"].get<double>(), d, 1e-12 * d);
+  EXPECT_NEAR(duty["damage_per_cycle"].get<double>(), 40.0 * d, 1e-12 * 40.0 * d);
+  for (const char* k : {"output", "element", "station", "point"}) EXPECT_EQ(duty["min_life"][k], single["min_life"][k]) << k;
+  EXPECT_NEAR(duty["min_life"]["value"].get<double>(), 1.0 / d, 1e-12 / d);
+}
