@@ -14,6 +14,7 @@
 // message says) exactly a complete new set; no DIR.partial-* or DIR.old-*;
 // no /tmp/framedyn_plot_<pid>_* of the run; no process left in the run's
 // process group (the gnuplot children).
+// A second campaign interrupts the XDMF series' one .h5 file while it grows.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -24,6 +25,8 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -84,7 +87,7 @@ std::vector<fs::path> entries_containing(const fs::path& dir, const std::string&
 }
 
 // The study, shortened, with its mesh found from the test's folder.
-std::string study_text() {
+std::string study_text(bool xdmf = false) {
   std::string s = read_text(kSource / "examples" / "straight_plowing.yaml");
   auto replace = [&s](const std::string& from, const std::string& to) {
     const std::size_t at = s.find(from);
@@ -92,15 +95,16 @@ std::string study_text() {
     s.replace(at, from.size(), to);
   };
   replace("duration: 1.0", "duration: 0.2");
-  replace("paraview: xdmf", "paraview: vtu");  // the series as many files: many moments to interrupt at
+  if (!xdmf) replace("paraview: xdmf", "paraview: vtu");  // the series as many files: many moments to interrupt at
   replace("mesh: ../meshes/r100_frame.inp", "mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
   return s;
 }
 
 // Starts `framedyn run study.yaml --figures --out results -q` in `dir`, in a
 // process group of its own (so that its children can be found afterwards).
-pid_t start_run(const fs::path& dir) {
-  std::vector<std::string> all = {kBinary, "run", "study.yaml", "--figures", "--out", "results", "-q"};
+pid_t start_run(const fs::path& dir, bool figures = true) {
+  std::vector<std::string> all = {kBinary, "run", "study.yaml", "--out", "results", "-q"};
+  if (figures) all.push_back("--figures");
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -146,6 +150,12 @@ bool has_child_in_group(pid_t pid) {
     if (pgrp == pid) return true;
   }
   return false;
+}
+
+std::uintmax_t size_of(const fs::path& p) {
+  std::error_code ec;
+  const std::uintmax_t n = fs::file_size(p, ec);
+  return ec ? 0 : n;
 }
 
 // Returns the exit status (or -signal) once the run has ended, or -1000 if it
@@ -259,6 +269,62 @@ TEST_F(InterruptCampaign, ThirtyTwoInterruptsLeaveEarlierResultsOrCompleteNewOne
   std::printf("[ campaign ] uninterrupted run %.2f s; %d interrupted (%d after the commit), %d finished first\n", run_seconds, interrupted,
               after_commit, finished);
   EXPECT_GE(interrupted, 16) << "most moments fall inside the run (the file and figure moments always do)";
+}
+
+
+// The XDMF series (paraview: xdmf, the default) is one .h5 that grows by one
+// time step at a time, then one .xdmf: interrupts while the .h5 is being
+// written (at 12 sizes spread from its first bytes to its full size) leave the
+// earlier results byte for byte and no partial folder, as for the VTU series.
+TEST_F(InterruptCampaign, InterruptsWhileTheHdf5FileGrowsLeaveEarlierResultsAndNoHalfWrittenFile) {
+  dir_.write("study.yaml", study_text(true));
+  const pid_t first = start_run(dir_.path(), false);
+  int status = -1000;
+  while ((status = poll_exit(first)) == -1000) std::this_thread::sleep_for(1ms);
+  ASSERT_EQ(status, 0) << read_text(dir_ / "stderr.txt");
+  const fs::path results = dir_ / "results";
+  const std::map<std::string, std::string> earlier = contents(results);
+  const std::set<std::string> all_names = names(results);
+  ASSERT_TRUE(all_names.count("frame_response.h5"));
+  ASSERT_TRUE(all_names.count("frame_response.xdmf"));
+  const std::uintmax_t full = size_of(results / "frame_response.h5");
+  ASSERT_GT(full, 0u);
+
+  int interrupted = 0, finished = 0;
+  for (int t = 0; t < 12; ++t) {
+    const int sig = t % 2 == 0 ? SIGINT : SIGTERM;
+    const std::uintmax_t at = 1 + full * t / 12;  // the .h5 in the partial folder has reached this size
+    SCOPED_TRACE("interrupt " + std::to_string(t + 1) + " at " + std::to_string(at) + " bytes of " + std::to_string(full));
+    const pid_t pid = start_run(dir_.path(), false);
+    while (!signals_blocked(pid) && (status = poll_exit(pid)) == -1000) std::this_thread::sleep_for(200us);
+    for (;;) {
+      if ((status = poll_exit(pid)) != -1000) break;
+      const std::vector<fs::path> partial = entries_containing(dir_.path(), "results.partial-");
+      if (!partial.empty() && size_of(partial.front() / "frame_response.h5") >= at) {
+        ::kill(pid, sig);
+        while ((status = poll_exit(pid)) == -1000) std::this_thread::sleep_for(1ms);
+        break;
+      }
+      std::this_thread::sleep_for(100us);
+    }
+    const std::string err = read_text(dir_ / "stderr.txt");
+    const bool kept_new = status != 0 && err.find("were complete (they are kept)") != std::string::npos;
+    if (status == 0 || kept_new) {
+      ++finished;
+      EXPECT_EQ(names(results), all_names);
+      fs::remove_all(results);
+      for (const auto& [name, text] : earlier) dir_.write("results/" + name, text);
+    } else {
+      ++interrupted;
+      EXPECT_EQ(status, 128 + sig) << err;
+      EXPECT_NE(err.find("no results written (earlier results left as they were)"), std::string::npos) << err;
+      EXPECT_TRUE(contents(results) == earlier) << "the earlier results changed";
+    }
+    EXPECT_TRUE(entries_containing(dir_.path(), ".partial-").empty());
+    EXPECT_TRUE(entries_containing(dir_.path(), ".old-").empty());
+  }
+  std::printf("[ campaign ] .h5 of %ju bytes; %d interrupted while it grew, %d finished first\n", full, interrupted, finished);
+  EXPECT_GE(interrupted, 6) << "the .h5 grows over most of the writing: most of these moments fall inside it";
 }
 
 }  // namespace
