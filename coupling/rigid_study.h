@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,12 @@ struct ResponseRequest {
 struct ParameterBound {
   double lower = 0.0, upper = 0.0;  // SI
   std::string basis;                // where the bounds come from (default rule or the study's reason)
+  // A rotary inertia whose body's box is declared (bounds[i].dimensions): the
+  // range that box allows (docs/theory/rigid.md, Eqs. 14.2-14.4) and the
+  // body's mass. The default bounds are this range; bounds overridden beyond
+  // it are allowed with a reason, and a fitted value outside it is warned of.
+  double body_mass = 0.0;  // SI; 0: no dimensions declared
+  double physical_lower = 0.0, physical_upper = std::numeric_limits<double>::infinity();
 };
 // A measured mode shape of one calibration target (calibration.targets[i].shape):
 // each component at a coordinate (in that coordinate's unit) or at a point of the

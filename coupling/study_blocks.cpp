@@ -404,7 +404,11 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
         throw b.error("dimensions", "an inertia whose body has a mass parameter '" + mass_name + "'", "'" + name + "'");
       }
       const double a = axis == 'x' ? d[1] : d[0], c = axis == 'z' ? d[1] : d[2];
-      bound = inertia_bounds_from_dimensions(mass, a, c, b.boolean_or("distributed", false), std::sqrt(nominal[i] / mass));
+      const bool distributed = b.boolean_or("distributed", false);
+      bound = inertia_bounds_from_dimensions(mass, a, c, distributed, std::sqrt(nominal[i] / mass));
+      bound.body_mass = mass;
+      bound.physical_upper = bound.upper;  // Eq. 14.3: no distribution inside the box reaches further
+      if (distributed) bound.physical_lower = bound.lower;  // Eq. 14.4
     } else if (b.has("distributed")) {
       throw b.error("distributed", "distributed only with dimensions", "no dimensions");
     }
@@ -431,6 +435,29 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
     req.regularization = r->positive("weight", Quantity::dimensionless);
   }
   return req;
+}
+
+std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units) {
+  std::vector<core::Warning> out;
+  constexpr double kSlack = 1e-6;  // relative: a value on the limit is inside it
+  for (std::size_t i = 0; i < c.bounds.size() && i < r.fitted.size(); ++i) {
+    const ParameterBound& b = c.bounds[i];
+    if (!(b.body_mass > 0)) continue;
+    const double v = r.fitted[i];
+    const bool high = v > b.physical_upper * (1 + kSlack), low = v < b.physical_lower * (1 - kSlack);
+    if (!high && !low) continue;
+    const double k = std::sqrt(v / b.body_mass), limit = std::sqrt((high ? b.physical_upper : b.physical_lower) / b.body_mass);
+    const std::string L = units.label(Quantity::length), I = units.label(Quantity::rotary_inertia);
+    core::add_warning(out, "calibration_outside_physical_range",
+                      fmt::format("calibration: '{}' fitted to {:.4g} {}, a radius of gyration of {:.4g} {} {} the {:.4g} {} its declared box allows "
+                                  "(docs/theory/rigid.md, section 14); the study's bounds ({}) let it out: the fitted machine is not a physical one",
+                                  c.parameters[i], units.from_si(v, Quantity::rotary_inertia), I, units.from_si(k, Quantity::length), L,
+                                  high ? "above" : "below", units.from_si(limit, Quantity::length), L, b.basis),
+                      {{"fitted", units.from_si(v, Quantity::rotary_inertia), I},
+                       {"radius_of_gyration", units.from_si(k, Quantity::length), L},
+                       {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration", units.from_si(limit, Quantity::length), L}});
+  }
+  return out;
 }
 
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,

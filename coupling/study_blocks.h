@@ -116,6 +116,12 @@ ParameterBound calibration_default_bounds(double nominal, core::Quantity q, doub
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
                                          const rigid::ModesOfParameters& modes_of);
 
+// A `calibration_outside_physical_range` warning for every fitted rotary
+// inertia outside the range its body's declared box allows (bounds overridden
+// beyond it with a reason; docs/theory/rigid.md, section 14), with the fitted
+// value, its radius of gyration and the limit crossed, in `units`.
+std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units);
+
 // Calibrates `parameters` in place (run_calibration, then the fitted values
 // set): get(p, name) and set(p, name, value) read and write a named
 // parameter, modes(machine) gives a Machine's modes as the analysis sees them.

@@ -241,6 +241,9 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
     out.upper.push_back(u);
   }
   const Eigen::VectorXd x0 = x;
+  out.information = static_cast<int>(information_count(targets));
+  out.degrees_of_freedom = out.information - static_cast<int>(np);
+  out.agreement_guaranteed = out.degrees_of_freedom <= 0;
 
   // Refuse what the targets cannot determine, before fitting (9.3).
   {

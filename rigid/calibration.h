@@ -99,6 +99,13 @@ struct CalibrationResult {
   int independent_targets = 0;              // singular values above 1e-3 of the largest
   std::vector<Eigen::VectorXd> unresolved;  // right singular vectors (in ln p) of the others and of the missing ones
   bool underdetermined = false;             // fewer independent targets than parameters (only with regularisation)
+  // The pieces of information the targets carry (a frequency each, m - 1 per
+  // measured shape of m components) less the parameters: with none to spare
+  // (<= 0) the fit can always meet its targets if it converges inside its
+  // bounds, so a match is guaranteed by construction and is no evidence (docs/theory/rigid.md, Eq. 14.1).
+  int information = 0;
+  int degrees_of_freedom = 0;
+  bool agreement_guaranteed = false;        // degrees_of_freedom <= 0
   double regularization = 0.0;              // the weight used
 };
 

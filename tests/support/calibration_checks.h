@@ -39,9 +39,19 @@ inline void expect_fit_properties(const std::string& what, const coupling::Calib
   // flag says whether the targets still determine every parameter.
   EXPECT_EQ(c.underdetermined, c.independent_targets < static_cast<int>(req.parameters.size()));
   EXPECT_EQ(c.regularization, req.regularization);
+  // Frequency targets only (the thesis cases have no measured shapes): the
+  // degrees of freedom are targets - parameters, the agreement guaranteed
+  // exactly when there are none to spare.
+  int information = static_cast<int>(req.targets.size());
+  for (const auto& s : req.shapes)
+    if (s) information += static_cast<int>(s->components.size()) - 1;
+  EXPECT_EQ(c.information, information);
+  EXPECT_EQ(c.degrees_of_freedom, information - static_cast<int>(req.parameters.size()));
+  EXPECT_EQ(c.agreement_guaranteed, c.degrees_of_freedom <= 0);
   const std::vector<int> match = rigid::match_targets(modes, req.targets);
   double worst = 0.0;
-  std::printf("%s: %zu targets, %d independent, %zu parameters\n", what.c_str(), req.targets.size(), c.independent_targets, c.fitted.size());
+  std::printf("%s: %zu targets, %d independent, %zu parameters, %d degrees of freedom%s\n", what.c_str(), req.targets.size(), c.independent_targets,
+              c.fitted.size(), c.degrees_of_freedom, c.agreement_guaranteed ? " (agreement guaranteed by construction)" : "");
   for (std::size_t t = 0; t < req.targets.size(); ++t) {
     ASSERT_GE(match[t], 0);
     const rigid::RigidMode& m = modes[static_cast<std::size_t>(match[t])];
