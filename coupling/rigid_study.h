@@ -68,6 +68,11 @@ struct CalibrationRequest {
   std::vector<ParameterBound> bounds;             // one per parameter
   double regularization = 0.0;                    // calibration.regularization.weight (0: none; underdetermined fits refused)
   core::InputLocation where;                      // the calibration block, for the refusal of an underdetermined fit
+  // calibration.pair_with: symmetric_modes (3-D) pairs the targets only with
+  // the modes symmetric about the X-Z plane (a planar table's modes); false:
+  // all modes. pair_with_where: the key, for its errors.
+  bool symmetric_modes = false;
+  core::InputLocation pair_with_where;
 };
 
 // The machine parameters a calibration may adjust, by name (SI values).

@@ -355,7 +355,7 @@ rigid::ShapeTarget shape_target(const ShapeRequest& s, const rigid::Multibody& m
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
                                             const std::function<core::Quantity(const std::string&)>& quantity,
                                             const std::vector<std::string>& known, bool three_d) {
-  cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization"});
+  cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization", "pair_with"});
   if (cal.has("fit_labels"))
     throw cal.error("fit_labels", "no fit_labels (the dominant coordinates are never fitted: they are checked after the fit, as a prediction)",
                     "fit_labels");
@@ -434,7 +434,40 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
     r->allow_only({"weight"});
     req.regularization = r->positive("weight", Quantity::dimensionless);
   }
+  if (cal.has("pair_with")) {
+    const std::string pair = cal.text("pair_with");
+    if (pair == "symmetric_modes" && three_d)
+      req.symmetric_modes = true;
+    else if (pair != "all_modes")
+      throw cal.error("pair_with", three_d ? "all_modes or symmetric_modes" : "all_modes (symmetric_modes is for 3-D studies)", "'" + pair + "'");
+    req.pair_with_where = cal.error("pair_with", "", "").where();
+  }
   return req;
+}
+
+namespace {
+// The coordinates of the 3-D machines that change sign when the machine is
+// mirrored in its X-Z plane: lateral translations, rolls and yaws.
+bool mirror_antisymmetric(const std::string& name) {
+  static const char* const kNames[] = {"y", "theta_x", "theta_z", "v", "theta_u", "theta_w", "eta", "alpha"};
+  return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
+}
+}  // namespace
+
+rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std::vector<std::string>& coordinates) {
+  if (!c.symmetric_modes) return {};
+  std::vector<Eigen::Index> odd;
+  for (std::size_t i = 0; i < coordinates.size(); ++i)
+    if (mirror_antisymmetric(coordinates[i])) odd.push_back(static_cast<Eigen::Index>(i));
+  return [odd](const rigid::RigidMode& m) {
+    // Of a machine symmetric about X-Z a mode is symmetric or antisymmetric
+    // exactly; its kinetic energy in the antisymmetric coordinates is then
+    // round-off (1e-6: far from both 0-ish round-off and any coupled mode).
+    double share = 0.0;
+    for (Eigen::Index i : odd)
+      if (i < m.energy_share.size()) share += std::abs(m.energy_share(i));
+    return share < kSymmetricShareLimit;
+  };
 }
 
 std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units) {
@@ -461,7 +494,7 @@ std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, con
 }
 
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
-                                         const rigid::ModesOfParameters& modes_of) {
+                                         const rigid::ModesOfParameters& modes_of, const rigid::ModeFamily& family) {
   std::vector<double> initial;
   for (const std::string& name : c.parameters) initial.push_back(value(name));
   rigid::CalibrationOptions options;
@@ -470,6 +503,7 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
     options.upper.push_back(b.upper);
   }
   options.regularization = c.regularization;
+  options.admissible = family;
   return rigid::calibrate(modes_of, initial, c.targets, options);
 }
 

@@ -64,6 +64,34 @@ TEST(Calibration, TargetsArePairedWithModesByFrequency) {
   EXPECT_TRUE(r.labels_match);
 }
 
+// A family restricts the pairing (calibration.pair_with): three uncoupled
+// unit masses a, b, c at 1, 1.5 and 2 Hz, the family excluding the modes
+// with b's energy (the out-of-plane ones of a 3-D machine). Targets 1.45 and
+// 2.1 Hz go to b and c by frequency alone, to a and c within the family; the
+// fit of a's and c's stiffnesses then reaches (2 pi 1.45)^2 and (2 pi 2.1)^2,
+// which from the unrestricted pairing it could not (b is not fitted).
+TEST(Calibration, TargetsArePairedOnlyWithModesOfTheirFamily) {
+  const rigid::ModesOfParameters modes_of = [](const std::vector<double>& p) {
+    const Eigen::Vector3d k(p[0], std::pow(kTwoPi * 1.5, 2), p[1]);
+    return rigid::rigid_modes(Eigen::MatrixXd::Identity(3, 3), k.asDiagonal().toDenseMatrix(), {"a", "b", "c"});
+  };
+  const rigid::ModeFamily without_b = [](const rigid::RigidMode& m) { return std::abs(m.energy_share(1)) < 1e-6; };
+  const std::vector<rigid::FrequencyTarget> targets = {{1.45, "a", std::nullopt}, {2.1, "c", std::nullopt}};
+  const std::vector<double> start = {std::pow(kTwoPi, 2), std::pow(kTwoPi * 2.0, 2)};
+  const std::vector<rigid::RigidMode> modes = modes_of(start);
+  const std::vector<int> any = rigid::match_targets(modes, targets), family = rigid::match_targets(modes, targets, without_b);
+  EXPECT_EQ(modes[static_cast<std::size_t>(any[0])].dominant, "b");
+  EXPECT_EQ(modes[static_cast<std::size_t>(family[0])].dominant, "a");
+  EXPECT_EQ(modes[static_cast<std::size_t>(family[1])].dominant, "c");
+  rigid::CalibrationOptions o;
+  o.admissible = without_b;
+  const rigid::CalibrationResult r = rigid::calibrate(modes_of, start, targets, o);
+  EXPECT_NEAR(r.fitted[0] / std::pow(kTwoPi * 1.45, 2), 1.0, 1e-8);
+  EXPECT_NEAR(r.fitted[1] / std::pow(kTwoPi * 2.1, 2), 1.0, 1e-8);
+  EXPECT_TRUE(r.labels_match);
+  EXPECT_FALSE(r.iteration_limit_reached);
+}
+
 // The dominant coordinates are a prediction: with M = I and K = R diag(k1, k2)
 // R^T, R turned by 1.2 rad (beyond pi/4), the 1 Hz mode is led by b and the
 // 2 Hz one by a. Fitting k1, k2 to 1 Hz "a" and 2 Hz "b" reaches both
