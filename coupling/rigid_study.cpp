@@ -277,6 +277,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
     r.calibration = calibrate_parameters<rigid::Machine2D>(study.machine, *study.calibration, get_parameter, set_parameter, [&](const rigid::Machine2D& m) {
       return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(study.modal_soil), m.model().coordinate_names(), study.fixed_coordinates);
     });
+  if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
   rigid::Machine2D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
   r.coordinate_quantities = machine.model().coordinate_quantities();
@@ -290,7 +291,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
   r.contacts = summarize_contacts(machine, tr);
-  r.warnings = contact_warnings(r.contacts, study.units);
+  for (core::Warning& w : contact_warnings(r.contacts, study.units)) r.warnings.push_back(std::move(w));
 
   // Element forces: spring + damper + static (Eq. 2.42), compression positive.
   const rigid::Multibody& mb = machine.model();

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,12 @@ struct ResponseRequest {
 struct ParameterBound {
   double lower = 0.0, upper = 0.0;  // SI
   std::string basis;                // where the bounds come from (default rule or the study's reason)
+  // A rotary inertia whose body's box is declared (bounds[i].dimensions): the
+  // range that box allows (docs/theory/rigid.md, Eqs. 14.2-14.4) and the
+  // body's mass. The default bounds are this range; bounds overridden beyond
+  // it are allowed with a reason, and a fitted value outside it is warned of.
+  double body_mass = 0.0;  // SI; 0: no dimensions declared
+  double physical_lower = 0.0, physical_upper = std::numeric_limits<double>::infinity();
 };
 // A measured mode shape of one calibration target (calibration.targets[i].shape):
 // each component at a coordinate (in that coordinate's unit) or at a point of the
@@ -61,6 +68,11 @@ struct CalibrationRequest {
   std::vector<ParameterBound> bounds;             // one per parameter
   double regularization = 0.0;                    // calibration.regularization.weight (0: none; underdetermined fits refused)
   core::InputLocation where;                      // the calibration block, for the refusal of an underdetermined fit
+  // calibration.pair_with: symmetric_modes (3-D) pairs the targets only with
+  // the modes symmetric about the X-Z plane (a planar table's modes); false:
+  // all modes. pair_with_where: the key, for its errors.
+  bool symmetric_modes = false;
+  core::InputLocation pair_with_where;
 };
 
 // The machine parameters a calibration may adjust, by name (SI values).

@@ -416,6 +416,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
     r.calibration = calibrate_parameters<rigid::Machine3D>(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::Machine3D& m) {
       return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting), m.model().coordinate_names(), study.fixed_coordinates);
     });
+  if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
   r.machine = study.machine;
   rigid::Machine3D machine(study.machine);
   r.coordinates = machine.model().coordinate_names();
@@ -431,7 +432,7 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
   r.contacts = summarize_contacts(machine, tr);
-  r.warnings = contact_warnings(r.contacts, study.units);
+  for (core::Warning& w : contact_warnings(r.contacts, study.units)) r.warnings.push_back(std::move(w));
   if (machine.blade_point() >= 0) {
     const rigid::Jacobian& j = machine.model().points()[static_cast<std::size_t>(machine.blade_point())].displacement;
     Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};

@@ -355,7 +355,7 @@ rigid::ShapeTarget shape_target(const ShapeRequest& s, const rigid::Multibody& m
 CalibrationRequest read_calibration_request(const YamlMap& cal, const std::function<double(const std::string&)>& value,
                                             const std::function<core::Quantity(const std::string&)>& quantity,
                                             const std::vector<std::string>& known, bool three_d) {
-  cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization"});
+  cal.allow_only({"parameters", "targets", "fit_labels", "bounds", "stiffness_factor", "regularization", "pair_with"});
   if (cal.has("fit_labels"))
     throw cal.error("fit_labels", "no fit_labels (the dominant coordinates are never fitted: they are checked after the fit, as a prediction)",
                     "fit_labels");
@@ -404,7 +404,11 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
         throw b.error("dimensions", "an inertia whose body has a mass parameter '" + mass_name + "'", "'" + name + "'");
       }
       const double a = axis == 'x' ? d[1] : d[0], c = axis == 'z' ? d[1] : d[2];
-      bound = inertia_bounds_from_dimensions(mass, a, c, b.boolean_or("distributed", false), std::sqrt(nominal[i] / mass));
+      const bool distributed = b.boolean_or("distributed", false);
+      bound = inertia_bounds_from_dimensions(mass, a, c, distributed, std::sqrt(nominal[i] / mass));
+      bound.body_mass = mass;
+      bound.physical_upper = bound.upper;  // Eq. 14.3: no distribution inside the box reaches further
+      if (distributed) bound.physical_lower = bound.lower;  // Eq. 14.4
     } else if (b.has("distributed")) {
       throw b.error("distributed", "distributed only with dimensions", "no dimensions");
     }
@@ -430,11 +434,67 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
     r->allow_only({"weight"});
     req.regularization = r->positive("weight", Quantity::dimensionless);
   }
+  if (cal.has("pair_with")) {
+    const std::string pair = cal.text("pair_with");
+    if (pair == "symmetric_modes" && three_d)
+      req.symmetric_modes = true;
+    else if (pair != "all_modes")
+      throw cal.error("pair_with", three_d ? "all_modes or symmetric_modes" : "all_modes (symmetric_modes is for 3-D studies)", "'" + pair + "'");
+    req.pair_with_where = cal.error("pair_with", "", "").where();
+  }
   return req;
 }
 
+namespace {
+// The coordinates of the 3-D machines that change sign when the machine is
+// mirrored in its X-Z plane: lateral translations, rolls and yaws.
+bool mirror_antisymmetric(const std::string& name) {
+  static const char* const kNames[] = {"y", "theta_x", "theta_z", "v", "theta_u", "theta_w", "eta", "alpha"};
+  return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
+}
+}  // namespace
+
+rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std::vector<std::string>& coordinates) {
+  if (!c.symmetric_modes) return {};
+  std::vector<Eigen::Index> odd;
+  for (std::size_t i = 0; i < coordinates.size(); ++i)
+    if (mirror_antisymmetric(coordinates[i])) odd.push_back(static_cast<Eigen::Index>(i));
+  return [odd](const rigid::RigidMode& m) {
+    // Of a machine symmetric about X-Z a mode is symmetric or antisymmetric
+    // exactly; its kinetic energy in the antisymmetric coordinates is then
+    // round-off (1e-6: far from both 0-ish round-off and any coupled mode).
+    double share = 0.0;
+    for (Eigen::Index i : odd)
+      if (i < m.energy_share.size()) share += std::abs(m.energy_share(i));
+    return share < kSymmetricShareLimit;
+  };
+}
+
+std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units) {
+  std::vector<core::Warning> out;
+  constexpr double kSlack = 1e-6;  // relative: a value on the limit is inside it
+  for (std::size_t i = 0; i < c.bounds.size() && i < r.fitted.size(); ++i) {
+    const ParameterBound& b = c.bounds[i];
+    if (!(b.body_mass > 0)) continue;
+    const double v = r.fitted[i];
+    const bool high = v > b.physical_upper * (1 + kSlack), low = v < b.physical_lower * (1 - kSlack);
+    if (!high && !low) continue;
+    const double k = std::sqrt(v / b.body_mass), limit = std::sqrt((high ? b.physical_upper : b.physical_lower) / b.body_mass);
+    const std::string L = units.label(Quantity::length), I = units.label(Quantity::rotary_inertia);
+    core::add_warning(out, "calibration_outside_physical_range",
+                      fmt::format("calibration: '{}' fitted to {:.4g} {}, a radius of gyration of {:.4g} {} {} the {:.4g} {} its declared box allows "
+                                  "(docs/theory/rigid.md, section 14); the study's bounds ({}) let it out: the fitted machine is not a physical one",
+                                  c.parameters[i], units.from_si(v, Quantity::rotary_inertia), I, units.from_si(k, Quantity::length), L,
+                                  high ? "above" : "below", units.from_si(limit, Quantity::length), L, b.basis),
+                      {{"fitted", units.from_si(v, Quantity::rotary_inertia), I},
+                       {"radius_of_gyration", units.from_si(k, Quantity::length), L},
+                       {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration", units.from_si(limit, Quantity::length), L}});
+  }
+  return out;
+}
+
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
-                                         const rigid::ModesOfParameters& modes_of) {
+                                         const rigid::ModesOfParameters& modes_of, const rigid::ModeFamily& family) {
   std::vector<double> initial;
   for (const std::string& name : c.parameters) initial.push_back(value(name));
   rigid::CalibrationOptions options;
@@ -443,6 +503,7 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
     options.upper.push_back(b.upper);
   }
   options.regularization = c.regularization;
+  options.admissible = family;
   return rigid::calibrate(modes_of, initial, c.targets, options);
 }
 

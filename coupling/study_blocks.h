@@ -10,6 +10,7 @@
 // integration and the blade's average peak-to-peak motion.
 #pragma once
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <functional>
@@ -114,7 +115,20 @@ ParameterBound calibration_default_bounds(double nominal, core::Quantity q, doub
 // Runs the calibration request: `value` reads a named parameter of the
 // machine, modes_of gives the modes for a set of values of c.parameters.
 rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std::function<double(const std::string&)>& value,
-                                         const rigid::ModesOfParameters& modes_of);
+                                         const rigid::ModesOfParameters& modes_of, const rigid::ModeFamily& family = {});
+
+// The family of modes calibration.pair_with admits (match_targets): with
+// symmetric_modes, the modes whose kinetic energy in the coordinates that
+// change sign under the X-Z mirror (y, theta_x, theta_z, v, theta_u,
+// theta_w, eta, alpha) is below kSymmetricShareLimit; else all (empty).
+constexpr double kSymmetricShareLimit = 1e-6;
+rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std::vector<std::string>& coordinates);
+
+// A `calibration_outside_physical_range` warning for every fitted rotary
+// inertia outside the range its body's declared box allows (bounds overridden
+// beyond it with a reason; docs/theory/rigid.md, section 14), with the fitted
+// value, its radius of gyration and the limit crossed, in `units`.
+std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units);
 
 // Calibrates `parameters` in place (run_calibration, then the fitted values
 // set): get(p, name) and set(p, name, value) read and write a named
@@ -141,9 +155,20 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
     for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
     return modes(Machine(p));
   };
+  rigid::ModeFamily family;
+  if (c.symmetric_modes) {
+    const Machine nominal(parameters);
+    family = calibration_mode_family(c, nominal.model().coordinate_names());
+    std::size_t n = 0;
+    const auto modes_now = modes(nominal);
+    for (const rigid::RigidMode& m : modes_now) n += family(m) ? 1 : 0;
+    if (n < c.targets.size())
+      throw core::InputError(c.pair_with_where, fmt::format("as many modes symmetric about the X-Z plane as targets ({})", c.targets.size()),
+                             fmt::format("{} of the machine's {} modes (a machine not symmetric about X-Z has none)", n, modes_now.size()));
+  }
   rigid::CalibrationResult result;
   try {
-    result = run_calibration(request, [&](const std::string& name) { return get(parameters, name); }, modes_of);
+    result = run_calibration(request, [&](const std::string& name) { return get(parameters, name); }, modes_of, family);
   } catch (const rigid::UnderdeterminedFit& e) {
     throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
   }

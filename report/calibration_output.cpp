@@ -77,6 +77,12 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
   cal["parameters"] = params;
   cal["targets"] = targets;
   cal["target_count"] = request.targets.size();
+  cal["parameter_count"] = c.fitted.size();
+  cal["information"] = c.information;  // frequencies plus (m - 1) per measured shape of m components
+  cal["degrees_of_freedom"] = c.degrees_of_freedom;  // information - parameters (Eq. 14.1)
+  // With nothing to spare the fit meets its targets whenever it converges
+  // inside its bounds: the agreement is a calibration, not evidence.
+  cal["agreement"] = c.agreement_guaranteed ? "guaranteed_by_construction" : "tested_by_surplus_targets";
   cal["independent_targets"] = c.independent_targets;
   cal["singular_values"] = sv;
   cal["unresolved"] = unresolved;  // ln-parameter combinations the targets cannot tell apart
@@ -92,9 +98,10 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
 }
 
 void print_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& c) {
-  fmt::print("\ncalibration ({} iterations): {} targets, {} independent, {} parameters{}; largest frequency error {:.3g} %; "
+  fmt::print("\ncalibration ({} iterations): {} targets, {} independent, {} parameters, {} degrees of freedom ({}){}; largest frequency error {:.3g} %; "
              "dominant coordinates (predicted) {}\n",
-             c.iterations, request.targets.size(), c.independent_targets, c.fitted.size(),
+             c.iterations, request.targets.size(), c.independent_targets, c.fitted.size(), c.degrees_of_freedom,
+             c.agreement_guaranteed ? "agreement guaranteed by construction" : "agreement tested by the surplus targets",
              c.underdetermined ? fmt::format(", UNDERDETERMINED (regularization weight {:g})", c.regularization) : "", 100 * c.max_relative_error,
              c.labels_match ? "as the targets say" : "NOT all as the targets say");
   for (std::size_t t = 0; t < request.targets.size(); ++t)

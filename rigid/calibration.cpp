@@ -11,7 +11,24 @@
 
 namespace framedyn::rigid {
 
-std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets) {
+namespace {
+std::vector<int> match_targets_in(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets);
+}  // namespace
+
+std::vector<int> match_targets(const std::vector<RigidMode>& all_modes, const std::vector<FrequencyTarget>& targets, const ModeFamily& admissible) {
+  // Only the admissible modes are candidates; their indices are mapped back.
+  std::vector<RigidMode> family;
+  std::vector<int> index;
+  for (std::size_t i = 0; i < all_modes.size(); ++i)
+    if (!admissible || admissible(all_modes[i])) family.push_back(all_modes[i]), index.push_back(static_cast<int>(i));
+  std::vector<int> match = match_targets_in(family, targets);
+  for (int& m : match)
+    if (m >= 0) m = index[static_cast<std::size_t>(m)];
+  return match;
+}
+
+namespace {
+std::vector<int> match_targets_in(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets) {
   // Order-preserving: the targets sorted by frequency go to modes in
   // increasing frequency, choosing which modes by least total log-distance
   // (dynamic programming), so that no target is sent past another's mode.
@@ -48,6 +65,7 @@ std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::v
   }
   return match;
 }
+}  // namespace
 
 double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const double aa = a.squaredNorm(), bb = b.squaredNorm();
@@ -104,14 +122,15 @@ Eigen::VectorXd shape_residual(const ShapeTarget& shape, const Eigen::VectorXd& 
 // The log-frequency errors (9.1), the shape residuals (9.6), then w (x - x0)
 // when regularised (9.2).
 Eigen::VectorXd residuals(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
-                          const Eigen::VectorXd& x0, double w) {
+                          const Eigen::VectorXd& x0, double w, const ModeFamily& family) {
   const std::vector<RigidMode> modes = modes_of(from_log(x));
-  const std::vector<int> match = match_targets(modes, targets);
+  const std::vector<int> match = match_targets(modes, targets, family);
   const Eigen::Index nt = static_cast<Eigen::Index>(targets.size()), nd = data_rows(targets);
   Eigen::VectorXd r = Eigen::VectorXd::Zero(nd + (w > 0 ? x.size() : 0));
   Eigen::Index row = nt;
   for (std::size_t t = 0; t < targets.size(); ++t) {
-    if (match[t] < 0) throw UnderdeterminedFit(fmt::format("{} target frequencies but the model has {} modes", targets.size(), modes.size()));
+    if (match[t] < 0)
+      throw UnderdeterminedFit(fmt::format("{} target frequencies but the model has {} modes{}", targets.size(), modes.size(), family ? " in the targets' family" : ""));
     const RigidMode& m = modes[static_cast<std::size_t>(match[t])];
     r(static_cast<Eigen::Index>(t)) = std::log(m.frequency_hz / targets[t].frequency_hz);
     if (const auto& shape = targets[t].shape) {
@@ -126,16 +145,16 @@ Eigen::VectorXd residuals(const ModesOfParameters& modes_of, const std::vector<F
 // Central-difference Jacobian of the residuals in ln p. A step that would
 // leave the bounds is taken one-sided.
 Eigen::MatrixXd jacobian(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, const Eigen::VectorXd& x,
-                         const Eigen::VectorXd& x0, double w, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+                         const Eigen::VectorXd& x0, double w, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const ModeFamily& family) {
   const double h = 1e-6;
-  const Eigen::VectorXd r0 = residuals(modes_of, targets, x, x0, w);
+  const Eigen::VectorXd r0 = residuals(modes_of, targets, x, x0, w, family);
   Eigen::MatrixXd j(r0.size(), x.size());
   for (Eigen::Index k = 0; k < x.size(); ++k) {
     Eigen::VectorXd xp = x, xm = x;
     xp(k) = std::min(x(k) + h, hi(k));
     xm(k) = std::max(x(k) - h, lo(k));
     if (xp(k) - xm(k) <= 0) xp(k) = x(k) + h, xm(k) = x(k) - h;  // a degenerate interval: the sensitivity is still wanted
-    j.col(k) = (residuals(modes_of, targets, xp, x0, w) - residuals(modes_of, targets, xm, x0, w)) / (xp(k) - xm(k));
+    j.col(k) = (residuals(modes_of, targets, xp, x0, w, family) - residuals(modes_of, targets, xm, x0, w, family)) / (xp(k) - xm(k));
   }
   return j;
 }
@@ -148,8 +167,9 @@ struct StageResult {
 StageResult fit_stage(const ModesOfParameters& modes_of, const std::vector<FrequencyTarget>& targets, Eigen::VectorXd& x, const Eigen::VectorXd& x0,
                       const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const CalibrationOptions& options) {
   const double w = options.regularization;
+  const ModeFamily& family = options.admissible;
   const Eigen::Index nd = data_rows(targets);
-  Eigen::VectorXd r = residuals(modes_of, targets, x, x0, w);
+  Eigen::VectorXd r = residuals(modes_of, targets, x, x0, w, family);
   double lambda = 1e-3;
   StageResult stage;
   int& iterations = stage.iterations;
@@ -157,7 +177,7 @@ StageResult fit_stage(const ModesOfParameters& modes_of, const std::vector<Frequ
   std::vector<double> history;  // |r| at the start of each iteration
   for (int it = 0; it < options.max_iterations && r.head(nd).norm() > options.tolerance; ++it) {
     iterations = it + 1;
-    const Eigen::MatrixXd j = jacobian(modes_of, targets, x, x0, w, lo, hi);
+    const Eigen::MatrixXd j = jacobian(modes_of, targets, x, x0, w, lo, hi, family);
     // First-order optimality on the bounds (KKT): the gradient J^T r with the
     // components that push a parameter out through the bound it sits on
     // removed. Below 1e-10 of |J| |r| the fit is a constrained minimum, even
@@ -188,7 +208,7 @@ StageResult fit_stage(const ModesOfParameters& modes_of, const std::vector<Frequ
       const Eigen::VectorXd trial = (x + step).cwiseMax(lo).cwiseMin(hi);  // projected onto the bounds
       Eigen::VectorXd r_trial;
       try {
-        r_trial = residuals(modes_of, targets, trial, x0, w);
+        r_trial = residuals(modes_of, targets, trial, x0, w, family);
       } catch (const UnderdeterminedFit&) {
         throw;
       } catch (const std::exception&) {
@@ -241,6 +261,9 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
     out.upper.push_back(u);
   }
   const Eigen::VectorXd x0 = x;
+  out.information = static_cast<int>(information_count(targets));
+  out.degrees_of_freedom = out.information - static_cast<int>(np);
+  out.agreement_guaranteed = out.degrees_of_freedom <= 0;
 
   // Refuse what the targets cannot determine, before fitting (9.3).
   {
@@ -248,7 +271,7 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
       throw UnderdeterminedFit(fmt::format("{} target frequencies{} for {} parameters: fewer independent targets than parameters "
                                            "(fit fewer parameters, add measured shapes, or ask for regularization)",
                                            nt, information_count(targets) > nt ? fmt::format(" and shapes ({} pieces of information)", information_count(targets)) : "", np));
-    const Eigen::MatrixXd s0 = jacobian(modes_of, targets, x, x0, 0.0, lo, hi);
+    const Eigen::MatrixXd s0 = jacobian(modes_of, targets, x, x0, 0.0, lo, hi, options.admissible);
     const int independent = independent_count(Eigen::JacobiSVD<Eigen::MatrixXd>(s0).singularValues());
     if (independent < np && w == 0)
       throw UnderdeterminedFit(fmt::format("{} target frequencies but only {} independent (singular values of the sensitivities above "
@@ -259,7 +282,7 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
   // Continuation: move the targets from the model's own frequencies to the
   // wanted ones in stages, so that each mode is followed as it moves.
   const std::vector<RigidMode> start_modes = modes_of(initial);
-  const std::vector<int> start_match = match_targets(start_modes, targets);
+  const std::vector<int> start_match = match_targets(start_modes, targets, options.admissible);
   constexpr int kStages = 8;
   for (int stage = 1; stage <= kStages; ++stage) {
     std::vector<FrequencyTarget> staged = targets;
@@ -280,7 +303,7 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
 
   // The labels, as a prediction.
   const std::vector<RigidMode> modes = modes_of(out.fitted);
-  const std::vector<int> match = match_targets(modes, targets);
+  const std::vector<int> match = match_targets(modes, targets, options.admissible);
   out.labels_match = true;
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const RigidMode& m = modes[static_cast<std::size_t>(match[t])];
@@ -298,14 +321,14 @@ CalibrationResult calibrate(const ModesOfParameters& modes_of, const std::vector
   }
 
   // Identifiability and uncertainty at the fitted values (9.3, 9.4).
-  const Eigen::MatrixXd s = jacobian(modes_of, targets, x, x0, 0.0, lo, hi);
+  const Eigen::MatrixXd s = jacobian(modes_of, targets, x, x0, 0.0, lo, hi, options.admissible);
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(s, Eigen::ComputeFullV);
   out.singular_values = svd.singularValues();
   out.independent_targets = independent_count(out.singular_values);
   for (Eigen::Index i = out.independent_targets; i < np; ++i) out.unresolved.push_back(svd.matrixV().col(i));
   out.underdetermined = out.independent_targets < np;
   // The data residual (frequencies and shapes) per degree of freedom (9.4).
-  const Eigen::VectorXd data_residual = residuals(modes_of, targets, x, x0, 0.0);
+  const Eigen::VectorXd data_residual = residuals(modes_of, targets, x, x0, 0.0, options.admissible);
   const double dof = static_cast<double>(std::max<Eigen::Index>(information_count(targets) - np, 0));
   const double variance = std::max(dof > 0 ? data_residual.squaredNorm() / dof : 0.0, std::pow(options.target_relative_uncertainty, 2));
   Eigen::MatrixXd info = s.transpose() * s;

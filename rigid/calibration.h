@@ -56,6 +56,10 @@ struct FrequencyTarget {
 // 1 when one is a multiple of the other; 0 if either is zero.
 double modal_assurance(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
 
+// A family of modes (true: admitted), e.g. those symmetric about a symmetric
+// machine's plane.
+using ModeFamily = std::function<bool(const RigidMode&)>;
+
 // The modes of the model with parameter values p (positive).
 using ModesOfParameters = std::function<std::vector<RigidMode>(const std::vector<double>& p)>;
 
@@ -77,6 +81,8 @@ struct CalibrationOptions {
   // The relative uncertainty of each target frequency, the floor of the
   // residual's standard deviation in the uncertainty of the parameters (9.4).
   double target_relative_uncertainty = 1e-3;
+  // The family of modes the targets are paired with (match_targets); empty: all modes.
+  ModeFamily admissible;
 };
 
 struct CalibrationResult {
@@ -99,6 +105,13 @@ struct CalibrationResult {
   int independent_targets = 0;              // singular values above 1e-3 of the largest
   std::vector<Eigen::VectorXd> unresolved;  // right singular vectors (in ln p) of the others and of the missing ones
   bool underdetermined = false;             // fewer independent targets than parameters (only with regularisation)
+  // The pieces of information the targets carry (a frequency each, m - 1 per
+  // measured shape of m components) less the parameters: with none to spare
+  // (<= 0) the fit can always meet its targets if it converges inside its
+  // bounds, so a match is guaranteed by construction and is no evidence (docs/theory/rigid.md, Eq. 14.1).
+  int information = 0;
+  int degrees_of_freedom = 0;
+  bool agreement_guaranteed = false;        // degrees_of_freedom <= 0
   double regularization = 0.0;              // the weight used
 };
 
@@ -106,7 +119,10 @@ struct CalibrationResult {
 // k-th lowest target with a lower mode than the (k+1)-th), the modes chosen
 // by least total log-frequency distance; labels play no part. -1 for every
 // target when the model has fewer modes than targets.
-std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets);
+// `admissible`, when given, restricts the candidate modes to a family (e.g.
+// the modes symmetric about a symmetric machine's plane, whose targets a
+// planar table lists); labels still play no part.
+std::vector<int> match_targets(const std::vector<RigidMode>& modes, const std::vector<FrequencyTarget>& targets, const ModeFamily& admissible = {});
 
 // The independent-target count of singular values s (largest first): those
 // above kIndependentRatio times the largest.

@@ -360,7 +360,7 @@ TEST(OutputUnits, FramePartsInertiaScaleIsTheTotalInertiaInTheStudysUnit) {
 const std::set<std::string> kDimensionlessKeys = {
     "mode", "dofs", "free_dofs", "nodes", "elements", "beam_elements", "output_times", "events", "steps", "step", "count", "grid_points",
     "mode_count", "rigid_body_modes", "free_rigid_motions", "rigid_body_modes_expected", "parts", "eigenvalues_below", "lanczos_runs",
-    "restarts", "operator_solves", "iterations", "relative_residual", "target_count", "independent_targets", "shape_components", "jobs", "node", "element",
+    "restarts", "operator_solves", "iterations", "relative_residual", "target_count", "parameter_count", "information", "degrees_of_freedom", "independent_targets", "shape_components", "jobs", "node", "element",
     "station", "frame_node", "fiber", "mount_nodes", "startup_times", "steady_times",
     "stress_histories_in_memory_bytes", "samples", "cycles", "turning_points", "damage", "window_periods", "max_period_multiple", "period_multiple", "index",
     // ratios and fractions

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study_3d.h"
+#include "coupling/study_blocks.h"
 #include "tests/support/calibration_checks.h"
 #include "tests/support/temp_dir.h"
 
@@ -42,7 +43,8 @@ void check_case(const std::string& file, std::size_t targets) {
   ASSERT_EQ(study.calibration->targets.size(), targets);
   const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
   ASSERT_TRUE(r.calibration.has_value());
-  framedyn::test::expect_fit_properties(file, *study.calibration, *r.calibration, r.modes);
+  framedyn::test::expect_fit_properties(file, *study.calibration, *r.calibration, r.modes,
+                                        coupling::calibration_mode_family(*study.calibration, r.coordinates));
 }
 
 TEST(ThesisCases3D, CalibrationFitOfTableIVCase2FrameAlone) { check_case("examples/thesis/case2.yaml", 6); }

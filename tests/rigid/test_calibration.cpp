@@ -64,6 +64,34 @@ TEST(Calibration, TargetsArePairedWithModesByFrequency) {
   EXPECT_TRUE(r.labels_match);
 }
 
+// A family restricts the pairing (calibration.pair_with): three uncoupled
+// unit masses a, b, c at 1, 1.5 and 2 Hz, the family excluding the modes
+// with b's energy (the out-of-plane ones of a 3-D machine). Targets 1.45 and
+// 2.1 Hz go to b and c by frequency alone, to a and c within the family; the
+// fit of a's and c's stiffnesses then reaches (2 pi 1.45)^2 and (2 pi 2.1)^2,
+// which from the unrestricted pairing it could not (b is not fitted).
+TEST(Calibration, TargetsArePairedOnlyWithModesOfTheirFamily) {
+  const rigid::ModesOfParameters modes_of = [](const std::vector<double>& p) {
+    const Eigen::Vector3d k(p[0], std::pow(kTwoPi * 1.5, 2), p[1]);
+    return rigid::rigid_modes(Eigen::MatrixXd::Identity(3, 3), k.asDiagonal().toDenseMatrix(), {"a", "b", "c"});
+  };
+  const rigid::ModeFamily without_b = [](const rigid::RigidMode& m) { return std::abs(m.energy_share(1)) < 1e-6; };
+  const std::vector<rigid::FrequencyTarget> targets = {{1.45, "a", std::nullopt}, {2.1, "c", std::nullopt}};
+  const std::vector<double> start = {std::pow(kTwoPi, 2), std::pow(kTwoPi * 2.0, 2)};
+  const std::vector<rigid::RigidMode> modes = modes_of(start);
+  const std::vector<int> any = rigid::match_targets(modes, targets), family = rigid::match_targets(modes, targets, without_b);
+  EXPECT_EQ(modes[static_cast<std::size_t>(any[0])].dominant, "b");
+  EXPECT_EQ(modes[static_cast<std::size_t>(family[0])].dominant, "a");
+  EXPECT_EQ(modes[static_cast<std::size_t>(family[1])].dominant, "c");
+  rigid::CalibrationOptions o;
+  o.admissible = without_b;
+  const rigid::CalibrationResult r = rigid::calibrate(modes_of, start, targets, o);
+  EXPECT_NEAR(r.fitted[0] / std::pow(kTwoPi * 1.45, 2), 1.0, 1e-8);
+  EXPECT_NEAR(r.fitted[1] / std::pow(kTwoPi * 2.1, 2), 1.0, 1e-8);
+  EXPECT_TRUE(r.labels_match);
+  EXPECT_FALSE(r.iteration_limit_reached);
+}
+
 // The dominant coordinates are a prediction: with M = I and K = R diag(k1, k2)
 // R^T, R turned by 1.2 rad (beyond pi/4), the 1 Hz mode is led by b and the
 // 2 Hz one by a. Fitting k1, k2 to 1 Hz "a" and 2 Hz "b" reaches both
@@ -230,6 +258,36 @@ TEST(Calibration, UncertaintyIsTheLinearisedSpreadOfTheResidual) {
   EXPECT_NEAR(one.uncertainty[0] / one.fitted[0], 2e-3, 1e-6);
 }
 
+// Degrees of freedom = information - parameters (Eq. 14.1). One spring, one
+// target: none to spare, the fit meets any target (guaranteed by
+// construction). The stiffness scale of two masses against two targets whose
+// ratio (2.1) is not the model's (2): one to spare, and the surplus target
+// shows the model cannot meet both: each missed by the closed form
+// e^{|ln(2.1/2)|/2} - 1 = 2.47 %. A measured shape of m components adds m - 1.
+TEST(Calibration, AgreementIsGuaranteedWithoutSurplusTargetsAndTestedWithThem) {
+  const rigid::CalibrationResult exact = rigid::calibrate(one_spring(3.0), {100.0}, {{2.5, "x"}});
+  EXPECT_EQ(exact.information, 1);
+  EXPECT_EQ(exact.degrees_of_freedom, 0);
+  EXPECT_TRUE(exact.agreement_guaranteed);
+  EXPECT_LT(exact.max_relative_error, 1e-9);
+  const rigid::ModesOfParameters scale = [](const std::vector<double>& p) {
+    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(2, 2);
+    k(0, 0) = p[0];
+    k(1, 1) = 4 * p[0];
+    return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
+  };
+  const rigid::CalibrationResult tested = rigid::calibrate(scale, {30.0}, {{1.0, "a"}, {2.1, "b"}});
+  EXPECT_EQ(tested.information, 2);
+  EXPECT_EQ(tested.degrees_of_freedom, 1);
+  EXPECT_FALSE(tested.agreement_guaranteed);
+  EXPECT_NEAR(tested.max_relative_error, std::exp(0.5 * std::log(2.1 / 2.0)) - 1, 1e-7);
+  const rigid::FrequencyTarget shaped{std::sqrt(400.0) / kTwoPi, "", rigid::ShapeTarget{Eigen::MatrixXd::Identity(2, 2), Eigen::Vector2d(1.0, 0.0), 1.0}};
+  const rigid::CalibrationResult with_shape = rigid::calibrate(scale, {30.0}, {shaped});
+  EXPECT_EQ(with_shape.information, 2);
+  EXPECT_EQ(with_shape.degrees_of_freedom, 1);
+  EXPECT_FALSE(with_shape.agreement_guaranteed);
+}
+
 // Case 1's study with its calibration block replaced by `block`, read.
 coupling::RigidStudy case1_with_calibration(const std::string& block) {
   std::ifstream in(FRAMEDYN_SOURCE_DIR "/examples/thesis/case1.yaml");
@@ -329,6 +387,49 @@ TEST(CalibrationStudy, InertiaBoundsFollowTheDeclaredBox) {
   EXPECT_NEAR(s.calibration->bounds[0].lower, m * d2 / 12, 1e-12 * m * d2);
   EXPECT_NEAR(s.calibration->bounds[0].upper, m * d2 / 4, 1e-12 * m * d2);
   EXPECT_EQ(s.calibration->bounds[0].basis, "cab box");
+}
+
+// A fitted inertia outside what its body's box allows (Eqs. 14.3-14.4) is
+// warned of when the study's bounds let it out. The cab of case 1 (k = 16 in)
+// declared distributed in a 30 x 30 x 20 in box: k from sqrt((30^2 + 20^2)/12)
+// = 10.4 in to sqrt(30^2 + 20^2)/2 = 18.03 in; its pitch mode asked 15 % lower
+// needs k near 16/0.85 = 18.8 in. Within the default (box) bounds the fit
+// stops at 18.03 in, at its bound, with no warning; with the upper bound
+// overridden (k 24 in, a reason) it passes 18.03 in and the warning gives the
+// fitted value, its k and the limit, in the study's units (in, lbf s^2 in).
+TEST(CalibrationStudy, FittedInertiaOutsideItsBoxIsWarnedOf) {
+  const coupling::RigidStudy nominal = case1_with_calibration("");
+  const rigid::Machine2D machine(nominal.machine);
+  double f0 = 0;
+  for (const rigid::RigidMode& m : rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(nominal.modal_soil), machine.model().coordinate_names()))
+    if (m.dominant == "theta_v") f0 = m.frequency_hz;
+  ASSERT_GT(f0, 0);
+  const std::string head = fmt::format("calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {{frequency_hz: {:.17g}, dominant: theta_v}}\n  bounds:\n", 0.85 * f0);
+  const double in = 0.0254, k_max = std::sqrt(30.0 * 30 + 20 * 20) / 2;
+  const coupling::RigidStudy boxed = case1_with_calibration(head + "    - {parameter: cab.inertia, dimensions: [30, 30, 20], distributed: true}\n");
+  const coupling::RigidResults inside = coupling::run_rigid_study(boxed);
+  ASSERT_TRUE(inside.calibration.has_value());
+  EXPECT_TRUE(inside.calibration->at_bound[0]);
+  EXPECT_NEAR(std::sqrt(inside.calibration->fitted[0] / boxed.machine.cab.mass) / in, k_max, 1e-9 * k_max);
+  EXPECT_TRUE(inside.warnings.empty());
+  const coupling::RigidStudy loose = case1_with_calibration(
+      head + "    - {parameter: cab.inertia, dimensions: [30, 30, 20], distributed: true, upper: " +
+      fmt::format("{:.17g}", boxed.units.from_si(boxed.machine.cab.mass * std::pow(24 * in, 2), core::Quantity::rotary_inertia)) + ", reason: test}\n");
+  const coupling::RigidResults outside = coupling::run_rigid_study(loose);
+  ASSERT_TRUE(outside.calibration.has_value());
+  EXPECT_EQ(outside.calibration->achieved_dominant[0], "theta_v");
+  const double k = std::sqrt(outside.calibration->fitted[0] / loose.machine.cab.mass) / in;
+  EXPECT_GT(k, k_max * 1.01);
+  EXPECT_LT(k, 24.0);
+  ASSERT_EQ(outside.warnings.size(), 1u);
+  const core::Warning& w = outside.warnings[0];
+  EXPECT_EQ(w.code, "calibration_outside_physical_range");
+  ASSERT_EQ(w.figures.size(), 3u);
+  EXPECT_EQ(w.figures[1].name, "radius_of_gyration");
+  EXPECT_NEAR(w.figures[1].value, k, 1e-9 * k);
+  EXPECT_EQ(w.figures[1].unit, "in");
+  EXPECT_EQ(w.figures[2].name, "largest_radius_of_gyration");
+  EXPECT_NEAR(w.figures[2].value, k_max, 1e-9 * k_max);
 }
 
 // The labels cannot be fitted: fit_labels is refused, naming the key.
