@@ -114,10 +114,12 @@ for fmt in ("xdmf", "vtu"):
         check(all(close(g, c, scale) for g, c in zip(got, (ux, uy, uz))),
               f"frame_response ({fmt}) node {node} at t = {t} s: displacement {got} = frame_nodes_corners.csv {(ux, uy, uz)} m")
 
-# (5) The life map as cell fields of the frame's XDMF series (report/fatigue_outputs.h).
+# (5) The life map as cell fields of the frame's XDMF series (report/fatigue_outputs.h). The portal's
+# sway is mild: a low class (FAT5, not a real detail) gives every element on the outputs a life below
+# the 1e12-h cap, so that the field's values, not only the cap, are compared.
 study_file = os.path.join(work, "portal_life.yaml")
 with open(study_file, "w") as f:
-    f.write(study.replace("  stations: 3\n", "  stations: 3\n  paraview: xdmf\n  steady_from: 0\n  fatigue: {default: FAT71}\n"))
+    f.write(study.replace("  stations: 3\n", "  stations: 3\n  paraview: xdmf\n  steady_from: 0\n  fatigue: {default: FAT5}\n"))
 out = os.path.join(work, "portal_life")
 run("frame-response", study_file, "--out", out)
 damage = {}  # element -> largest damage per hour over its stations and points
@@ -136,7 +138,8 @@ if field is not None and life is not None:
     got = {int(ids.GetValue(i)): (field.GetValue(i), life.GetValue(i)) for i in range(data.GetNumberOfCells())}
     damaged = [e for e, d in damage.items() if d > 0.0]
     worst = max(abs(got[e][0] - damage[e]) / damage[e] for e in damaged) if damaged else 1.0
-    worst_life = max(abs(got[e][1] * damage[e] - 1.0) for e in damaged) if damaged else 1.0
+    # The life is 1 / damage, capped at 1e12 h (no infinity in the files).
+    worst_life = max(abs(got[e][1] * damage[e] - 1.0) if damage[e] > 1e-12 else abs(got[e][1] / 1e12 - 1.0) for e in damaged) if damaged else 1.0
     off = all(got[e][0] == 0.0 and got[e][1] == 1e12 for e in got if e not in damage)
     check(len(damaged) > 0 and worst <= 1e-8 and worst_life <= 1e-8 and off,
           f"frame_response.xdmf: fatigue fields of {len(damaged)} damaged elements = life_map.csv's largest damage per hour and its inverse "
