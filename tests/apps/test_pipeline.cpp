@@ -312,15 +312,21 @@ TEST(CompareSupports, AxlePinsGiveTheStressesOfNoneAndTheClampedRearEndDiffersWi
     const double s_pins = pins["rails"][rail]["peak_normal_stress"]["value"].get<double>();
     const double m_clamp = clamp["peak_bending_moment"][rail]["value"].get<double>();
     const double s_clamp = clamp["rails"][rail]["peak_normal_stress"]["value"].get<double>();
+    std::cout << "[ measured ] " << rail << ": axle_pins - none relative: moment " << std::abs(m_pins - m_none) / std::abs(m_none) << ", normal stress "
+              << std::abs(s_pins - s_none) / std::abs(s_none) << "\n";
     largest_pins = std::max({largest_pins, std::abs(m_pins - m_none) / std::abs(m_none), std::abs(s_pins - s_none) / std::abs(s_none)});
     smallest_clamp = std::min({smallest_clamp, std::abs(m_clamp - m_none) / std::abs(m_none), std::abs(s_clamp - s_none) / std::abs(s_none)});
     std::cout << "[ measured ] " << rail << ": peak |M| none " << m_none << ", axle_pins " << m_pins << ", fixed_rear_end " << m_clamp
               << "; peak normal stress none " << s_none << ", axle_pins " << s_pins << ", fixed_rear_end " << s_clamp << "\n";
   }
   const double vm_none = own["peak_von_mises"]["value"].get<double>(), vm_pins = pins["peak_von_mises"]["value"].get<double>();
+  std::cout << "[ measured ] peak von Mises: axle_pins - none relative " << std::abs(vm_pins - vm_none) / vm_none << "\n";
   largest_pins = std::max(largest_pins, std::abs(vm_pins - vm_none) / vm_none);
   std::cout << "[ measured ] largest relative difference axle_pins - none " << largest_pins << "; smallest fixed_rear_end - none " << smallest_clamp << "\n";
-  EXPECT_LT(largest_pins, 1e-12);
+  // Round-off of two different factorisations (the pins' 3-2-1 support against the solver's own for
+  // none): measured 2.5e-12 at most (the right rail's peak normal stress; the moments 8e-13 to 9e-13,
+  // von Mises 1.3e-13); 1e-11 leaves room for another CPU's SIMD round-off.
+  EXPECT_LT(largest_pins, 1e-11);
   EXPECT_GT(smallest_clamp, 0.01);
   EXPECT_TRUE(fs::exists(dir / "out" / "frame_supports_envelopes.png"));
 }
