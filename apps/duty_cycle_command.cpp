@@ -49,7 +49,7 @@ int run_duty_cycle_study(const std::string& file, const std::string& out, bool f
   for (std::size_t i = 0; i < r.scenarios.size(); ++i) {
     const auto& sc = r.scenarios[i];
     fmt::print("  {:<16} {:8g} h  share of the damage at the shortest-life location {:5.1f} %, dominates {} locations  ({:.2f} s)\n", sc.name, sc.hours,
-               100.0 * (d_cycle > 0.0 ? sc.hours * sc.frame.life->damage_per_hour[ws][static_cast<std::size_t>(wp)] / d_cycle : 0.0), dominated[i],
+               100.0 * report::scenario_share(r, i, ws, wp), dominated[i],
                sc.wall_seconds);
   }
   const coupling::StressStation& st = h.stations[ws];

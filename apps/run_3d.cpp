@@ -165,6 +165,12 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
+  // The road inputs' delays behind the front axle (docs/theory/fatigue.md section 11).
+  nlohmann::ordered_json road = nlohmann::ordered_json::array();
+  for (const coupling::RoadDelay& d : coupling::road_delays(study.machine))
+    road.push_back({{"tire", d.tire}, {"behind", report::quantity(d.behind * lf, u.label(Quantity::length))},
+                    {"delay", report::quantity(d.delay, "s")}, {"source", d.given ? "behind (given)" : "derived from the tire positions"}});
+  if (!road.empty()) rigid["road_inputs"] = road;
   rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
   rigid["modes_state"] = coupling::contact_state_name(rigid::Machine2D::ModalSoil::cutting);  // the contact state rigid.modes is in
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);

@@ -99,11 +99,14 @@ void print_fatigue_line(const coupling::FrameStudyResults& f, const coupling::Fr
   fmt::print("fatigue ({}): shortest life {} at {} element {} station {} ({}), X = {:.4g} {}; damage {:.3g} in {:g} h\n", m.code,
              d > 0.0 ? fmt::format("{:.4g} h", 1.0 / d) : std::string("unlimited (no damaging cycle)"), st.set, st.element_id, st.station, point,
              q.units.from_si(st.point.x(), core::Quantity::length), q.units.label(core::Quantity::length), d * q.fatigue->hours, q.fatigue->hours);
-  // Which detail categories were assumed where (normal stress range; shear not combined).
+  const std::size_t wp = static_cast<std::size_t>(m.worst_point);
+  fmt::print("  there: normal stress alone {:.3g}/h, shear alone {:.3g}/h, combined {:.3g}/h ({})\n", m.normal_damage_per_hour[m.worst_station][wp],
+             m.shear_damage_per_hour[m.worst_station][wp], d, coupling::combination_rule(m.code_id));
+  // Which detail categories were assumed where (normal and shear curves).
   for (std::size_t c = 0; c < m.curves.size(); ++c) {
     std::size_t n = 0;
     for (int k : m.curve_of_station) n += k == static_cast<int>(c);
-    fmt::print("  detail assumed: {} on {} ({} stations)\n", m.curves[c], m.assignment[c], n);
+    fmt::print("  detail assumed: {} / {} on {} ({} stations)\n", m.curves[c], m.shear_curves[c], m.assignment[c], n);
   }
 }
 

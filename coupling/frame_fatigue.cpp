@@ -50,6 +50,24 @@ double read_class(const YamlMap& m, const std::string& key) {
   return *c;
 }
 
+// One history's repeated-block damage and its largest counted range.
+struct BlockDamage {
+  double damage = 0.0;
+  double max_range = 0.0;
+};
+BlockDamage block_damage(const std::vector<double>& stress_pa, const fatigue::SnCurve& curve, const fatigue::MeanStressCorrection& mean_stress) {
+  fatigue::MinerDamage damage(curve, 1.0, mean_stress);
+  const fatigue::RainflowSummary summary = fatigue::count_cycles(stress_pa, fatigue::Residue::repeated_block, damage);
+  return {damage.damage(), summary.max_range};
+}
+
+// table[s][p], else fallback[s][p] (a map built by hand with the combined damage only), else 0.
+double damage_or_zero(const std::vector<std::vector<double>>& table, const std::vector<std::vector<double>>& fallback, std::size_t s, std::size_t p) {
+  if (s < table.size() && p < table[s].size()) return table[s][p];
+  if (s < fallback.size() && p < fallback[s].size()) return fallback[s][p];
+  return 0.0;
+}
+
 }  // namespace
 
 std::string fatigue_code_name(FatigueCode code) {
@@ -57,7 +75,7 @@ std::string fatigue_code_name(FatigueCode code) {
 }
 
 FatigueRequest read_fatigue_block(const YamlMap& f) {
-  f.allow_only({"code", "default", "details", "mean_stress", "ultimate_strength", "thickness", "thickness_exponent", "hours"});
+  f.allow_only({"code", "default", "shear_default", "details", "mean_stress", "ultimate_strength", "thickness", "thickness_exponent", "hours"});
   FatigueRequest r;
   r.where = f.location("");
   r.where.key = f.path();
@@ -66,12 +84,14 @@ FatigueRequest read_fatigue_block(const YamlMap& f) {
   else if (code == "EN1993") r.code = FatigueCode::en1993;
   else throw f.error("code", "IIW (IIW 2016 FAT classes) or EN1993 (EN 1993-1-9 detail categories)", "'" + code + "'");
   if (f.has("default")) r.default_class_mpa = read_class(f, "default");
+  if (f.has("shear_default")) r.shear_default_class_mpa = read_class(f, "shear_default");
   const std::vector<YamlMap> details = f.list_of_maps("details");
   for (const YamlMap& d : details) {
-    d.allow_only({"element_set", "class"});
+    d.allow_only({"element_set", "class", "shear_class"});
     FatigueDetail detail;
     detail.element_set = d.text("element_set");
     detail.class_mpa = read_class(d, "class");
+    if (d.has("shear_class")) detail.shear_class_mpa = read_class(d, "shear_class");
     detail.where = d.location("element_set");
     detail.where.key = d.path() + ".element_set";
     r.details.push_back(detail);
@@ -102,10 +122,38 @@ fatigue::SnCurve fatigue_curve(const FatigueRequest& q, double class_mpa) {
   return c;
 }
 
+fatigue::SnCurve fatigue_shear_curve(const FatigueRequest& q, double class_mpa) {
+  return q.code == FatigueCode::iiw ? fatigue::iiw_shear_stress(class_mpa) : fatigue::en1993_shear_stress(class_mpa);
+}
+
+std::string combination_rule(FatigueCode code) {
+  if (code == FatigueCode::iiw)
+    return fmt::format("IIW Gough-Pollard on damage sums, (D_sigma)^(2/3) + (D_tau)^(2/5) <= CV = {:g} (non-proportional); a stress whose largest range is "
+                       "under {:g} % of the other's is neglected",
+                       kIiwComparisonValue, 100.0 * kIiwNeglectFraction);
+  return "EN 1993-1-9 Eq. 8.3 (exponents 3 and 5 = the curves' slopes): D_sigma + D_tau <= 1";
+}
+
+double combined_damage(FatigueCode code, double ds, double dt, double normal_range, double shear_range) {
+  if (code == FatigueCode::en1993) return ds + dt;  // F.29
+  // F.28: the smaller stress neglected.
+  if (!(dt > 0.0) || shear_range < kIiwNeglectFraction * normal_range) return ds;
+  if (!(ds > 0.0) || normal_range < kIiwNeglectFraction * shear_range) return dt;
+  // F.27: g(k) = (ds k)^(2/3) + (dt k)^(2/5) rises from 0; find g(k) = CV by bisection in log k
+  // between k where each term is CV / 2 at most and k where one term alone is CV.
+  const double cv = kIiwComparisonValue;
+  const auto g = [&](double k) { return std::pow(ds * k, 2.0 / 3.0) + std::pow(dt * k, 2.0 / 5.0); };
+  double lo = std::log(std::min(std::pow(cv / 2, 1.5) / ds, std::pow(cv / 2, 2.5) / dt));
+  double hi = std::log(std::min(std::pow(cv, 1.5) / ds, std::pow(cv, 2.5) / dt));
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g(std::exp(mid)) < cv ? lo : hi) = mid;
+  }
+  return std::exp(-0.5 * (lo + hi));
+}
+
 double repeated_block_damage(const std::vector<double>& stress_pa, const fatigue::SnCurve& curve, const fatigue::MeanStressCorrection& mean_stress) {
-  fatigue::MinerDamage damage(curve, 1.0, mean_stress);
-  fatigue::count_cycles(stress_pa, fatigue::Residue::repeated_block, damage);
-  return damage.damage();
+  return block_damage(stress_pa, curve, mean_stress).damage;
 }
 
 std::pair<std::size_t, int> worst_location(const std::vector<std::vector<double>>& v) {
@@ -128,6 +176,7 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
                        const SteadyWindow& window, const FatigueRequest& q) {
   LifeMap out;
   out.code = fatigue_code_name(q.code);
+  out.code_id = q.code;
   // Each station's curve: the first details entry whose set holds its element, else the default (F.22).
   std::map<int, std::size_t> detail_of_element;
   for (std::size_t d = q.details.size(); d-- > 0;) {  // backwards: the first listed wins
@@ -138,19 +187,23 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
   }
   std::vector<bool> used(q.details.size(), false);
   std::map<std::string, int> curve_index;
-  std::vector<fatigue::SnCurve> curves;
+  std::vector<fatigue::SnCurve> curves, shear_curves;
   out.curve_of_station.reserve(h.stations.size());
   for (const StressStation& st : h.stations) {
     const auto at = detail_of_element.find(st.element_id);
-    const double cls = at == detail_of_element.end() ? q.default_class_mpa : q.details[at->second].class_mpa;
-    const std::string who = at == detail_of_element.end() ? "default" : fmt::format("{} (details[{}])", q.details[at->second].element_set, at->second);
-    if (at != detail_of_element.end()) used[at->second] = true;
-    const std::string key = fmt::format("{:.10g}|{}", cls, who);
+    const bool listed = at != detail_of_element.end();
+    const double cls = listed ? q.details[at->second].class_mpa : q.default_class_mpa;
+    const double shear_cls = listed ? q.details[at->second].shear_class_mpa.value_or(q.shear_default_class_mpa) : q.shear_default_class_mpa;
+    const std::string who = listed ? fmt::format("{} (details[{}])", q.details[at->second].element_set, at->second) : "default";
+    if (listed) used[at->second] = true;
+    const std::string key = fmt::format("{:.10g}|{:.10g}|{}", cls, shear_cls, who);
     auto found = curve_index.find(key);
     if (found == curve_index.end()) {
       found = curve_index.emplace(key, static_cast<int>(curves.size())).first;
       curves.push_back(fatigue_curve(q, cls));
+      shear_curves.push_back(fatigue_shear_curve(q, shear_cls));
       out.curves.push_back(curves.back().name());
+      out.shear_curves.push_back(shear_curves.back().name());
       out.assignment.push_back(who);
     }
     out.curve_of_station.push_back(found->second);
@@ -171,20 +224,42 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
   out.block_samples = steady.size();
   out.block_seconds = span * static_cast<double>(steady.size()) / static_cast<double>(steady.size() - 1);
   const double per_hour = kSecondsPerHour / out.block_seconds;
-  out.damage_per_hour.resize(h.stations.size());
-  std::vector<double> sigma(steady.size());
+  for (auto* table : {&out.damage_per_hour, &out.normal_damage_per_hour, &out.shear_damage_per_hour, &out.normal_max_range, &out.shear_max_range})
+    table->resize(h.stations.size());
+  std::vector<double> sigma(steady.size()), tau(steady.size()), tau_other(steady.size());
   for (std::size_t s = 0; s < h.stations.size(); ++s) {
     const std::size_t sec = static_cast<std::size_t>(h.stations[s].section);
     const fem::SectionForces fs = static_forces.empty() ? fem::SectionForces{} : static_forces.at(s);
     const std::vector<fem::SectionPoint>& points = h.points[sec];
-    out.damage_per_hour[s].resize(points.size());
+    for (auto* table : {&out.damage_per_hour, &out.normal_damage_per_hour, &out.shear_damage_per_hour, &out.normal_max_range, &out.shear_max_range})
+      (*table)[s].assign(points.size(), 0.0);
+    const std::size_t curve = static_cast<std::size_t>(out.curve_of_station[s]);
     for (std::size_t p = 0; p < points.size(); ++p) {
+      const bool has_shear = fem::shear_direction(points[p]).norm() > 0.0;
       for (std::size_t k = 0; k < steady.size(); ++k) {
         fem::SectionForces f = h.forces_at(s, steady[k]);
         f.n += fs.n, f.vy += fs.vy, f.vz += fs.vz, f.t += fs.t, f.my += fs.my, f.mz += fs.mz;
         sigma[k] = fem::point_stress(h.sections[sec], points[p], f).normal;
+        if (has_shear) {
+          const fem::SignedShear t = fem::signed_shear(points[p], f);
+          tau[k] = t.face;
+          tau_other[k] = t.other_face;
+        }
       }
-      out.damage_per_hour[s][p] = repeated_block_damage(sigma, curves[static_cast<std::size_t>(out.curve_of_station[s])], q.mean_stress) * per_hour;
+      const BlockDamage normal = block_damage(sigma, curves[curve], q.mean_stress);
+      BlockDamage shear;
+      if (has_shear) {
+        shear = block_damage(tau, shear_curves[curve], fatigue::MeanStressCorrection::none());  // shear: no mean-stress effect (both codes)
+        if (points[p].open_wall) {  // the worse of an open wall's two faces
+          const BlockDamage other = block_damage(tau_other, shear_curves[curve], fatigue::MeanStressCorrection::none());
+          if (other.damage > shear.damage) shear = other;
+        }
+      }
+      out.normal_damage_per_hour[s][p] = normal.damage * per_hour;
+      out.shear_damage_per_hour[s][p] = shear.damage * per_hour;
+      out.normal_max_range[s][p] = normal.max_range;
+      out.shear_max_range[s][p] = shear.max_range;
+      out.damage_per_hour[s][p] = combined_damage(q.code, normal.damage * per_hour, shear.damage * per_hour, normal.max_range, shear.max_range);
     }
   }
   std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_hour);
@@ -202,8 +277,12 @@ DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios) {
   const LifeMap& first = *scenarios.front().map;
   out.damage_per_cycle.resize(first.damage_per_hour.size());
   out.dominant.resize(first.damage_per_hour.size());
+  out.normal_damage_per_cycle.resize(first.damage_per_hour.size());
+  out.shear_damage_per_cycle.resize(first.damage_per_hour.size());
   for (std::size_t s = 0; s < first.damage_per_hour.size(); ++s) {
     out.damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
+    out.normal_damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
+    out.shear_damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
     out.dominant[s].assign(first.damage_per_hour[s].size(), 0);
   }
   for (const DutyScenario& sc : scenarios) {
@@ -214,11 +293,20 @@ DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios) {
   }
   for (std::size_t s = 0; s < out.damage_per_cycle.size(); ++s)
     for (std::size_t p = 0; p < out.damage_per_cycle[s].size(); ++p) {
+      // F.23 for each stress, then the code's combination of the cycle's sums (F.29); the
+      // 15 % rule on the largest ranges over the scenarios.
       std::vector<double> part;
-      for (const DutyScenario& sc : scenarios) part.push_back(sc.hours * sc.map->damage_per_hour[s][p]);  // F.23
-      double sum = 0.0;
-      for (double d : part) sum += d;
-      out.damage_per_cycle[s][p] = sum;
+      double normal = 0.0, shear = 0.0, normal_range = 0.0, shear_range = 0.0;
+      for (const DutyScenario& sc : scenarios) {
+        part.push_back(sc.hours * sc.map->damage_per_hour[s][p]);
+        normal += sc.hours * damage_or_zero(sc.map->normal_damage_per_hour, sc.map->damage_per_hour, s, p);
+        shear += sc.hours * damage_or_zero(sc.map->shear_damage_per_hour, {}, s, p);
+        normal_range = std::max(normal_range, damage_or_zero(sc.map->normal_max_range, {}, s, p));
+        shear_range = std::max(shear_range, damage_or_zero(sc.map->shear_max_range, {}, s, p));
+      }
+      out.normal_damage_per_cycle[s][p] = normal;
+      out.shear_damage_per_cycle[s][p] = shear;
+      out.damage_per_cycle[s][p] = combined_damage(first.code_id, normal, shear, normal_range, shear_range);
       out.dominant[s][p] = static_cast<int>(stable_argmax(part));
     }
   std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_cycle);

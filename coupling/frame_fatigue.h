@@ -6,9 +6,13 @@
 // detail category of EN 1993-1-9, fatigue/sn_curve.h), and scaled from the window to an
 // hour (F.20): d_h = D_window * 3600 s / T_block, the life L = 1 / d_h hours (F.21).
 // Which stress: the normal stress range of the section point (details loaded normal to
-// the weld toe, IIW §3.2 / EN 1993-1-9 Table 8.1-8.5); the codes' normal + shear
-// combination is not taken (the section points carry |tau| only: its sign, and so its
-// range, is lost; docs/theory/fatigue.md section 7 says what that leaves out).
+// the weld toe, IIW §3.2 / EN 1993-1-9 Table 8.1-8.5) on the detail's normal-stress curve,
+// and the signed shear stress along the point's wall (torsion + transverse shear,
+// fem::signed_shear, F.26) on the code's shear curve (IIW FAT80/100 m = 5; EN 1993-1-9
+// delta tau_C, m = 5, cut-off at 1e8), combined as the code says (section 10, F.27-F.29):
+// IIW Gough-Pollard on the damage sums with CV = 0.5 (non-proportional), the smaller
+// stress neglected when its largest range is under 15 % of the other's; EN 1993-1-9 the
+// sum of the two damage ratios. The life map and the life use the combined damage.
 //
 // A duty cycle (F.23-F.25): scenarios i with hours H_i, each a life map per hour d_h,i;
 // the damage over the cycle D = sum_i H_i d_h,i (Miner: damage adds), the life in
@@ -19,7 +23,8 @@
 //   fatigue:
 //     code: IIW                     # IIW (2016) | EN1993 (EN 1993-1-9)
 //     default: FAT71                # FAT class / detail category of sets not listed (MPa)
-//     details: [{element_set: LEFT_RAIL, class: FAT80}]   # first listed set holding an element wins
+//     shear_default: FAT80          # shear FAT class / delta tau_C of sets not listed (MPa)
+//     details: [{element_set: LEFT_RAIL, class: FAT80, shear_class: FAT100}]   # first listed set holding an element wins
 //     mean_stress: none             # none (as-welded) | goodman (with ultimate_strength)
 //     ultimate_strength: 58000      # stress, Goodman only
 //     thickness: 0.5                # length: wall thickness for the thickness correction (none at <= 25 mm)
@@ -45,12 +50,14 @@ enum class FatigueCode { iiw, en1993 };
 struct FatigueDetail {
   std::string element_set;     // as the study spells it (mesh sets are matched case-insensitively)
   double class_mpa = 71.0;     // FAT class / detail category: the normal stress range at 2e6 cycles, MPa
+  std::optional<double> shear_class_mpa;  // the shear range at 2e6 cycles, MPa; nullopt: the request's shear default
   core::InputLocation where;   // for messages about the set
 };
 
 struct FatigueRequest {
   FatigueCode code = FatigueCode::iiw;
   double default_class_mpa = 71.0;
+  double shear_default_class_mpa = 80.0;  // IIW FAT80 (fillet weld throat) / EN 1993-1-9 delta tau_C 80
   std::vector<FatigueDetail> details;
   fatigue::MeanStressCorrection mean_stress = fatigue::MeanStressCorrection::none();
   std::optional<double> thickness;  // m
@@ -63,19 +70,39 @@ struct FatigueRequest {
 FatigueRequest read_fatigue_block(const YamlMap& block);
 // The S-N curve of a class under the request's code and thickness correction.
 fatigue::SnCurve fatigue_curve(const FatigueRequest& request, double class_mpa);
+// The code's shear S-N curve of a class (no thickness correction: both codes apply it to normal stress).
+fatigue::SnCurve fatigue_shear_curve(const FatigueRequest& request, double class_mpa);
+
+// IIW's comparison value CV for non-proportional normal and shear stress (IIW 2016, combined normal and shear stress, steel).
+inline constexpr double kIiwComparisonValue = 0.5;
+// IIW: a stress whose largest range is under this fraction of the other's is neglected.
+inline constexpr double kIiwNeglectFraction = 0.15;
+// The combined damage of a normal and a shear damage sum over the same period (F.27-F.29):
+// the period over the life the combination allows. IIW: the number of periods k at which
+// (D_s k)^(2/3) + (D_t k)^(2/5) = CV, returned as 1 / k, or the one sum alone when the other
+// stress's largest range is under 15 % of its own; EN 1993-1-9: D_s + D_t. Ranges in Pa.
+double combined_damage(FatigueCode code, double normal_damage, double shear_damage, double normal_max_range, double shear_max_range);
+// How the combination is taken, for reports.
+std::string combination_rule(FatigueCode code);
 // "IIW 2016 (Hobbacher, IIW-2259-15)" or "EN 1993-1-9:2005".
 std::string fatigue_code_name(FatigueCode code);
 
 // Damage per hour and life at every station and section point.
 struct LifeMap {
   std::string code;                       // the code's full name
+  FatigueCode code_id = FatigueCode::iiw;
   double block_seconds = 0.0;             // T_block: the steady window as a repeated block (n samples x dt)
   std::size_t block_samples = 0;
   std::vector<int> curve_of_station;      // index into curves, per StressHistories station
   std::vector<std::string> curves;        // curve names (SnCurve::name), in first use order
+  std::vector<std::string> shear_curves;  // per curve: the shear curve's name
   std::vector<std::string> assignment;    // per curve: "LEFT_RAIL (details[0])" / "default" ...
-  // Per station s, per section point p of its section: damage per hour (1/h).
+  // Per station s, per section point p of its section: damage per hour (1/h), normal and shear
+  // combined (F.27-F.29); the normal-only and shear-only parts; each stress's largest
+  // counted range (Pa, the 15 % rule). An open wall's shear is that of its worse face.
   std::vector<std::vector<double>> damage_per_hour;
+  std::vector<std::vector<double>> normal_damage_per_hour, shear_damage_per_hour;
+  std::vector<std::vector<double>> normal_max_range, shear_max_range;
   // The location of the largest damage per hour (ties to the lowest station, then point).
   std::size_t worst_station = 0;
   int worst_point = 0;
@@ -99,8 +126,9 @@ struct DutyScenario {
 };
 struct DutyLife {
   double cycle_hours = 0.0;                           // sum H_i
-  std::vector<std::vector<double>> damage_per_cycle;  // D per station and point (F.23)
-  std::vector<std::vector<int>> dominant;             // the scenario index doing most damage there
+  std::vector<std::vector<double>> damage_per_cycle;  // D per station and point (F.23), normal and shear combined (F.29)
+  std::vector<std::vector<double>> normal_damage_per_cycle, shear_damage_per_cycle;  // sum H_i d_h,i of each stress
+  std::vector<std::vector<int>> dominant;             // the scenario index doing most (combined) damage there
   std::size_t worst_station = 0;
   int worst_point = 0;
   // Life in hours of the duty cycle at a location: cycle_hours / D (infinite for D = 0).

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "coupling/study_blocks.h"
@@ -61,6 +62,40 @@ rigid::Tire3D tire(const YamlMap& m) {
   if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in, /*with_table=*/false);
   if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in, /*with_table=*/false);
   return t;
+}
+
+// The four tires with their names and their study keys.
+template <typename Machine>
+auto named_tires(Machine& p) {
+  struct Named {
+    const char* name;
+    const char* axle;
+    const char* side;
+    decltype(&p.front_tires.left) tire;
+  };
+  return std::array<Named, 4>{{{"front left", "front", "left", &p.front_tires.left},
+                               {"front right", "front", "right", &p.front_tires.right},
+                               {"rear left", "rear", "left", &p.rear_tires.left},
+                               {"rear right", "rear", "right", &p.rear_tires.right}}};
+}
+
+// F.30: behind = x_tire - x_front for every road input the study gave no `behind`.
+void derive_road_delays(rigid::Machine3DParameters& p, const YamlMap& tires) {
+  const double x_front = 0.5 * (p.front_tires.left.contact.x() + p.front_tires.right.contact.x());
+  const double scale = std::max({1.0, std::abs(p.front_tires.left.contact.x()), std::abs(p.rear_tires.left.contact.x())});
+  // A contact's X as the study wrote it (in its units).
+  const auto x_text = [&](const char* axle, const char* side) { return tires.map(axle).map(side).node()["contact"][0].Scalar(); };
+  for (const auto& t : named_tires(p))
+    for (const auto& [key, input] : {std::pair("vertical_input", &t.tire->vertical_input), std::pair("longitudinal_input", &t.tire->longitudinal_input)}) {
+      if (input->kind != rigid::GroundInput::Kind::road || input->behind_given) continue;
+      const double behind = t.tire->contact.x() - x_front;
+      if (behind < -1e-9 * scale) {
+        const YamlMap in = tires.map(t.axle).map(t.side).map(key);
+        throw in.error("", "a tire on or behind the front axle (contact X >= the front tires' mean X, X growing rearward) to derive its road delay, or 'behind'",
+                       fmt::format("contact X {} ahead of the front tires' ({} and {})", x_text(t.axle, t.side), x_text("front", "left"), x_text("front", "right")));
+      }
+      input->behind = std::max(0.0, behind);
+    }
 }
 
 rigid::Axle3D axle(const YamlMap& m) {
@@ -130,6 +165,15 @@ void read_part_mounts(const YamlMap& a, StudyFramePart& sp) {
 }
 
 }  // namespace
+
+std::vector<RoadDelay> road_delays(const rigid::Machine3DParameters& machine) {
+  std::vector<RoadDelay> out;
+  for (const auto& t : named_tires(machine))
+    for (const auto& [suffix, input] : {std::pair("", &t.tire->vertical_input), std::pair(" (longitudinal)", &t.tire->longitudinal_input)})
+      if (input->kind == rigid::GroundInput::Kind::road)
+        out.push_back({std::string(t.name) + suffix, input->behind, input->behind / input->speed, input->behind_given});  // F.31
+  return out;
+}
 
 std::string study_model(const std::string& file) {
   const YAML::Node doc = load_yaml_file(file);
@@ -248,6 +292,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   tires.allow_only({"front", "rear"});
   p.front_tires = axle(tires.map("front"));
   p.rear_tires = axle(tires.map("rear"));
+  derive_road_delays(p, tires);
   p.travel_angle = p.rear_tires.steering_angle;  // crab steering: the machine travels along its wheels
   if (auto g = root.optional_map("ground")) {
     g->allow_only({"slope_deg", "forward_speed", "travel_angle_deg"});

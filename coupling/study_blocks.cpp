@@ -186,7 +186,8 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
       throw m.error("length", "a profile length L (m) with at least one line k / L in ISO 8608's band 0.011 to 2.83 cycle/m", describe(m.node()["length"]));
     g.road = std::make_shared<const rigid::RoadProfile>(o);
     g.speed = m.positive("speed", Quantity::velocity);
-    g.behind = m.has("behind") ? m.non_negative("behind", Quantity::length) : 0.0;
+    g.behind_given = m.has("behind");
+    g.behind = g.behind_given ? m.non_negative("behind", Quantity::length) : 0.0;
   } else {
     throw m.error("kind", with_table ? "sine, bump, table or road" : "sine, bump or road", "'" + kind + "'");
   }

@@ -256,6 +256,21 @@ PointStress point_stress(const SectionProperties& s, const SectionPoint& p, cons
   return combine_stresses(sigma, tau);
 }
 
+Eigen::Vector2d shear_direction(const SectionPoint& p) {
+  for (const Eigen::Vector2d* v : {&p.shear_per_torque, &p.shear_per_vy, &p.shear_per_vz})
+    if (v->norm() > 0.0) return v->normalized();
+  return Eigen::Vector2d::Zero();
+}
+
+SignedShear signed_shear(const SectionPoint& p, const SectionForces& f) {
+  // fatigue.md Eq. F.26: the components along d; exact because every unit response lies along d.
+  const Eigen::Vector2d d = shear_direction(p);
+  const double from_forces = d.dot(f.vy * p.shear_per_vy + f.vz * p.shear_per_vz);
+  const double from_torque = d.dot(f.t * p.shear_per_torque);
+  if (p.open_wall) return {from_forces + from_torque, from_forces - from_torque};
+  return {from_forces + from_torque, from_forces + from_torque};
+}
+
 std::vector<PointStress> point_stresses(const SectionProperties& s, const std::vector<SectionPoint>& points, const SectionForces& f) {
   std::vector<PointStress> out;
   out.reserve(points.size());

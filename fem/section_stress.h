@@ -65,6 +65,20 @@ std::vector<PointStress> point_stresses(const SectionProperties& section, const 
 // The same from sigma and |tau|: von Mises and the largest principal stress.
 PointStress combine_stresses(double normal, double shear);
 
+// The signed shear stress at a point (docs/theory/fatigue.md Eq. F.26), the input of a shear fatigue count:
+// every unit response of a point (per T, Vy, Vz) acts along the same line, the wall's
+// or surface's tangent (shear on a free surface is tangent to it), so the shear is the
+// signed component tau . d along the point's direction d: the first non-zero of
+// shear_per_torque, shear_per_vy, shear_per_vz, normalised (zero where none is, as at a
+// rectangle's corners). An open thin wall's two faces see tau_V + tau_T and tau_V - tau_T;
+// elsewhere the two are the same. |face| or |other_face| is PointStress::shear.
+Eigen::Vector2d shear_direction(const SectionPoint& point);
+struct SignedShear {
+  double face = 0.0;        // Pa: tau_V + tau_T along shear_direction
+  double other_face = 0.0;  // Pa: tau_V - tau_T on an open wall's other face, else = face
+};
+SignedShear signed_shear(const SectionPoint& point, const SectionForces& forces);
+
 // Saint-Venant torsion of a solid rectangle: the shear stress at the middle
 // of its long sides (the largest) and of its short sides, per unit torque,
 // Pa / (N m), from the series of the Prandtl stress function (Eqs. 20.2, 20.3).

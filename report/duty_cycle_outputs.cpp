@@ -55,6 +55,13 @@ std::vector<std::size_t> locations_dominated(const coupling::DutyLife& life, std
   return dominated;
 }
 
+double scenario_share(const coupling::DutyCycleResults& r, std::size_t scenario, std::size_t station, int point) {
+  const auto part = [&](std::size_t i) { return r.scenarios[i].hours * r.scenarios[i].frame.life->damage_per_hour[station][static_cast<std::size_t>(point)]; };
+  double sum = 0.0;
+  for (std::size_t i = 0; i < r.scenarios.size(); ++i) sum += part(i);
+  return sum > 0.0 ? part(scenario) / sum : 0.0;
+}
+
 std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const coupling::DutyCycleRequest& q, const coupling::DutyCycleResults& r,
                                                   bool figures, core::ResultsFolder& folder) {
   const coupling::DutyCycleScenarioResult& first = r.scenarios.front();
@@ -64,7 +71,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
   const std::string L = u.label(Quantity::length);
   // life_map.csv
   std::vector<std::string> header = {"output", "element", "station", column("X", L), column("Y", L), column("Z", L), "point",
-                                     "sn_curve", column("damage_per_cycle", "1"), column("life", "h"), "dominant"};
+                                     "sn_curve", column("damage_per_cycle", "1"), column("life", "h"), "dominant",
+                                     column("normal_damage_per_cycle", "1"), column("shear_damage_per_cycle", "1")};
   for (const auto& s : r.scenarios) header.push_back(column("damage_per_hour " + s.name, "1/h"));
   CsvTable t(header);
   for (std::size_t s = 0; s < h.stations.size(); ++s) {
@@ -75,7 +83,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
           .add(u.from_si(st.point.z(), Quantity::length)).add(point_name(h, s, static_cast<int>(p)))
           .add(first.frame.life->curves[static_cast<std::size_t>(first.frame.life->curve_of_station[s])]).add(life.damage_per_cycle[s][p])
           .add(std::isfinite(l) ? fmt::format("{:.6g}", l) : std::string())
-          .add(life.damage_per_cycle[s][p] > 0.0 ? r.scenarios[static_cast<std::size_t>(life.dominant[s][p])].name : std::string());
+          .add(life.damage_per_cycle[s][p] > 0.0 ? r.scenarios[static_cast<std::size_t>(life.dominant[s][p])].name : std::string())
+          .add(life.normal_damage_per_cycle[s][p]).add(life.shear_damage_per_cycle[s][p]);
       for (const auto& sc : r.scenarios) t.add(sc.frame.life->damage_per_hour[s][p]);
     }
   }
@@ -107,7 +116,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
                         {"X", {{"value", u.from_si(st.point.x(), Quantity::length)}, {"unit", L}}}};
   };
   fat["code"] = first.frame.life->code;
-  fat["stress"] = "normal stress range at every section point (static + dynamic); shear not combined";
+  fat["stress"] = kStressDescription;
+  fat["combination"] = coupling::combination_rule(first.frame.life->code_id);
   fat["cycle_hours"] = life.cycle_hours;
   ordered_json ml = {{"value", std::isfinite(min_life) ? ordered_json(min_life) : ordered_json(nullptr)}, {"unit", "h"}};
   ml.update(where(ws, wp));
@@ -115,6 +125,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
   fat["min_life"] = ml;
   fat["damage_per_hour"] = {{"value", d_cycle / life.cycle_hours}, {"unit", "1/h"}};
   fat["damage_per_cycle"] = d_cycle;
+  fat["damage_per_cycle_parts"] = damage_parts(life.normal_damage_per_cycle.at(ws).empty() ? 0.0 : life.normal_damage_per_cycle[ws][static_cast<std::size_t>(wp)],
+                                               life.shear_damage_per_cycle.at(ws).empty() ? 0.0 : life.shear_damage_per_cycle[ws][static_cast<std::size_t>(wp)], d_cycle, "1");
   fat["mean_stress"] = q.fatigue.mean_stress.describe();
   ordered_json assumed = ordered_json::array();
   const coupling::LifeMap& m = *first.frame.life;
@@ -135,7 +147,7 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
                       {"hours", sc.hours},
                       {"steady_window", {{"from", sc.frame.hot_spots.window.from}, {"source", sc.frame.hot_spots.window.source}, {"block_seconds", lm.block_seconds}}},
                       {"damage_at_min_life_location", sc.hours * lm.damage_per_hour[ws][static_cast<std::size_t>(wp)]},
-                      {"share_at_min_life_location", d_cycle > 0.0 ? sc.hours * lm.damage_per_hour[ws][static_cast<std::size_t>(wp)] / d_cycle : 0.0},
+                      {"share_at_min_life_location", scenario_share(r, i, ws, wp)},
                       {"locations_dominated", dominated[i]},
                       {"min_life_alone", {{"value", own > 0.0 ? ordered_json(1.0 / own) : ordered_json(nullptr)}, {"unit", "h"}}}};
     o["min_life_alone"].update(where(lm.worst_station, lm.worst_point));

@@ -18,6 +18,11 @@ namespace framedyn::report {
 // How many locations (station, section point) with damage each scenario dominates.
 std::vector<std::size_t> locations_dominated(const coupling::DutyLife& life, std::size_t scenarios);
 
+// Scenario i's share of the damage at a location: H_i d_h,i / sum_j H_j d_h,j with d_h the
+// scenarios' combined damage per hour (shares add to 1; under IIW's Gough-Pollard the cycle's
+// combined damage is not that sum, theory/fatigue.md section 10). 0 where nothing is damaged.
+double scenario_share(const coupling::DutyCycleResults& r, std::size_t scenario, std::size_t station, int point);
+
 // Writes every output of the cycle into `folder` (not committed); returns the figures written.
 std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const coupling::DutyCycleRequest& q, const coupling::DutyCycleResults& r,
                                                   bool figures, core::ResultsFolder& folder);

@@ -25,13 +25,17 @@ std::string life_text(double life) { return std::isfinite(life) ? fmt::format("{
 
 }  // namespace
 
+ordered_json damage_parts(double normal, double shear, double combined, const std::string& unit) {
+  return {{"normal", normal}, {"shear", shear}, {"combined", combined}, {"unit", unit}};
+}
+
 void write_life_map(const coupling::FrameStudyResults& r, const coupling::FrameStudyRequest& q, const core::ResultsFolder& folder) {
   if (!r.life || !q.fatigue) return;
   const coupling::LifeMap& m = *r.life;
   const core::UnitSystem& u = q.units;
   CsvTable t({"output", "element", "station", column("X", u.label(Quantity::length)), column("Y", u.label(Quantity::length)),
-              column("Z", u.label(Quantity::length)), "point", "sn_curve", column("damage_per_hour", "1/h"), column("life", "h"),
-              fmt::format("damage in {:g} h", q.fatigue->hours)});
+              column("Z", u.label(Quantity::length)), "point", "sn_curve", "shear_sn_curve", column("damage_per_hour", "1/h"), column("life", "h"),
+              fmt::format("damage in {:g} h", q.fatigue->hours), column("normal_damage_per_hour", "1/h"), column("shear_damage_per_hour", "1/h")});
   for (std::size_t s = 0; s < r.stress.stations.size(); ++s) {
     const coupling::StressStation& st = r.stress.stations[s];
     const auto& points = r.stress.points[static_cast<std::size_t>(st.section)];
@@ -39,23 +43,33 @@ void write_life_map(const coupling::FrameStudyResults& r, const coupling::FrameS
       const double d = m.damage_per_hour[s][p];
       t.row().add(st.set).add(st.element_id).add(st.station).add(u.from_si(st.point.x(), Quantity::length))
           .add(u.from_si(st.point.y(), Quantity::length)).add(u.from_si(st.point.z(), Quantity::length)).add(points[p].name)
-          .add(m.curves[static_cast<std::size_t>(m.curve_of_station[s])]).add(d).add(life_text(life_of(d))).add(d * q.fatigue->hours);
+          .add(m.curves[static_cast<std::size_t>(m.curve_of_station[s])]).add(m.shear_curves[static_cast<std::size_t>(m.curve_of_station[s])])
+          .add(d).add(life_text(life_of(d))).add(d * q.fatigue->hours).add(m.normal_damage_per_hour[s][p]).add(m.shear_damage_per_hour[s][p]);
     }
   }
   folder.write_text("life_map.csv", t.str());
   write_life_vtu(r.model, r.stress, m.damage_per_hour, u, folder);
 }
 
-void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
-                    const core::UnitSystem& u, const core::ResultsFolder& folder) {
-  // Per beam element the largest damage per hour over its stations and points (0 off the outputs).
+std::vector<VtuField> life_cell_fields(const fem::FrameModel& model, const coupling::StressHistories& stress,
+                                       const std::vector<std::vector<double>>& damage_per_hour) {
+  // Per beam element the largest damage per hour over its stations and points (0 off the outputs),
+  // and its life, capped at kUnlimitedLife where nothing (or next to nothing) is damaged: framedyn's
+  // files hold no infinity or NaN (the XDMF writer refuses them).
   VtuField damage{"fatigue_damage_per_hour [1/h]", 1, std::vector<double>(model.beams.size(), 0.0)};
-  for (std::size_t s = 0; s < stress.stations.size(); ++s) {
+  for (std::size_t s = 0; s < stress.stations.size() && s < damage_per_hour.size(); ++s) {
     const int b = model.beam_index(stress.stations[s].element_id);
     if (b < 0) continue;
     for (double d : damage_per_hour[s]) damage.values[static_cast<std::size_t>(b)] = std::max(damage.values[static_cast<std::size_t>(b)], d);
   }
-  folder.write_text("frame_life.vtu", vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), {}, {damage}));
+  VtuField life{"fatigue_life [h]", 1, {}};
+  for (double d : damage.values) life.values.push_back(d > 1.0 / kUnlimitedLife ? 1.0 / d : kUnlimitedLife);
+  return {damage, life};
+}
+
+void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
+                    const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  folder.write_text("frame_life.vtu", vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), {}, {life_cell_fields(model, stress, damage_per_hour).front()}));
 }
 
 ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const coupling::FrameStudyRequest& q) {
@@ -67,7 +81,8 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
   const double d = m.max_damage_per_hour();
   const double life = life_of(d);
   j["code"] = m.code;
-  j["stress"] = "normal stress range at every section point (static + dynamic); shear not combined";
+  j["stress"] = kStressDescription;
+  j["combination"] = coupling::combination_rule(m.code_id);
   j["hours"] = q.fatigue->hours;
   j["min_life"] = {{"value", std::isfinite(life) ? ordered_json(life) : ordered_json(nullptr)},
                    {"unit", "h"},
@@ -77,6 +92,8 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
                    {"output", st.set},
                    {"X", {{"value", u.from_si(st.point.x(), Quantity::length)}, {"unit", u.label(Quantity::length)}}}};
   j["damage_per_hour"] = {{"value", d}, {"unit", "1/h"}};
+  j["damage_per_hour_parts"] = damage_parts(m.normal_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)],
+                                            m.shear_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)], d, "1/h");
   j["damage"] = {{"value", d * q.fatigue->hours}, {"hours", q.fatigue->hours}};
   j["mean_stress"] = q.fatigue->mean_stress.describe();
   j["block"] = {{"seconds", m.block_seconds}, {"samples", m.block_samples}, {"residue", "repeated block (closed at the absolute maximum)"}};
@@ -85,7 +102,7 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
   for (std::size_t c = 0; c < m.curves.size(); ++c) {
     std::size_t stations = 0;
     for (int k : m.curve_of_station) stations += k == static_cast<int>(c);
-    assumed.push_back({{"where", m.assignment[c]}, {"sn_curve", m.curves[c]}, {"stations", stations}});
+    assumed.push_back({{"where", m.assignment[c]}, {"sn_curve", m.curves[c]}, {"shear_sn_curve", m.shear_curves[c]}, {"stations", stations}});
   }
   j["details_assumed"] = assumed;
   return j;

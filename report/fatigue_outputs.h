@@ -11,8 +11,16 @@
 #include "core/results_folder.h"
 #include "coupling/frame_study.h"
 #include "report/plot.h"
+#include "report/vtu_writer.h"
 
 namespace framedyn::report {
+
+// What the life map counts, for summaries.
+inline constexpr const char* kStressDescription =
+    "normal stress range and signed shear stress range (torsion + transverse shear) at every section point (static + dynamic), "
+    "each on its S-N curve, combined as the code says (combination)";
+// {normal, shear, combined, unit}: the damage of each stress alone and combined.
+nlohmann::ordered_json damage_parts(double normal, double shear, double combined, const std::string& unit);
 
 // Nothing without results.life.
 void write_life_map(const coupling::FrameStudyResults& results, const coupling::FrameStudyRequest& request, const core::ResultsFolder& folder);
@@ -25,7 +33,14 @@ LinePlot life_along_rails_figure(const coupling::FrameStudyResults& results, con
 // The same from any damage-per-hour table over the stations and points of `stress` (a duty cycle's).
 LinePlot life_along_rails_figure(const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour, const std::string& code,
                                  const core::UnitSystem& units);
-// frame_life.vtu: the mesh with the cell field fatigue_damage_per_hour [1/h] (per element the largest).
+// The life map as cell fields: fatigue_damage_per_hour [1/h] (per element the largest over its
+// stations and points, 0 off the outputs) and fatigue_life [h] (its inverse, at most kUnlimitedLife),
+// added to every step of the frame's ParaView series (report/frame_outputs.cpp).
+inline constexpr double kUnlimitedLife = 1e12;  // h: an element without damage (no infinity in the files)
+std::vector<VtuField> life_cell_fields(const fem::FrameModel& model, const coupling::StressHistories& stress,
+                                       const std::vector<std::vector<double>>& damage_per_hour);
+// frame_life.vtu: the mesh with the cell field fatigue_damage_per_hour [1/h] (per element the largest);
+// kept beside the series for the duty cycle (which has no series) and scripts that read it.
 void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
                     const core::UnitSystem& units, const core::ResultsFolder& folder);
 

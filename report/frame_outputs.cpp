@@ -186,7 +186,10 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
   const fem::FrameModel& m = r.model;
   std::vector<fem::BeamGeometry> geometry;
   for (const fem::BeamElement& b : m.beams) geometry.push_back(fem::beam_geometry(m, b));
-  // Point fields (displacement, rotation) and cell fields (peak stress, moment, mid-length axial force) at output time j.
+  // The life map (when the study asks for fatigue): constant cell fields on every step, so ParaView
+  // shows the life beside the stresses (docs/user-guide.md "Fatigue").
+  const std::vector<VtuField> life_fields = r.life && q.fatigue ? life_cell_fields(m, r.stress, r.life->damage_per_hour) : std::vector<VtuField>{};
+  // Point fields (displacement, rotation) and cell fields (peak stress, moment, mid-length axial force; the life map) at output time j.
   const auto frame_fields = [&](Eigen::Index j) -> std::pair<std::vector<VtuField>, std::vector<VtuField>> {
     const Eigen::VectorXd uj = r.response.displacement.col(j);
     report::VtuField disp{fmt::format("displacement [{}]", u.label(Quantity::length)), 3, {}};
@@ -222,7 +225,9 @@ void write_frame_outputs(const FrameStudyResults& r, const FrameStudyRequest& q,
       moment.values.push_back(mmax * mf);
       axial.values.push_back(fem::section_forces_at(f, 0.5 * geometry[e].data.length).n / u.to_si_factor(Quantity::force));
     }
-    return {{disp, rot}, {stress, moment, axial}};
+    std::vector<VtuField> cells = {stress, moment, axial};
+    cells.insert(cells.end(), life_fields.begin(), life_fields.end());
+    return {{disp, rot}, cells};
   };
   const Eigen::Index frames = r.response.times.size();
   if (q.paraview == coupling::ParaviewOutput::xdmf) {

@@ -21,8 +21,13 @@ void write_rainflow_results(const RainflowRun& run, const core::ResultsFolder& f
                    {"residue", fatigue::describe(run.summary.residue)},
                    {"standard", "ASTM E1049-85 5.4.4"}};
   if (run.curve) {
-    nlohmann::ordered_json eq = {{"value", nullptr}, {"unit", run.unit}, {"cycles", fatigue::kReferenceCycles}};
+    // No value where no range has that damage in 2e6 cycles (a curve with a cut-off: any range at or
+    // above it does more, any below none); a null would be refused as a broken-down number.
+    nlohmann::ordered_json eq;
     if (run.equivalent_range) eq["value"] = *run.equivalent_range;
+    eq["unit"] = run.unit;
+    eq["cycles"] = fatigue::kReferenceCycles;
+    if (!run.equivalent_range) eq["none"] = "no range does this damage in 2e6 cycles: at or above the curve's cut-off any does more, below it none";
     j["fatigue"] = {{"code", run.curve->code()},
                     {"curve", run.curve->name()},
                     {"mean_stress", run.mean_stress},

@@ -482,6 +482,9 @@ std::vector<Row> rows() {
       // ---- ISO 8608 rough ground under a tire (coupling/study_blocks.cpp)
       study_row("STUDY-125", "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: {kind: road, class: J, speed: 80}\n", "kind: road",
                 "tires.front.normal_input.class"),
+      study_row("STUDY-141", "    left:  {contact: [72, -30, -26], vertical: {stiffness: 3000}",
+                "    left:  {contact: [-10, -30, -26], vertical_input: {kind: road, class: D, speed: 78.74}, vertical: {stiffness: 3000}", "vertical_input:",
+                "tires.rear.left.vertical_input", kStudy3D),
       // ---- duty cycles (coupling/duty_cycle.cpp)
       Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
       Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
@@ -679,6 +682,16 @@ std::vector<Row> rows() {
       {"CLI-47", {{"series.csv", edit(kSeries, "0.1,50", "0.1")}}, "rainflow series.csv --out results", "series.csv:3", true},
       {"CLI-48", {{"series.csv", edit(edit(kSeries, "sg1 [MPa]", "sg1 [MPa],sg2 [MPa]"), "0,10", "0,10,12")}}, "rainflow series.csv --out results",
        "series.csv:1: --column", true},
+      // ---- framedyn rainflow's options (apps/rainflow_command.cpp)
+      {"CLI-60", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --mean-stress gerber --out results", "command line: --mean-stress", true},
+      {"CLI-62", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --mean-stress goodman --out results", "command line: --mean-stress", true},
+      {"CLI-63", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --mean-stress goodman --ultimate high --out results", "command line: --ultimate", true},
+      {"CLI-64", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --ultimate 400 --out results", "command line: --ultimate", true},
+      {"CLI-65", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --thickness 0 --out results", "command line: --thickness", true},
+      {"CLI-66", {{"series.csv", kSeries}}, "rainflow series.csv --curve basquin:2e12:3 --thickness 40 --out results", "command line: --thickness", true},
+      {"CLI-67", {{"series.csv", kSeries}}, "rainflow series.csv --curve points:1e5:200 --out results", "command line: --curve", true},
+      {"CLI-68", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT90 --curve basquin:2e12:3 --out results", "command line: --curve", true},
+      {"CLI-69", {{"series.csv", kSeries}}, "rainflow series.csv --thickness 40 --out results", "command line: --thickness", true},
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");

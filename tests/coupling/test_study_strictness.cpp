@@ -7,6 +7,8 @@
 //     study is refused naming both systems, unless the study says
 //     frame.convert_units: true; converted, the history gives the same frame
 //     response as the same loads written in the study's units.
+// And the rear tires' road delay (docs/theory/fatigue.md section 11): derived from the
+// tire positions unless the study gives `behind`.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,6 +22,7 @@
 #include "coupling/frame_study.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study.h"
+#include "coupling/rigid_study_3d.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -141,6 +144,36 @@ TEST(StrictStudy, AMeshInOtherUnitsIsRefusedNamingBothSystems) {
   const std::string m = error_of([&] { coupling::run_frame_study(coupling::read_frame_study(file.string())); });
   EXPECT_NE(m.find("frame.mesh: expected a mesh in the study's units, mm-N-s (or frame.convert_units: true to convert it), found "), std::string::npos) << m;
   EXPECT_NE(m.find("r100_frame.inp in in-lbf-s"), std::string::npos) << m;
+}
+
+// The shipped transport study gives no `behind`: its rear tires run the wheelbase behind, the
+// contacts' X 72 - 0 = 72 in = 1.8288 m, and see the front's profile 1.8288 m / (78.74 in/s =
+// 1.999996 m/s) = 0.914402 s later; the front tires 0. `behind` overrides; a tire ahead of the
+// front axle without `behind` is refused (STUDY-141).
+TEST(RoadDelay, RearTiresRunTheWheelbaseBehindFromTheTirePositionsAndBehindOverridesIt) {
+  const framedyn::testing::TempDir dir;
+  std::string text = read_text(kSource / "examples" / "transport_rough_ground.yaml");
+  text = replaced(text, "  mesh: ../meshes/r100_frame.inp", "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
+  const auto delays_of = [&](const std::string& study) { return coupling::road_delays(coupling::read_rigid_study_3d(dir.write("study.yaml", study).string()).machine); };
+  const std::vector<coupling::RoadDelay> derived = delays_of(text);
+  ASSERT_EQ(derived.size(), 4u);
+  const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double behind = k < 2 ? 0.0 : wheelbase;
+    EXPECT_EQ(derived[k].tire, (std::vector<std::string>{"front left", "front right", "rear left", "rear right"}[k]));
+    EXPECT_NEAR(derived[k].behind, behind, 1e-12);
+    EXPECT_NEAR(derived[k].delay, behind / speed, 1e-12);
+    EXPECT_FALSE(derived[k].given);
+  }
+  EXPECT_NEAR(derived[2].delay, 0.914402, 1e-6);
+  const std::string rear_left = "left:  {contact: [72, -30, -26], vertical_input: {kind: road,";
+  const std::vector<coupling::RoadDelay> given = delays_of(replaced(text, rear_left, "left:  {contact: [72, -30, -26], vertical_input: {behind: 60, kind: road,"));
+  EXPECT_NEAR(given[2].behind, 60 * 0.0254, 1e-12);
+  EXPECT_TRUE(given[2].given);
+  EXPECT_NEAR(given[3].behind, wheelbase, 1e-12);
+  const std::string ahead = replaced(text, rear_left, "left:  {contact: [-10, -30, -26], vertical_input: {kind: road,");
+  const std::string m = error_of([&] { delays_of(ahead); });
+  EXPECT_NE(m.find("tires.rear.left.vertical_input: expected a tire on or behind the front axle"), std::string::npos) << m;
 }
 
 }  // namespace

@@ -1,11 +1,15 @@
 // `framedyn rainflow` as a user runs it (docs/validation.md V14.7): a strain-gauge history in
 // MPa and the same history in psi give the same cycles and the same damage, equal to n / N from
-// the S-N curve; the outputs carry the series' unit; the repeated-block option closes the count.
+// the S-N curve; the outputs carry the series' unit; the repeated-block option closes the count;
+// the options --mean-stress goodman --ultimate, --thickness and --curve against hand figures.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
 #include <string>
 
 #include "tests/support/run_framedyn.h"
@@ -71,6 +75,44 @@ TEST(RainflowCommand, RepeatedBlockCountsFullCyclesOnly) {
   EXPECT_EQ(csv.find(",0.5\n"), std::string::npos);  // no half cycle
   const auto q = framedyn(dir, "rainflow mpa.csv --out again -q");
   EXPECT_EQ(q.out, "results in again/\n");
+}
+
+// The options against hand figures, on the 50 cycles of range 100 MPa and mean 40 MPa above:
+//  - Goodman with S_u = 400 MPa: S_eq = 100 / (1 - 40/400) = 111.1 MPa (F.10), D = 50 / (2e6 (90/111.1)^3);
+//    the same series in psi with S_u in psi gives the same damage;
+//  - IIW thickness 50 mm, n = 0.3: FAT 90 (25/50)^0.3 = 73.11 MPa, D = 50 / (2e6 (73.11/100)^3); n = 0.2 given;
+//  - EN 1993-1-9 category 90, 50 mm: k_s = (25/50)^0.2 = 0.8706, 78.35 MPa (above its knee at 5e6), D = 50 / (2e6 (78.35/100)^3);
+//  - points 1e5:200,1e7:50 (MPa): m = ln 100 / ln 4, N(100) = 1e5 * 2^m = 1e5 * 10 = 1e6, D = 5e-5;
+//  - Basquin C = 2e12 MPa^3, m = 3: N(100) = 2e12 / 100^3 = 2e6, D = 2.5e-5.
+TEST(RainflowCommand, MeanStressThicknessAndUserCurvesGiveTheHandDamage) {
+  TempDir dir;
+  std::ofstream(dir / "mpa.csv") << series("MPa", 1.0);
+  std::ofstream(dir / "psi.csv") << series("psi", kPsi / 1e6);
+  int k = 0;
+  const auto damage = [&](const std::string& file, const std::string& args) {
+    const std::string out = "out" + std::to_string(k++);
+    const auto r = framedyn(dir, "rainflow " + file + " " + args + " --out " + out + " -q");
+    EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / out / "summary.json"));
+    return j["fatigue"]["damage"].get<double>();
+  };
+  const auto check = [&](double d, double expected, const std::string& what) {
+    EXPECT_NEAR(d, expected, 1e-12 * expected) << what;
+    std::cout << "[ measured ] " << what << ": D = " << d << " (hand " << expected << ")\n";
+  };
+  const double s_goodman = 100.0 / (1.0 - 40.0 / 400.0);
+  check(damage("mpa.csv", "--sn FAT90 --mean-stress goodman --ultimate 400"), 50.0 / (2e6 * std::pow(90.0 / s_goodman, 3)), "Goodman, MPa");
+  char ultimate_psi[32];
+  std::snprintf(ultimate_psi, sizeof ultimate_psi, "%.17g", 400e6 / kPsi);
+  check(damage("psi.csv", std::string("--sn FAT90 --mean-stress goodman --ultimate ") + ultimate_psi), 50.0 / (2e6 * std::pow(90.0 / s_goodman, 3)),
+        "Goodman, psi");
+  check(damage("mpa.csv", "--sn FAT90 --mean-stress none"), 50.0 / (2e6 * std::pow(0.9, 3)), "mean stress none");
+  check(damage("mpa.csv", "--sn FAT90 --thickness 50"), 50.0 / (2e6 * std::pow(0.9 * std::pow(0.5, 0.3), 3)), "IIW thickness 50 mm");
+  check(damage("mpa.csv", "--sn FAT90 --thickness 50 --thickness-exponent 0.2"), 50.0 / (2e6 * std::pow(0.9 * std::pow(0.5, 0.2), 3)), "IIW n = 0.2");
+  check(damage("mpa.csv", "--sn FAT90 --thickness 20"), 50.0 / (2e6 * std::pow(0.9, 3)), "IIW 20 mm: no correction");
+  check(damage("mpa.csv", "--sn EN90 --thickness 50"), 50.0 / (2e6 * std::pow(0.9 * std::pow(0.5, 0.2), 3)), "EN 1993-1-9 size effect");
+  check(damage("mpa.csv", "--curve points:1e5:200,1e7:50"), 5e-5, "points");
+  check(damage("mpa.csv", "--curve basquin:2e12:3"), 2.5e-5, "Basquin");
 }
 
 }  // namespace

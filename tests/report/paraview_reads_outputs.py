@@ -14,7 +14,11 @@ times, the same times, and the displacement of each corner node at the time
 of its largest |UX| equal to the CSV's. (4) A mesh of three-node beams
 (B32R, B32) and a two-node beam (B31): the XDMF Mixed topology reads as two
 VTK quadratic edges (type 21, midside node third) and one line (VTK_LINE 3 or
-VTK_POLY_LINE 4 of two points). Exit status 0 if all hold."""
+VTK_POLY_LINE 4 of two points). (5) The life map in the series: the portal
+frame with a fatigue block: frame_response.xdmf's cell fields
+fatigue_damage_per_hour and fatigue_life at the last time step equal, element
+by element, the largest damage per hour of life_map.csv's rows of that element
+and its inverse. Exit status 0 if all hold."""
 import csv
 import math
 import os
@@ -109,6 +113,37 @@ for fmt in ("xdmf", "vtu"):
         scale = max(abs(ux), abs(uy), abs(uz))
         check(all(close(g, c, scale) for g, c in zip(got, (ux, uy, uz))),
               f"frame_response ({fmt}) node {node} at t = {t} s: displacement {got} = frame_nodes_corners.csv {(ux, uy, uz)} m")
+
+# (5) The life map as cell fields of the frame's XDMF series (report/fatigue_outputs.h). The portal's
+# sway is mild: a low class (FAT5, not a real detail) gives every element on the outputs a life below
+# the 1e12-h cap, so that the field's values, not only the cap, are compared.
+study_file = os.path.join(work, "portal_life.yaml")
+with open(study_file, "w") as f:
+    f.write(study.replace("  stations: 3\n", "  stations: 3\n  paraview: xdmf\n  steady_from: 0\n  fatigue: {default: FAT5}\n"))
+out = os.path.join(work, "portal_life")
+run("frame-response", study_file, "--out", out)
+damage = {}  # element -> largest damage per hour over its stations and points
+with open(os.path.join(out, "life_map.csv")) as f:
+    for row in csv.DictReader(f):
+        d = float(row["damage_per_hour [1/h]"])
+        damage[int(row["element"])] = max(damage.get(int(row["element"]), 0.0), d)
+reader = Xdmf3ReaderS(FileName=[os.path.join(out, "frame_response.xdmf")])
+reader.UpdatePipelineInformation()
+data = read(reader, list(reader.TimestepValues)[-1])
+ids = data.GetCellData().GetArray("element_id")
+field = data.GetCellData().GetArray("fatigue_damage_per_hour [1/h]")
+life = data.GetCellData().GetArray("fatigue_life [h]")
+check(field is not None and life is not None, "frame_response.xdmf: cell fields fatigue_damage_per_hour [1/h] and fatigue_life [h]")
+if field is not None and life is not None:
+    got = {int(ids.GetValue(i)): (field.GetValue(i), life.GetValue(i)) for i in range(data.GetNumberOfCells())}
+    damaged = [e for e, d in damage.items() if d > 0.0]
+    worst = max(abs(got[e][0] - damage[e]) / damage[e] for e in damaged) if damaged else 1.0
+    # The life is 1 / damage, capped at 1e12 h (no infinity in the files).
+    worst_life = max(abs(got[e][1] * damage[e] - 1.0) if damage[e] > 1e-12 else abs(got[e][1] / 1e12 - 1.0) for e in damaged) if damaged else 1.0
+    off = all(got[e][0] == 0.0 and got[e][1] == 1e12 for e in got if e not in damage)
+    check(len(damaged) > 0 and worst <= 1e-8 and worst_life <= 1e-8 and off,
+          f"frame_response.xdmf: fatigue fields of {len(damaged)} damaged elements = life_map.csv's largest damage per hour and its inverse "
+          f"(worst relative difference {worst:.2e}, life {worst_life:.2e}); elements off the outputs 0 and 1e12 h")
 
 # (4) Three-node and two-node beams in one mesh.
 deck = open(os.path.join(source, "tests", "fuzz", "seeds", "inp", "three_node_beams.inp")).read()
