@@ -152,6 +152,9 @@ constexpr double kTipMass = 100.0, kLightDensity = 7.85, kForce = 1000.0;
 const double kBeamMass = kLightDensity * kA * kB * kL;
 const double kOmega = std::sqrt(3.0 * kE * kI_z / (kL * kL * kL) / (kTipMass + 33.0 / 140.0 * kBeamMass));
 const double kPeriod = 2.0 * M_PI / kOmega;
+// The frame is the oscillator up to the beam's own mass beyond Rayleigh's
+// quotient, second order in the mass ratio: (0.0785 / 100)^2 = 6e-7 (measured 3e-9 to 6e-9).
+constexpr double kOscillatorTolerance = 1e-6;
 
 std::string oscillator(const std::string& steps) {
   std::string s = cantilever("");
@@ -181,8 +184,8 @@ TEST(TransientSteps, ASuddenlyAppliedTipLoadPeaksAtTwiceTheStaticDeflection) {
   ASSERT_EQ(t.size(), 201);
   double worst = 0.0;
   for (Eigen::Index k = 0; k < t.size(); ++k) worst = std::max(worst, std::abs(u(k) - ust * (1.0 - std::cos(kOmega * t(k)))));
-  EXPECT_LT(worst, 1e-4 * ust);
-  EXPECT_NEAR(u.maxCoeff(), 2.0 * ust, 1e-4 * ust);
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
+  EXPECT_NEAR(u.maxCoeff(), 2.0 * ust, kOscillatorTolerance * ust);
   EXPECT_NEAR(t(100), kPeriod / 2.0, 1e-12 * kPeriod);
 }
 
@@ -201,7 +204,7 @@ TEST(TransientSteps, ARampedLoadFollowsTheClosedFormDuringAndAfterTheRamp) {
     const double exact = x <= tr ? x / tr - std::sin(w * x) / (w * tr) : 1.0 - (std::sin(w * x) - std::sin(w * (x - tr))) / (w * tr);
     worst = std::max(worst, std::abs(u(k) - ust * exact));
   }
-  EXPECT_LT(worst, 1e-4 * ust);
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
 }
 
 TEST(TransientSteps, DirectIntegrationIsTheTrapezoidalRulesRotationAndConvergesToTheModalStep) {
@@ -220,10 +223,10 @@ TEST(TransientSteps, DirectIntegrationIsTheTrapezoidalRulesRotationAndConvergesT
       worst = std::max(worst, std::abs(u(k) - ust * (1.0 - std::cos(big_omega * t(k)))));
       from_exact = std::max(from_exact, std::abs(u(k) - ust * (1.0 - std::cos(kOmega * t(k)))));
     }
-    EXPECT_LT(worst, 1e-4 * ust) << per_period << " steps per period";
+    EXPECT_LT(worst, kOscillatorTolerance * ust) << per_period << " steps per period";
     // The phase error after one period, 2 pi (omega/Omega - 1) ~ (omega dt)^2 / 12 * 2 pi, bounds the distance to the exact history.
     const double phase = 2.0 * M_PI * (kOmega / big_omega - 1.0);
-    EXPECT_LT(from_exact, (phase + 1e-4) * ust) << per_period << " steps per period";
+    EXPECT_LT(from_exact, (phase + kOscillatorTolerance) * ust) << per_period << " steps per period";
     EXPECT_GT(from_exact, 0.5 * phase * ust) << per_period << " steps per period";
   }
 }
@@ -248,7 +251,7 @@ TEST(TransientSteps, ModalDampingRangesDampTheModesTheyName) {
     const double exact = 1.0 - std::exp(-z * kOmega * x) * (std::cos(wd * x) + z / std::sqrt(1.0 - z * z) * std::sin(wd * x));
     worst = std::max(worst, std::abs(r.response.displacement(6 * m.node_index(5) + 2, k) - ust * exact));
   }
-  EXPECT_LT(worst, 1e-4 * ust);
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
 }
 
 TEST(TransientSteps, AnAmplitudeIsLinearBetweenItsPointsAndHeldOutsideThem) {
@@ -257,7 +260,7 @@ TEST(TransientSteps, AnAmplitudeIsLinearBetweenItsPointsAndHeldOutsideThem) {
       ".");
   const fem::Amplitude& a = m.amplitudes.at("A");
   EXPECT_EQ(a.at(0.0), 2.0);
-  EXPECT_DOUBLE_EQ(a.at(0.2), 0.5);
+  EXPECT_NEAR(a.at(0.2), 0.5, 1e-15);  // (0.2 - 0.1) / (0.3 - 0.1) in binary: round-off
   EXPECT_EQ(a.at(0.3), 4.0);  // a repeated time is a jump: the later value from it on
   EXPECT_EQ(a.at(5.0), 4.0);
   EXPECT_EQ(m.steps[0].load_amplitudes, std::vector<std::string>{"A"});
