@@ -360,7 +360,7 @@ std::vector<Row> rows() {
       // transient steps of a deck (issue 13): fem/inp_reader.cpp, fem/transient_step.cpp, apps/transient_command.cpp
       mesh_row("INP-70", kData, "*AMPLITUDE, NAME=RAMP\n0, 0, 1\n" + kData, "0, 0, 1", "*AMPLITUDE"),
       mesh_row("INP-71", "*CLOAD\n3, 3", "*CLOAD, AMPLITUDE=RAMP\n3, 3", "3, 3, 1000.", "*CLOAD"),
-      mesh_row("INP-72", "*STATIC\n", "*DYNAMIC\n0.1\n", "0.1", "*DYNAMIC"),
+      mesh_row("INP-72", "*STATIC\n", "*DYNAMIC\n0.25\n", "0.25", "*DYNAMIC"),
       mesh_row("INP-73", "*STATIC\n", "*MODAL DYNAMIC\n0.01, 0.1\n", "", "*MODAL DYNAMIC", "transient frame.inp --out results -q"),
       mesh_row("INP-74", "*STATIC\n", "*STATIC\n*MODAL DAMPING\n1, 5, 0.02\n", "*MODAL DAMPING", "*MODAL DAMPING"),
       mesh_row("INP-75", "*STATIC\n", "*DYNAMIC, ALPHA=-0.05\n0.01, 0.1\n", "*DYNAMIC", "*DYNAMIC"),
