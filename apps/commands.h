@@ -18,5 +18,6 @@ void add_frame_response_command(CLI::App& app, std::function<int()>& run);  // f
 void add_harmonic_command(CLI::App& app, std::function<int()>& run);        // harmonic_command.cpp
 void add_random_command(CLI::App& app, std::function<int()>& run);          // random_command.cpp
 void add_rainflow_command(CLI::App& app, std::function<int()>& run);        // rainflow_command.cpp
+void add_transient_command(CLI::App& app, std::function<int()>& run);       // transient_command.cpp
 
 }  // namespace framedyn::apps

@@ -80,20 +80,7 @@ FrequencyDomainFrame prepare_frequency_domain(const FrequencyDomainOptions& opt,
   if (f.load.cwiseAbs().maxCoeff() == 0.0)
     throw core::InputError({opt.mesh.path, 0, "*CLOAD"}, fmt::format("a nonzero nodal load (the load amplitudes of the {} analysis)", analysis),
                            f.step > 0 ? fmt::format("none in step {}", f.step) : std::string("none"));
-  if (!opt.output_set.empty()) {
-    std::string name = opt.output_set;
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    const auto it = model.node_sets.find(name);
-    if (it == model.node_sets.end()) {
-      std::string known;
-      for (const auto& [set, nodes] : model.node_sets) known += (known.empty() ? "" : ", ") + set;
-      throw core::InputError({opt.mesh.path, 0, "--output-set"},
-                             fmt::format("a node set of the mesh ({})", known.empty() ? std::string("it defines none") : known), "'" + opt.output_set + "'");
-    }
-    f.output_nodes = it->second;
-  } else {
-    for (int n = 0; n < static_cast<int>(model.nodes.size()); ++n) f.output_nodes.push_back(n);
-  }
+  f.output_nodes = output_set_nodes(model, opt.mesh.path, opt.output_set);
 
   fem::ModalOptions mo;
   const int free = fem::make_dof_map(model).free_count();

@@ -5,16 +5,26 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "core/warnings.h"
 #include "fem/frame_model.h"
 
 namespace framedyn::apps {
 
 struct MeshInput {
   std::string path;
-  std::string units;  // empty: take the mesh's "** units:" line
+  std::string units;    // empty: take the mesh's "** units:" line
+  std::string dialect;  // --inp-dialect: "abaqus", "calculix"; empty: Abaqus's reading, with a warning where they differ
   void add_options(CLI::App& cmd);
-  fem::FrameModel load() const;
+  // The reader's warnings (a CIRC section read without --inp-dialect) go to
+  // `warnings` when given (the caller writes them to summary.json and
+  // stderr), else straight to stderr.
+  fem::FrameModel load(std::vector<core::Warning>* warnings = nullptr) const;
 };
+
+// Node indices of the node set `set` (--output-set; any case), all nodes when
+// `set` is empty. Throws InputError naming the mesh's sets for an unknown one.
+std::vector<int> output_set_nodes(const fem::FrameModel& model, const std::string& mesh_path, const std::string& set);
 
 }  // namespace framedyn::apps

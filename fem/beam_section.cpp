@@ -96,6 +96,24 @@ SectionProperties circle_section(double r, double nu) {
   return s;
 }
 
+SectionProperties ellipse_section(double a, double b, double nu) {
+  require_positive(a, "CIRC semi-axis along 1");
+  require_positive(b, "CIRC semi-axis along 2");
+  SectionProperties s;
+  s.shape = "CIRC";
+  s.dimensions = {a, b};
+  s.area = kPi * a * b;
+  s.i11 = kPi * a * b * b * b / 4.0;  // about local 1: the extent b along 2 bends
+  s.i22 = kPi * a * a * a * b / 4.0;
+  s.torsion_constant = kPi * a * a * a * b * b * b / (a * a + b * b);
+  // Cowper's factor of the circle for both directions: exact for a = b, an
+  // approximation otherwise (the shear deformation of a slender beam is small).
+  const double k = 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
+  s.shear_area_1 = s.shear_area_2 = k * s.area;
+  for (int i = 0; i < 8; ++i) s.stress_points.emplace_back(a * std::cos(i * kPi / 4), b * std::sin(i * kPi / 4));
+  return s;
+}
+
 SectionProperties pipe_section(double ro, double t, double nu) {
   require_positive(ro, "PIPE outer radius");
   require_positive(t, "PIPE wall thickness");

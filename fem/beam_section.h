@@ -42,6 +42,11 @@ SectionProperties rectangle_section(double a, double b, double poisson_ratio);
 SectionProperties box_section(double a, double b, double t1, double t2, double t3, double t4);
 // Solid circle of radius r (Abaqus CIRC: r).
 SectionProperties circle_section(double radius, double poisson_ratio);
+// Solid ellipse with semi-axes a along local 1 and b along local 2 (CalculiX's
+// two-value CIRC line; docs/theory/fem.md section 23, Eqs. 23.1-23.3):
+// A = pi a b, I11 = pi a b^3 / 4, I22 = pi a^3 b / 4, J = pi a^3 b^3 / (a^2 + b^2).
+// Shape "CIRC" with dimensions {a, b}; a == b is circle_section(a).
+SectionProperties ellipse_section(double a, double b, double poisson_ratio);
 // Circular tube (Abaqus PIPE: outer radius r, wall thickness t).
 SectionProperties pipe_section(double outer_radius, double wall, double poisson_ratio);
 // I section (Abaqus I: l, h, b1, b2, t1, t2, t3; height h along local 2, bottom

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace framedyn::fem {
 
 const char* dof_name(int dof) {
@@ -53,6 +55,16 @@ std::string FrameModel::describe_dof(int global_dof) const {
   const int dof = global_dof % kDofsPerNode;
   if (node < 0 || node >= static_cast<int>(nodes.size())) return fmt::format("dof {}", global_dof);
   return fmt::format("node {} ({})", nodes[static_cast<std::size_t>(node)].id, dof_name(dof));
+}
+
+double Amplitude::at(double t) const {
+  if (times.empty()) return 1.0;
+  if (t <= times.front()) return values.front();
+  if (t >= times.back()) return values.back();
+  // The last point at or before t (a repeated time is a jump: the later value holds from it on).
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+  if (times[i + 1] == times[i]) return values[i + 1];
+  return values[i] + (values[i + 1] - values[i]) * (t - times[i]) / (times[i + 1] - times[i]);
 }
 
 FrameModel with_step(const FrameModel& model, std::size_t step) {

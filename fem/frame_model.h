@@ -133,16 +133,47 @@ struct DistributingCoupling {
 };
 inline constexpr int kMaxCouplingMounts = 8;
 
+// A tabular *AMPLITUDE (TIME=STEP TIME): the load factor at step time t,
+// linear between the points and held at the first and last value outside
+// them, as CalculiX and Abaqus read it (docs/theory/fem.md section 22).
+struct Amplitude {
+  std::vector<double> times;   // s, non-decreasing
+  std::vector<double> values;  // load factors, one per time
+  double at(double t) const;
+};
+
+// *MODAL DAMPING as CalculiX defines it: ratios of critical damping over
+// ranges of mode numbers (modes outside every range undamped), or RAYLEIGH
+// C = alpha M + beta K (docs/theory/fem.md section 22).
+struct ModalDampingRange {
+  int first_mode = 1, last_mode = 1;  // 1-based, inclusive
+  double ratio = 0.0;
+};
+
+// What a transient step (*MODAL DYNAMIC, *DYNAMIC) prescribes beyond its loads.
+struct TransientSettings {
+  double time_increment = 0.0;  // s: the fixed output and integration interval
+  double time_period = 0.0;     // s: the step's duration
+  std::vector<ModalDampingRange> damping_ranges;
+  bool rayleigh = false;
+  double rayleigh_alpha = 0.0;  // 1/s
+  double rayleigh_beta = 0.0;   // s
+};
+
 // One analysis step of the input (*STEP ... *END STEP): its procedure and the
 // supports and loads in force during it, those of the steps before carried
 // over as CalculiX does (docs/theory/fem.md section 18).
 struct AnalysisStep {
   int number = 0;                        // 1, 2, ... in the order of the input
-  std::string procedure;                 // "STATIC" (also a step that names none) or "FREQUENCY"
+  std::string procedure;                 // "STATIC" (also a step that names none), "FREQUENCY", "MODAL DYNAMIC" or "DYNAMIC"
   std::optional<int> requested_modes;    // *FREQUENCY's number of eigenvalues
   std::vector<Constraint> constraints;
   std::vector<NodalLoad> loads;
+  // Parallel to loads: the *CLOAD's AMPLITUDE name (upper case), empty for a
+  // load constant in the step.
+  std::vector<std::string> load_amplitudes;
   std::vector<ElementLoad> element_loads;
+  std::optional<TransientSettings> transient;  // *MODAL DYNAMIC and *DYNAMIC steps
 };
 
 struct FrameModel {
@@ -163,6 +194,7 @@ struct FrameModel {
   // The input's steps, in order; empty for a deck without *STEP. The fields
   // constraints, loads and element_loads above hold the first step's.
   std::vector<AnalysisStep> steps;
+  std::map<std::string, Amplitude> amplitudes;  // *AMPLITUDE by upper-case name
 
   int dof_count() const { return kDofsPerNode * static_cast<int>(nodes.size()); }
   // Index of the node with mesh number `id`, or -1.

@@ -350,6 +350,7 @@ struct RawLoad {
   double value;
   InputLocation where;
   int step = 0;
+  std::string amplitude;  // AMPLITUDE=, upper case; empty: constant in the step
 };
 
 // One *STEP ... *END STEP (docs/theory/fem.md section 18).
@@ -358,6 +359,7 @@ struct RawStep {
   std::optional<int> modes;         // *FREQUENCY's number of eigenvalues
   bool new_cloads = false, new_dloads = false;  // *CLOAD / *DLOAD with OP=NEW in this step
   bool new_boundaries = false;      // its first *BOUNDARY has OP=NEW: the earlier supports are removed
+  std::optional<TransientSettings> transient;  // *MODAL DYNAMIC, *DYNAMIC
   InputLocation where;
 };
 
@@ -460,6 +462,7 @@ class Parser {
   explicit Parser(TextSource& src) : src_(src) {}
 
   FrameModel run(const InpReadOptions& options);
+  InpReadOptions options_;
 
  private:
   TextSource& src_;
@@ -501,6 +504,10 @@ class Parser {
   void cload(const Block& b);
   void element_property(const Block& b);
   void step_keyword(const Block& b);
+  void amplitude(const Block& b);
+  void transient_procedure(const Block& b);
+  void modal_damping(const Block& b);
+  std::map<std::string, Amplitude> amplitudes_;
   void set_procedure(const Keyword& k, const char* procedure);
   // Distributed loads, end releases, section extras (issue 13); see their definitions.
   std::vector<RawDistributedLoad> dloads_;
@@ -686,7 +693,7 @@ void Parser::beam_section(const Block& b) {
   if (s.shape == "RECT") count = 2, fewest = 1;  // CalculiX: one thickness is a square
   else if (s.shape == "BOX") count = 6;
   else if (s.shape == "PIPE") count = 2;
-  else if (s.shape == "CIRC") count = 1;
+  else if (s.shape == "CIRC") count = 2, fewest = 1;  // two values: CalculiX's ellipse (section 23)
   else if (s.shape == "I") count = 7;
   else if (s.shape == "CHANNEL") count = 4;
   else throw InputError(b.keyword.where, "SECTION=RECT, BOX, PIPE, CIRC, I or CHANNEL", "SECTION=" + s.shape);
@@ -696,7 +703,7 @@ void Parser::beam_section(const Block& b) {
   s.dims = numbers(b.data[0], b.keyword, fewest, count,
                    fewest == count ? fmt::format("the {} dimensions of a {} section", count, s.shape)
                                    : fmt::format("the {} or {} dimensions of a {} section", fewest, count, s.shape));
-  if (s.dims.size() < count) s.dims.resize(count, s.dims[0]);
+  if (s.dims.size() < count && s.shape != "CIRC") s.dims.resize(count, s.dims[0]);  // CIRC: one value a circle, two an ellipse
   for (std::size_t i = 0; i < s.dims.size(); ++i)
     if (!(s.dims[i] > 0.0) && !(s.shape == "I" && i == 0))  // I: the offset l is not used and may be 0
       throw InputError(at(b.data[0], b.keyword), "positive section dimensions", "'" + b.data[0].text + "'");
@@ -853,7 +860,9 @@ void Parser::boundary(const Block& b) {
 }
 
 void Parser::cload(const Block& b) {
-  check_params(b.keyword, {"OP"});
+  check_params(b.keyword, {"OP", "AMPLITUDE"});
+  std::string amplitude;
+  if (b.keyword.params.count("AMPLITUDE")) amplitude = upper(required_param(b.keyword, "AMPLITUDE"));
   const int step = data_step(b.keyword);
   if (replaces_earlier(b.keyword) && step > 0) raw_steps_.back().new_cloads = true;
   for (const Line& l : b.data) {
@@ -865,6 +874,7 @@ void Parser::cload(const Block& b) {
     r.target = f[0];
     r.dof = dof_number(f[1], r.where);
     r.value = parse_double(f[2], r.where, "a load magnitude");
+    r.amplitude = amplitude;
     loads_.push_back(r);
   }
 }
@@ -1054,7 +1064,7 @@ void Parser::build_rigid_links(FrameModel& model) const {
 void Parser::set_procedure(const Keyword& k, const char* procedure) {
   RawStep& step = raw_steps_.back();
   if (!step.procedure.empty())
-    throw InputError(k.where, "one procedure (*STATIC or *FREQUENCY) per *STEP", "*" + step.procedure + " and " + k.name + fmt::format(" in step {}", steps_));
+    throw InputError(k.where, "one procedure (*STATIC, *FREQUENCY, *MODAL DYNAMIC or *DYNAMIC) per *STEP", "*" + step.procedure + " and " + k.name + fmt::format(" in step {}", steps_));
   step.procedure = procedure;
 }
 
@@ -1092,6 +1102,123 @@ void Parser::step_keyword(const Block& b) {
   // Output requests (*NODE PRINT, *EL PRINT, ...) are CalculiX's business: skipped.
 }
 
+// ---------------------------------------------------------------- transient steps (issue 13)
+// *AMPLITUDE (tabular, step time), *MODAL DYNAMIC, *DYNAMIC, *MODAL DAMPING;
+// docs/theory/fem.md section 22.
+
+// *AMPLITUDE, NAME=...: time, value pairs, four to a line as CalculiX writes
+// them (any number per line is read). Only what CalculiX's default reading
+// gives is accepted: TIME=STEP TIME, VALUE=RELATIVE, DEFINITION=TABULAR.
+void Parser::amplitude(const Block& b) {
+  const Keyword& k = b.keyword;
+  check_params(k, {"NAME", "TIME", "VALUE", "DEFINITION"});
+  const std::string name = upper(required_param(k, "NAME"));
+  auto option = [&](const char* key, const char* supported) {  // INP-68
+    auto it = k.params.find(key);
+    if (it != k.params.end() && upper(it->second) != supported)
+      throw InputError(k.where,
+                       fmt::format("{}={} (framedyn reads tabular amplitudes in step time with relative values: TIME=STEP TIME, "
+                                   "VALUE=RELATIVE, DEFINITION=TABULAR)", key, supported),
+                       fmt::format("{}={} on *AMPLITUDE, NAME={}", key, it->second, name));
+  };
+  option("TIME", "STEP TIME");
+  option("VALUE", "RELATIVE");
+  option("DEFINITION", "TABULAR");
+  if (amplitudes_.count(name)) throw InputError(k.where, "one *AMPLITUDE of each name", "a second *AMPLITUDE, NAME=" + name);
+  std::vector<double> v;
+  for (const Line& l : b.data)
+    for (const std::string& f : split_fields(l.text))
+      if (!f.empty()) v.push_back(parse_double(f, at(l, k), "an amplitude time or value"));
+  Amplitude a;
+  for (std::size_t i = 0; i + 1 < v.size(); i += 2) a.times.push_back(v[i]), a.values.push_back(v[i + 1]);
+  // INP-70: pairs, at least one, times not decreasing.
+  bool ordered = true;
+  for (std::size_t i = 1; i < a.times.size(); ++i) ordered = ordered && a.times[i] >= a.times[i - 1];
+  if (v.empty() || v.size() % 2 != 0 || !ordered)
+    throw InputError(b.data.empty() ? k.where : InputLocation(at(b.data.front(), k)),
+                     "time, value pairs with times that do not decrease",
+                     v.empty() ? std::string("no data line")
+                               : v.size() % 2 != 0 ? fmt::format("{} numbers (an odd count)", v.size())
+                                                   : fmt::format("*AMPLITUDE, NAME={} going back in time", name));
+  amplitudes_[name] = std::move(a);
+}
+
+// *MODAL DYNAMIC and *DYNAMIC: the data line is the time increment and the
+// step's time period (s). framedyn integrates with that fixed increment;
+// CalculiX's automatic-increment and explicit options are refused rather
+// than approximated.
+void Parser::transient_procedure(const Block& b) {
+  const Keyword& k = b.keyword;
+  const bool modal = k.name == "*MODAL DYNAMIC";
+  if (modal) check_params(k, {"SOLVER", "DIRECT", "DELTMX", "STEADY STATE"});
+  else check_params(k, {"SOLVER", "DIRECT", "ALPHA", "EXPLICIT"});
+  if (!in_step_) throw InputError(k.where, k.name + " inside a *STEP", "it outside");
+  // INP-75: the options framedyn's integrators cannot honour.
+  if (k.params.count("STEADY STATE") || k.params.count("EXPLICIT"))
+    throw InputError(k.where,
+                     fmt::format("{} with a fixed time increment and period (framedyn has no {})", k.name,
+                                 k.params.count("EXPLICIT") ? "explicit integration" : "run-to-steady-state option"),
+                     k.params.count("EXPLICIT") ? "EXPLICIT" : "STEADY STATE");
+  if (k.params.count("ALPHA")) {
+    const double alpha = parse_double(k.params.at("ALPHA"), k.where, "ALPHA");
+    if (alpha != 0.0)
+      throw InputError(k.where,
+                       "ALPHA=0 or no ALPHA (framedyn's *DYNAMIC is Newmark's average-acceleration rule, the alpha-method with "
+                       "alpha = 0: no numerical damping)",
+                       "ALPHA=" + k.params.at("ALPHA"));
+  }
+  set_procedure(k, modal ? "MODAL DYNAMIC" : "DYNAMIC");
+  // INP-72: time increment and period, 0 < increment <= period.
+  TransientSettings t;
+  std::vector<double> v;
+  if (!b.data.empty()) v = numbers(b.data.front(), k, 1, 8, "a time increment or period");
+  if (v.size() < 2 || !(v[0] > 0.0) || !(v[1] >= v[0]) || v[1] / v[0] > 1e7)
+    throw InputError(b.data.empty() ? k.where : InputLocation(at(b.data.front(), k)),
+                     "a data line: time increment, time period (s), 0 < increment <= period, at most 1e7 increments",
+                     b.data.empty() ? std::string("none") : "'" + b.data.front().text + "'");
+  t.time_increment = v[0];
+  t.time_period = v[1];
+  raw_steps_.back().transient = t;
+}
+
+// *MODAL DAMPING (CalculiX): lines "first mode, last mode, ratio" (ratios of
+// critical damping; modes in no range are undamped), or with RAYLEIGH one
+// line ", , alpha, beta" (C = alpha M + beta K). In the *MODAL DYNAMIC step,
+// after its procedure line.
+void Parser::modal_damping(const Block& b) {
+  const Keyword& k = b.keyword;
+  check_params(k, {"RAYLEIGH", "MODAL", "OP"});
+  RawStep* step = in_step_ ? &raw_steps_.back() : nullptr;
+  if (!step || step->procedure != "MODAL DYNAMIC" || !step->transient)  // INP-74
+    throw InputError(k.where, "*MODAL DAMPING in a *MODAL DYNAMIC step, after the *MODAL DYNAMIC line",
+                     step ? fmt::format("it in step {} ({})", steps_, step->procedure.empty() ? std::string("no procedure yet") : "*" + step->procedure)
+                          : std::string("it outside a step"));
+  TransientSettings& t = *step->transient;
+  const bool rayleigh = k.params.count("RAYLEIGH") > 0;
+  if (b.data.empty()) throw InputError(k.where, rayleigh ? "a data line: , , alpha, beta" : "data lines: first mode, last mode, damping ratio", "none");
+  for (const Line& l : b.data) {
+    const std::vector<std::string> f = split_fields(l.text);
+    const Where where = at(l, k);
+    if (rayleigh) {
+      if (f.size() != 4 || b.data.size() != 1)
+        throw InputError(where, "one data line: , , alpha, beta (C = alpha M + beta K)", "'" + l.text + "'");
+      t.rayleigh = true;
+      t.rayleigh_alpha = f[2].empty() ? 0.0 : parse_double(f[2], where, "alpha");
+      t.rayleigh_beta = f[3].empty() ? 0.0 : parse_double(f[3], where, "beta");
+      if (t.rayleigh_alpha < 0.0 || t.rayleigh_beta < 0.0) throw InputError(where, "alpha >= 0 and beta >= 0", "'" + l.text + "'");
+      continue;
+    }
+    if (f.size() != 3) throw InputError(where, "first mode, last mode, damping ratio", "'" + l.text + "'");
+    ModalDampingRange r;
+    r.first_mode = static_cast<int>(parse_int(f[0], where, "the first mode"));
+    r.last_mode = static_cast<int>(parse_int(f[1], where, "the last mode"));
+    r.ratio = parse_double(f[2], where, "a damping ratio");
+    if (r.first_mode < 1 || r.last_mode < r.first_mode || !(r.ratio >= 0.0) || !(r.ratio < 1.0))
+      throw InputError(where, "1 <= first mode <= last mode and a damping ratio 0 <= zeta < 1", "'" + l.text + "'");
+    t.damping_ranges.push_back(r);
+  }
+}
+
 // ---------------------------------------------------------------- *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS
 
 // *DLOAD data lines (Abaqus): element or ELSET, load type, magnitude; for GRAV
@@ -1100,6 +1227,11 @@ void Parser::step_keyword(const Block& b) {
 // *MASS of MASS elements), P1 and P2 (force per length along the section's
 // local 1 and 2 directions), PX, PY, PZ (force per length along global X, Y, Z).
 void Parser::dload(const Block& b) {
+  if (b.keyword.params.count("AMPLITUDE"))  // INP-76
+    throw InputError(b.keyword.where,
+                     "a *DLOAD constant in its step (framedyn reads AMPLITUDE= on *CLOAD only; give the line load's time history "
+                     "as nodal loads with *CLOAD, AMPLITUDE=)",
+                     "AMPLITUDE=" + b.keyword.params.at("AMPLITUDE"));
   check_params(b.keyword, {"OP"});
   const int step = data_step(b.keyword);
   if (replaces_earlier(b.keyword) && step > 0) raw_steps_.back().new_dloads = true;
@@ -1223,7 +1355,7 @@ Eigen::Vector2d offset_heights(const RawSection& s) {
   const std::vector<double>& d = s.dims;
   if (s.shape == "RECT" || s.shape == "BOX") return {d[0], d[1]};
   if (s.shape == "PIPE") return {2.0 * d[0], 2.0 * d[0]};
-  if (s.shape == "CIRC") return {d[0], d[0]};
+  if (s.shape == "CIRC") return {d[0], d.size() > 1 ? d[1] : d[0]};
   if (s.shape == "I") return {std::max(d[2], d[3]), d[1]};
   if (s.shape == "CHANNEL") return {d[1], d[0]};
   return {0.0, 0.0};  // GENERAL: no OFFSET parameters (check_params)
@@ -1371,6 +1503,7 @@ void Parser::apply_distributed_loads(const FrameModel& model, const core::UnitSy
 }
 
 FrameModel Parser::run(const InpReadOptions& options) {
+  options_ = options;
   const std::vector<Block> blocks = make_blocks(src_.lines);
   for (const Block& b : blocks) {
     const std::string& k = b.keyword.name;
@@ -1394,25 +1527,23 @@ FrameModel Parser::run(const InpReadOptions& options) {
     else if (k == "*MPC") mpc(b);
     else if (k == "*DISTRIBUTING COUPLING") distributing_coupling(b);
     else if (k == "*STEP" || k == "*END STEP" || k == "*FREQUENCY" || k == "*STATIC") step_keyword(b);
+    else if (k == "*AMPLITUDE") amplitude(b);
+    else if (k == "*MODAL DYNAMIC" || k == "*DYNAMIC") transient_procedure(b);
+    else if (k == "*MODAL DAMPING") modal_damping(b);
     else if (k == "*NODE PRINT" || k == "*EL PRINT" || k == "*NODE FILE" || k == "*EL FILE" || k == "*NODE OUTPUT" ||
              k == "*ELEMENT OUTPUT" || k == "*OUTPUT") continue;
     // Time-dependent loads and the other procedures: named as such, not as
     // unknown keywords, since a CalculiX user's deck has them for a reason.
-    else if (k == "*AMPLITUDE")
+    else if (in_step_ && (k == "*STEADY STATE DYNAMICS" || k == "*BUCKLE" || k == "*HEAT TRANSFER"))
       throw InputError(b.keyword.where,
-                       "loads that are constant in a step (framedyn reads no *AMPLITUDE: a transient's load history goes to "
-                       "framedyn frame-response as a CSV file, harmonic and random loads to framedyn harmonic and framedyn random)",
-                       b.keyword.params.count("NAME") ? "*AMPLITUDE, NAME=" + b.keyword.params.at("NAME") : std::string("*AMPLITUDE"));
-    else if (in_step_ && (k == "*MODAL DYNAMIC" || k == "*DYNAMIC" || k == "*STEADY STATE DYNAMICS" || k == "*BUCKLE" || k == "*HEAT TRANSFER"))
-      throw InputError(b.keyword.where,
-                       "*STATIC or *FREQUENCY as the step's procedure (framedyn's linear steps; a transient runs in framedyn "
-                       "frame-response from a load history, a harmonic sweep in framedyn harmonic)",
+                       "*STATIC, *FREQUENCY, *MODAL DYNAMIC or *DYNAMIC as the step's procedure (framedyn's linear steps; a "
+                       "harmonic sweep runs in framedyn harmonic)",
                        fmt::format("{} in step {}", k, steps_));
     else
       throw InputError(b.keyword.where,
                        "a keyword framedyn reads (*NODE, *ELEMENT, *NSET, *ELSET, *BEAM SECTION, *BEAM GENERAL SECTION, "
                        "*MATERIAL, *ELASTIC, *DENSITY, *BOUNDARY, *CLOAD, *DLOAD, *RELEASE, *TRANSVERSE SHEAR STIFFNESS, *MASS, *ROTARY INERTIA, *SPRING, *RIGID BODY, *MPC, *DISTRIBUTING COUPLING, *INCLUDE, "
-                       "*HEADING, *STEP, *FREQUENCY, *STATIC, *END STEP, output requests)",
+                       "*HEADING, *STEP, *FREQUENCY, *STATIC, *MODAL DYNAMIC, *DYNAMIC, *MODAL DAMPING, *AMPLITUDE, *END STEP, output requests)",
                        k);
     if (k != "*ELASTIC" && k != "*DENSITY" && k != "*MATERIAL") current_material_.clear();
   }
@@ -1523,6 +1654,21 @@ FrameModel Parser::build(const core::UnitSystem& units) {
       sa.material.shear_modulus = sa.material.youngs_modulus / (2.0 * (1.0 + sa.material.poisson_ratio));
       sa.material.density = units.to_si(sa.material.density, Quantity::density);
     }
+    // CIRC: Abaqus reads radii, CalculiX 2.20 diameters (section 23; measured
+    // with ccx 2.20 on a B32 cantilever: its tip deflection is that of the
+    // circle whose diameter is the value). Without a dialect, Abaqus's reading
+    // and a warning with both.
+    const double circ_scale = options_.dialect == InpDialect::calculix ? 0.5 : 1.0;
+    if (s.shape == "CIRC" && !options_.dialect && options_.warnings) {
+      const std::string L_unit = units.label(Quantity::length);
+      const std::string values = s.dims.size() > 1 ? fmt::format("{:g}, {:g}", s.dims[0], s.dims[1]) : fmt::format("{:g}", s.dims[0]);
+      core::add_warning(*options_.warnings, "circ_radius_or_diameter",
+                        fmt::format("{}: SECTION=CIRC of ELSET {} read as Abaqus reads it, {} {} {}; CalculiX 2.20 reads the same line as "
+                                    "{} (a section 1/16 as stiff in bending): give --inp-dialect abaqus or calculix to say which the deck means",
+                                    s.where.file + ":" + std::to_string(s.where.line), s.elset, s.dims.size() > 1 ? "semi-axes" : "radius", values,
+                                    L_unit, s.dims.size() > 1 ? "the axes (semi-axes half as long)" : "the diameter (radius half as long)"),
+                        {{"radius_read", s.dims[0], L_unit}, {"radius_calculix", 0.5 * s.dims[0], L_unit}});
+    }
     try {
       const double l = L, l2 = L * L, l4 = l2 * l2;
       const std::vector<double>& d = s.dims;
@@ -1530,7 +1676,8 @@ FrameModel Parser::build(const core::UnitSystem& units) {
       if (s.shape == "RECT") sa.properties = rectangle_section(d[0] * l, d[1] * l, nu);
       else if (s.shape == "BOX") sa.properties = box_section(d[0] * l, d[1] * l, d[2] * l, d[3] * l, d[4] * l, d[5] * l);
       else if (s.shape == "PIPE") sa.properties = pipe_section(d[0] * l, d[1] * l, nu);
-      else if (s.shape == "CIRC") sa.properties = circle_section(d[0] * l, nu);
+      else if (s.shape == "CIRC" && d.size() > 1) sa.properties = ellipse_section(circ_scale * d[0] * l, circ_scale * d[1] * l, nu);
+      else if (s.shape == "CIRC") sa.properties = circle_section(circ_scale * d[0] * l, nu);
       else if (s.shape == "I") sa.properties = i_section(d[1] * l, d[2] * l, d[3] * l, d[4] * l, d[5] * l, d[6] * l);
       else if (s.shape == "CHANNEL") sa.properties = channel_section(d[0] * l, d[1] * l, d[2] * l, d[3] * l);
       else sa.properties = fem::general_section(d[0] * l2, d[1] * l4, d[2] * l4, d[3] * l4, d[4] * l4);
@@ -1658,7 +1805,16 @@ FrameModel Parser::build(const core::UnitSystem& units) {
   std::vector<Constraint> constraints;
   std::map<std::pair<int, int>, std::size_t> constraint_of;  // (node, dof) -> index into constraints
   std::vector<NodalLoad> loads;
+  std::vector<std::string> load_amplitudes;  // parallel to loads
   std::vector<RawDistributedLoad> dloads;
+  for (const RawLoad& l : loads_)  // INP-71: an AMPLITUDE= no *AMPLITUDE defines
+    if (!l.amplitude.empty() && !amplitudes_.count(l.amplitude)) {
+      std::string known;
+      for (const auto& [name, a] : amplitudes_) known += (known.empty() ? "" : ", ") + name;
+      throw InputError(l.where, fmt::format("AMPLITUDE= naming an *AMPLITUDE of the deck ({})", known.empty() ? std::string("it defines none") : known),
+                       "AMPLITUDE=" + l.amplitude);
+    }
+  model.amplitudes = amplitudes_;
   const int step_count = static_cast<int>(raw_steps_.size());
   for (int step = 0; step <= step_count; ++step) {
     // Supports: OP=NEW drops the earlier ones; a DOF defined again takes the new value (OP=MOD).
@@ -1677,17 +1833,24 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     // this step drops the earlier steps' loads there; lines of one step add up.
     const bool new_cloads = step > 0 && raw_steps_[static_cast<std::size_t>(step - 1)].new_cloads;
     const bool new_dloads = step > 0 && raw_steps_[static_cast<std::size_t>(step - 1)].new_dloads;
-    if (new_cloads) loads.clear();
+    if (new_cloads) loads.clear(), load_amplitudes.clear();
     std::vector<NodalLoad> added;
+    std::vector<std::string> added_amplitudes;
     for (const RawLoad& l : loads_) {
       if (l.step != step) continue;
-      for (int n : targets(l.target, l.where))
+      for (int n : targets(l.target, l.where)) {
         added.push_back({n, l.dof - 1, si(l.value, l.dof <= 3 ? Quantity::force : Quantity::moment, l.where, "a load")});
+        added_amplitudes.push_back(l.amplitude);
+      }
     }
     std::set<std::pair<int, int>> redefined;
     for (const NodalLoad& a : added) redefined.insert({a.node, a.dof});
-    loads.erase(std::remove_if(loads.begin(), loads.end(), [&](const NodalLoad& x) { return redefined.count({x.node, x.dof}) > 0; }), loads.end());
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < loads.size(); ++i)
+      if (!redefined.count({loads[i].node, loads[i].dof})) loads[kept] = loads[i], load_amplitudes[kept++] = load_amplitudes[i];
+    loads.resize(kept), load_amplitudes.resize(kept);
     loads.insert(loads.end(), added.begin(), added.end());
+    load_amplitudes.insert(load_amplitudes.end(), added_amplitudes.begin(), added_amplitudes.end());
     // Distributed loads: a line with the same element or ELSET and load type replaces the earlier steps' line.
     if (new_dloads) dloads.clear();
     std::vector<RawDistributedLoad> added_d;
@@ -1711,6 +1874,17 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     if (raw) a.requested_modes = raw->modes;
     a.constraints = constraints;
     a.loads = std::move(state.loads);
+    a.load_amplitudes = load_amplitudes;
+    a.load_amplitudes.resize(a.loads.size());  // GRAV on point masses: constant
+    if (raw) a.transient = raw->transient;
+    // INP-77: framedyn's static and modal steps have constant loads; a load
+    // history in one would be read as its constant magnitude, silently.
+    for (std::size_t i = 0; i < a.load_amplitudes.size() && !a.transient; ++i)
+      if (!a.load_amplitudes[i].empty())
+        throw InputError(raw ? raw->where : InputLocation{src_.name, 0, "*CLOAD"},
+                         "AMPLITUDE= on loads of *MODAL DYNAMIC and *DYNAMIC steps only (framedyn's *STATIC and *FREQUENCY steps "
+                         "take loads as constant)",
+                         fmt::format("AMPLITUDE={} on a load of {} (*{})", a.load_amplitudes[i], step > 0 ? fmt::format("step {}", step) : std::string("the model data"), a.procedure));
     a.element_loads = std::move(state.element_loads);
     if (step <= 1) {
       model.constraints = a.constraints;

@@ -13,13 +13,25 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "core/warnings.h"
 
 #include "fem/frame_model.h"
 
 namespace framedyn::fem {
 
+// Where CalculiX and Abaqus read the same line differently
+// (docs/theory/fem.md section 23): SECTION=CIRC's value(s) are radii
+// (semi-axes) for Abaqus, diameters (axes) for CalculiX 2.20.
+enum class InpDialect { abaqus, calculix };
+
 struct InpReadOptions {
   std::optional<std::string> units;  // "in-lbf-s", "m-N-s" (or "SI"), "mm-N-s"
+  // Unset: Abaqus's reading, and a CIRC section gets a warning naming its
+  // element set and both readings (into `warnings`, when given).
+  std::optional<InpDialect> dialect;
+  std::vector<core::Warning>* warnings = nullptr;
 };
 
 // Throws core::InputError (file, line, keyword, expected, found) on any problem.

@@ -140,6 +140,28 @@ std::vector<SectionPoint> round_points(const SectionProperties& s, double r, dou
   return out;
 }
 
+// Eight points round an ellipse of semi-axes a (along 1) and b (along 2)
+// (docs/theory/fem.md section 23): the Saint-Venant torsion shear of the
+// ellipse, 2 T / (pi a b) sqrt(x1^2/a^4 + x2^2/b^4) tangent to the outline
+// (Eq. 23.4), and the transverse shear whose component along V is V Q / (I w)
+// = 4 V / (3 A) (1 - (x/semi-axis)^2) at the chord through the point (the
+// ellipse is a stretched circle), tangent to the outline (Eq. 23.5).
+std::vector<SectionPoint> elliptic_points(const SectionProperties& s, double a, double b) {
+  std::vector<SectionPoint> out;
+  const double peak = 4.0 / 3.0 / s.area;
+  for (int k = 0; k < 8; ++k) {
+    const double c = std::cos(k * kPi / 4), sn = std::sin(k * kPi / 4);
+    const double x1 = a * c, x2 = b * sn;
+    SectionPoint p = point(fmt::format("angle {}", 45 * k), x1, x2);
+    const Eigen::Vector2d tangent = Eigen::Vector2d(-a * sn, b * c).normalized();
+    p.shear_per_torque = 2.0 / (kPi * a * b) * std::sqrt(x1 * x1 / (a * a * a * a) + x2 * x2 / (b * b * b * b)) * tangent;
+    p.shear_per_vz = peak * c * Eigen::Vector2d(-a * sn / b, c);
+    p.shear_per_vy = peak * sn * Eigen::Vector2d(sn, -b * c / a);
+    out.push_back(p);
+  }
+  return out;
+}
+
 // Open thin walls (Eq. 20.9): the wall's torsional shear T t / J along it.
 SectionPoint open_wall_point(std::string name, double x1, double x2, const Eigen::Vector2d& along, double t, double j) {
   SectionPoint p = point(std::move(name), x1, x2);
@@ -231,6 +253,7 @@ RectangleTorsionShear rectangle_torsion_shear(double a, double b) {
 std::vector<SectionPoint> section_points(const SectionProperties& s) {
   if (s.shape == "RECT") return rectangle_points(s);
   if (s.shape == "BOX") return box_points(s);
+  if (s.shape == "CIRC" && s.dimensions.size() == 2) return elliptic_points(s, s.dimensions[0], s.dimensions[1]);
   if (s.shape == "CIRC") return round_points(s, s.dimensions[0], 4.0 / 3.0);
   if (s.shape == "PIPE") return round_points(s, s.dimensions[0], 2.0);  // thin-walled tube: 2 V / A at the neutral axis
   if (s.shape == "I") return i_points(s);

@@ -355,8 +355,19 @@ std::vector<Row> rows() {
       mesh_row("INP-63", "*CLOAD\n3, 3", "*CLOAD, OP=ADD\n3, 3", "*CLOAD, OP=ADD", "*CLOAD"),
       mesh_row("INP-64", "*STATIC\n", "*STATIC\n*FREQUENCY\n5\n", "*FREQUENCY", "*FREQUENCY"),
       mesh_row("INP-67", "*CLOAD\n3, 3", "*BOUNDARY\n2, 3, 3\n*BOUNDARY, OP=NEW\n1, 1, 6\n*CLOAD\n3, 3", "*BOUNDARY, OP=NEW", "*BOUNDARY"),
-      mesh_row("INP-68", kData, "*AMPLITUDE, NAME=RAMP\n0, 0, 1, 1\n" + kData, "*AMPLITUDE", "*AMPLITUDE"),
-      mesh_row("INP-69", "*STATIC\n", "*MODAL DYNAMIC\n", "*MODAL DYNAMIC", "*MODAL DYNAMIC"),
+      mesh_row("INP-68", kData, "*AMPLITUDE, NAME=RAMP, TIME=TOTAL TIME\n0, 0, 1, 1\n" + kData, "*AMPLITUDE", "*AMPLITUDE"),
+      mesh_row("INP-69", "*STATIC\n", "*STEADY STATE DYNAMICS\n", "*STEADY STATE DYNAMICS", "*STEADY STATE DYNAMICS"),
+      // transient steps of a deck (issue 13): fem/inp_reader.cpp, fem/transient_step.cpp, apps/transient_command.cpp
+      mesh_row("INP-70", kData, "*AMPLITUDE, NAME=RAMP\n0, 0, 1\n" + kData, "0, 0, 1", "*AMPLITUDE"),
+      mesh_row("INP-71", "*CLOAD\n3, 3", "*CLOAD, AMPLITUDE=RAMP\n3, 3", "3, 3, 1000.", "*CLOAD"),
+      mesh_row("INP-72", "*STATIC\n", "*DYNAMIC\n0.25\n", "0.25", "*DYNAMIC"),
+      mesh_row("INP-73", "*STATIC\n", "*MODAL DYNAMIC\n0.01, 0.1\n", "", "*MODAL DYNAMIC", "transient frame.inp --out results -q"),
+      mesh_row("INP-74", "*STATIC\n", "*STATIC\n*MODAL DAMPING\n1, 5, 0.02\n", "*MODAL DAMPING", "*MODAL DAMPING"),
+      mesh_row("INP-75", "*STATIC\n", "*DYNAMIC, ALPHA=-0.05\n0.01, 0.1\n", "*DYNAMIC", "*DYNAMIC"),
+      mesh_row("INP-76", "*CLOAD\n3, 3, 1000.\n", "*DLOAD, AMPLITUDE=RAMP\nFRAME, PZ, 100.\n", "*DLOAD", "*DLOAD"),
+      mesh_row("INP-77", "*STATIC\n*CLOAD\n", "*STATIC\n*AMPLITUDE, NAME=RAMP\n0, 0, 1, 1\n*CLOAD, AMPLITUDE=RAMP\n", "*STEP", "*STEP"),
+      mesh_row("INP-78", "*STEP\n*STATIC\n", "*STEP\n*FREQUENCY\n2\n*END STEP\n*STEP\n*MODAL DYNAMIC\n0.01, 0.1\n*BOUNDARY\n2, 2\n", "",
+               "*MODAL DYNAMIC", "transient frame.inp --out results -q"),
       mesh_row("INP-66", "*END STEP\n", "*END STEP\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n*END STEP\n", "", "*CLOAD"),
   };
   // INP-39: the mesh says m-N-s, the command line in-lbf-s.
@@ -680,6 +691,9 @@ std::vector<Row> rows() {
       {"CLI-45", {{"series.csv", edit(kSeries, "0.3,40", "0.1,40")}}, "rainflow series.csv --out results", "series.csv:5: time [s]", true},
       {"CLI-46", {{"series.csv", kSeries}}, "rainflow series.csv --sn FAT --out results", "command line: --sn", true},
       {"CLI-47", {{"series.csv", edit(kSeries, "0.1,50", "0.1")}}, "rainflow series.csv --out results", "series.csv:3", true},
+      {"CLI-49", {{"frame.inp", kMesh}}, "transient frame.inp --step 1 --out results -q", "command line: --step", true},
+      {"CLI-50", {{"frame.inp", kMesh}}, "transient frame.inp --out results -q", "command line: --step", true},
+      cli_row("CLI-51", "static frame.inp --inp-dialect nastran --out results -q", "command line: --inp-dialect"),
       {"CLI-48", {{"series.csv", edit(edit(kSeries, "sg1 [MPa]", "sg1 [MPa],sg2 [MPa]"), "0,10", "0,10,12")}}, "rainflow series.csv --out results",
        "series.csv:1: --column", true},
       // ---- framedyn rainflow's options (apps/rainflow_command.cpp)

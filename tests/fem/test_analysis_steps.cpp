@@ -2,6 +2,7 @@
 // step to step or replaced (OP=MOD, OP=NEW), one factorisation for the static
 // steps, the *FREQUENCY step's supports for modes; checked against the
 // cantilever's hand formulas, not against the reader's own bookkeeping.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
 #include "fem/static_analysis.h"
+#include "fem/transient_step.h"
 
 namespace {
 
@@ -138,6 +140,130 @@ TEST(AnalysisSteps, BoundaryOpNewInAFrequencyStepGivesItsOwnSupports) {
   const double rho_a = 7850.0 * kA * kB, beta = 3.92660231 / kL;
   const double f = beta * beta * std::sqrt(kE * kI_y / rho_a) / (2.0 * 3.14159265358979323846);
   EXPECT_NEAR(r.modes.at(0).frequency_hz / f, 1.0, 5e-3);
+}
+
+// ------------------------------------------------ transient steps of a deck (docs/theory/fem.md section 22)
+// A tip mass of 100 kg on the cantilever, the beam 1000 times lighter than
+// steel (0.0785 kg in all): a single-degree-of-freedom oscillator along z of
+// stiffness k = 3 E I / L^3 and mass M + (33/140) m_beam (Rayleigh's
+// quotient with the static shape), whose closed forms the transient steps
+// are checked against.
+constexpr double kTipMass = 100.0, kLightDensity = 7.85, kForce = 1000.0;
+const double kBeamMass = kLightDensity * kA * kB * kL;
+const double kOmega = std::sqrt(3.0 * kE * kI_z / (kL * kL * kL) / (kTipMass + 33.0 / 140.0 * kBeamMass));
+const double kPeriod = 2.0 * M_PI / kOmega;
+// The frame is the oscillator up to the beam's own mass beyond Rayleigh's
+// quotient, second order in the mass ratio: (0.0785 / 100)^2 = 6e-7 (measured 3e-9 to 6e-9).
+constexpr double kOscillatorTolerance = 1e-6;
+
+std::string oscillator(const std::string& steps) {
+  std::string s = cantilever("");
+  const std::string steel = "*DENSITY\n7850";
+  s.replace(s.find(steel), steel.size(), "*DENSITY\n7.85");
+  return s + fmt::format("*ELEMENT, TYPE=MASS, ELSET=TIPMASS\n100, 5\n*MASS, ELSET=TIPMASS\n{}\n*BOUNDARY\n1, 1, 6\n", kTipMass) + steps;
+}
+
+// The tip's z history of step `step` (1-based) and its times.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> tip_history(const fem::FrameModel& m, int step) {
+  const fem::TransientStepResult r = fem::run_transient_step(m, static_cast<std::size_t>(step - 1), "deck.inp");
+  return {r.response.times, r.response.displacement.row(6 * m.node_index(5) + 2).transpose()};
+}
+
+std::string transient_deck(const std::string& procedure, const std::string& amplitude, double dt, double period) {
+  return oscillator(fmt::format("*AMPLITUDE, NAME=LOAD\n{}\n*STEP\n*FREQUENCY\n2\n*END STEP\n*STEP\n{}\n{:.17g}, {:.17g}\n"
+                                "*CLOAD, AMPLITUDE=LOAD\nTIP, 3, {}\n*END STEP\n",
+                                amplitude, procedure, dt, period, kForce));
+}
+
+TEST(TransientSteps, ASuddenlyAppliedTipLoadPeaksAtTwiceTheStaticDeflection) {
+  // u(t) = u_st (1 - cos omega t) for a load switched on at t = 0 and held
+  // (Eq. 22.5): the modal step is exact at the output times for the one mode.
+  const double ust = tip_deflection(kForce, kI_z);
+  const fem::FrameModel m = fem::read_inp_text(transient_deck("*MODAL DYNAMIC", "0, 1, 1, 1", kPeriod / 200.0, kPeriod), "deck.inp", ".");
+  const auto [t, u] = tip_history(m, 2);
+  ASSERT_EQ(t.size(), 201);
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < t.size(); ++k) worst = std::max(worst, std::abs(u(k) - ust * (1.0 - std::cos(kOmega * t(k)))));
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
+  EXPECT_NEAR(u.maxCoeff(), 2.0 * ust, kOscillatorTolerance * ust);
+  EXPECT_NEAR(t(100), kPeriod / 2.0, 1e-12 * kPeriod);
+}
+
+TEST(TransientSteps, ARampedLoadFollowsTheClosedFormDuringAndAfterTheRamp) {
+  // Ramp over t_r = 0.3 T, then held (the amplitude's last value holds after
+  // its last point): u/u_st = t/t_r - sin(w t)/(w t_r) for t <= t_r, and
+  // 1 - (sin(w t) - sin(w (t - t_r)))/(w t_r) after it (Eq. 22.6).
+  const double ust = tip_deflection(kForce, kI_z), tr = 0.3 * kPeriod;
+  const fem::FrameModel m =
+      fem::read_inp_text(transient_deck("*MODAL DYNAMIC", fmt::format("0, 0, {:.17g}, 1", tr), kPeriod / 64.0, 2.0 * kPeriod), "deck.inp", ".");
+  const auto [t, u] = tip_history(m, 2);
+  EXPECT_EQ(t.size(), 129 + 1);  // the grid and the ramp's end, which is not on it
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < t.size(); ++k) {
+    const double w = kOmega, x = t(k);
+    const double exact = x <= tr ? x / tr - std::sin(w * x) / (w * tr) : 1.0 - (std::sin(w * x) - std::sin(w * (x - tr))) / (w * tr);
+    worst = std::max(worst, std::abs(u(k) - ust * exact));
+  }
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
+}
+
+TEST(TransientSteps, DirectIntegrationIsTheTrapezoidalRulesRotationAndConvergesToTheModalStep) {
+  // Newmark's average acceleration on an undamped oscillator released from
+  // u_st away from equilibrium rotates (u, v/omega) by Omega dt per step,
+  // tan(Omega dt / 2) = omega dt / 2 (Eq. 22.4): u_n = u_st (1 - cos(n Omega dt)).
+  const double ust = tip_deflection(kForce, kI_z);
+  for (int per_period : {20, 80}) {
+    const double dt = kPeriod / per_period;
+    const fem::FrameModel m = fem::read_inp_text(transient_deck("*DYNAMIC", "0, 1, 1, 1", dt, kPeriod), "deck.inp", ".");
+    EXPECT_EQ(m.steps[1].procedure, "DYNAMIC");
+    const auto [t, u] = tip_history(m, 2);
+    const double big_omega = 2.0 / dt * std::atan(kOmega * dt / 2.0);
+    double worst = 0.0, from_exact = 0.0;
+    for (Eigen::Index k = 0; k < t.size(); ++k) {
+      worst = std::max(worst, std::abs(u(k) - ust * (1.0 - std::cos(big_omega * t(k)))));
+      from_exact = std::max(from_exact, std::abs(u(k) - ust * (1.0 - std::cos(kOmega * t(k)))));
+    }
+    EXPECT_LT(worst, kOscillatorTolerance * ust) << per_period << " steps per period";
+    // The phase error after one period, 2 pi (omega/Omega - 1) ~ (omega dt)^2 / 12 * 2 pi, bounds the distance to the exact history.
+    const double phase = 2.0 * M_PI * (kOmega / big_omega - 1.0);
+    EXPECT_LT(from_exact, (phase + kOscillatorTolerance) * ust) << per_period << " steps per period";
+    EXPECT_GT(from_exact, 0.5 * phase * ust) << per_period << " steps per period";
+  }
+}
+
+TEST(TransientSteps, ModalDampingRangesDampTheModesTheyName) {
+  // *MODAL DAMPING 1, 2, 0.05: both modes (the tip mass along y and z) at
+  // 5 % of critical; the step response along z is the damped oscillator's (Eq. 22.3).
+  const fem::FrameModel m = fem::read_inp_text(
+      oscillator("*AMPLITUDE, NAME=LOAD\n0, 1, 1, 1\n*STEP\n*FREQUENCY\n2\n*END STEP\n*STEP\n*MODAL DYNAMIC\n" +
+                 fmt::format("{:.17g}, {:.17g}\n", kPeriod / 100.0, 3.0 * kPeriod) +
+                 "*MODAL DAMPING\n1, 2, 0.05\n*CLOAD, AMPLITUDE=LOAD\nTIP, 3, 1000.\n*END STEP\n"),
+      "deck.inp", ".");
+  const fem::TransientStepResult r = fem::run_transient_step(m, 1, "deck.inp");
+  ASSERT_EQ(r.response.damping_ratios.size(), 2);
+  EXPECT_EQ(r.response.damping_ratios(0), 0.05);
+  EXPECT_EQ(r.response.damping_ratios(1), 0.05);
+  // Damped step response: u/u_st = 1 - exp(-z w t)(cos(wd t) + z/sqrt(1-z^2) sin(wd t)).
+  const double z = 0.05, wd = kOmega * std::sqrt(1.0 - z * z), ust = tip_deflection(kForce, kI_z);
+  double worst = 0.0;
+  for (Eigen::Index k = 0; k < r.response.times.size(); ++k) {
+    const double x = r.response.times(k);
+    const double exact = 1.0 - std::exp(-z * kOmega * x) * (std::cos(wd * x) + z / std::sqrt(1.0 - z * z) * std::sin(wd * x));
+    worst = std::max(worst, std::abs(r.response.displacement(6 * m.node_index(5) + 2, k) - ust * exact));
+  }
+  EXPECT_LT(worst, kOscillatorTolerance * ust);
+}
+
+TEST(TransientSteps, AnAmplitudeIsLinearBetweenItsPointsAndHeldOutsideThem) {
+  const fem::FrameModel m = fem::read_inp_text(
+      oscillator("*AMPLITUDE, NAME=A\n0.1, 2., 0.3, -1., 0.3, 4.\n*STEP\n*DYNAMIC\n0.1, 1.\n*CLOAD, AMPLITUDE=a\nTIP, 3, 1.\n*END STEP\n"), "deck.inp",
+      ".");
+  const fem::Amplitude& a = m.amplitudes.at("A");
+  EXPECT_EQ(a.at(0.0), 2.0);
+  EXPECT_NEAR(a.at(0.2), 0.5, 1e-15);  // (0.2 - 0.1) / (0.3 - 0.1) in binary: round-off
+  EXPECT_EQ(a.at(0.3), 4.0);  // a repeated time is a jump: the later value from it on
+  EXPECT_EQ(a.at(5.0), 4.0);
+  EXPECT_EQ(m.steps[0].load_amplitudes, std::vector<std::string>{"A"});
 }
 
 }  // namespace

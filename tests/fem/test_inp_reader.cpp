@@ -28,6 +28,7 @@
 #include "fem/beam_element.h"
 #include "fem/frame_model.h"
 #include "fem/inp_reader.h"
+#include "fem/section_stress.h"
 
 namespace {
 
@@ -467,6 +468,61 @@ TEST(InpReader, PipeAndCircSectionsExact) {
     EXPECT_REL(s.torsion_constant, kPi * std::pow(r, 4) / 2, 1e-13);
     EXPECT_REL(s.shear_area_1, 6 * 1.3 / (7 + 6 * 0.3) * kPi * r * r, 1e-13);
   }
+}
+
+TEST(InpReader, TwoValuesOnACircLineAreAnEllipseWithItsClosedFormConstants) {
+  // CalculiX's beammix: CIRC a, b. Abaqus reading: semi-axes a (along 1), b
+  // (along 2): A = pi a b, I11 = pi a b^3 / 4, I22 = pi a^3 b / 4,
+  // J = pi a^3 b^3 / (a^2 + b^2) (docs/theory/fem.md, Eqs. 23.1-23.3).
+  const double a = 0.03, b = 0.05;
+  std::vector<framedyn::core::Warning> warnings;
+  InpReadOptions o;
+  o.warnings = &warnings;
+  const FrameModel m = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03, 0.05\n"), o);
+  const auto& s = section_of(m);
+  EXPECT_EQ(s.shape, "CIRC");
+  EXPECT_REL(s.area, kPi * a * b, 1e-13);
+  EXPECT_REL(s.i11, kPi * a * b * b * b / 4, 1e-13);
+  EXPECT_REL(s.i22, kPi * a * a * a * b / 4, 1e-13);
+  EXPECT_REL(s.torsion_constant, kPi * std::pow(a * b, 3) / (a * a + b * b), 1e-13);
+  // No dialect given: one warning naming the set and both readings.
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].code, "circ_radius_or_diameter");
+  EXPECT_NE(warnings[0].message.find("ELSET B"), std::string::npos);
+  EXPECT_NE(warnings[0].message.find("semi-axes 0.03, 0.05"), std::string::npos);
+  // Prandtl's shear of the ellipse at the ends of the axes: 2 T / (pi a b^2) at
+  // (0, b) and 2 T / (pi a^2 b) at (a, 0) (Eq. 23.4); the bending stress
+  // M c / I at the same points.
+  const std::vector<framedyn::fem::SectionPoint> points = framedyn::fem::section_points(s);
+  ASSERT_EQ(points.size(), 8u);
+  framedyn::fem::SectionForces torque;
+  torque.t = 100.0;
+  EXPECT_REL(framedyn::fem::point_stress(s, points[2], torque).shear, 2 * 100.0 / (kPi * a * b * b), 1e-12);  // angle 90: (0, b)
+  EXPECT_REL(framedyn::fem::point_stress(s, points[0], torque).shear, 2 * 100.0 / (kPi * a * a * b), 1e-12);  // angle 0: (a, 0)
+  EXPECT_NEAR(points[2].position.y(), b, 1e-15);
+  EXPECT_NEAR(points[0].position.x(), a, 1e-15);
+  // Transverse shear along 2 at the neutral axis (x2 = 0): 4 V / (3 A), as for a circle.
+  framedyn::fem::SectionForces shear;
+  shear.vz = 1000.0;
+  EXPECT_REL(framedyn::fem::point_stress(s, points[0], shear).shear, 4 * 1000.0 / (3 * kPi * a * b), 1e-12);
+}
+
+TEST(InpReader, TheCalculixDialectReadsCircValuesAsDiametersAndWarnsNothing) {
+  // CalculiX 2.20 reads CIRC's value as the diameter (docs/theory/fem.md section 23).
+  std::vector<framedyn::core::Warning> warnings;
+  InpReadOptions o;
+  o.warnings = &warnings;
+  o.dialect = framedyn::fem::InpDialect::calculix;
+  const double r = 0.015;
+  const FrameModel circle = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03\n"), o);
+  EXPECT_REL(section_of(circle).i11, kPi * std::pow(r, 4) / 4, 1e-13);
+  const FrameModel ellipse = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03, 0.05\n"), o);
+  EXPECT_REL(section_of(ellipse).area, kPi * 0.015 * 0.025, 1e-13);
+  EXPECT_TRUE(warnings.empty());
+  o.dialect = framedyn::fem::InpDialect::abaqus;  // said explicitly: the radius, no warning
+  const FrameModel abaqus = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03\n"), o);
+  EXPECT_REL(section_of(abaqus).i11, kPi * std::pow(0.03, 4) / 4, 1e-13);
+  EXPECT_TRUE(warnings.empty());
 }
 
 TEST(InpReader, ISectionAgainstHandFormulas) {
@@ -963,7 +1019,7 @@ std::vector<ErrorCase> error_cases() {
       {"UnknownParameter", kUnits + "*NODE, NSETT=A\n1, 0, 0, 0\n", "*NODE, NSETT=A", "*NODE", {"expected one of the parameters NSET", "found parameter NSETT"}},
       {"UnknownParameterOnElement", kUnits + kNodes + "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X\n1, 1, 2\n", "*ELEMENT, TYPE=B31, ELSET=E, SECTION=X", "*ELEMENT", {"TYPE, ELSET", "found parameter SECTION"}},
       {"ParameterOnBoundary", kModel + "*BOUNDARY, AMPLITUDE=A\n1, ENCASTRE\n", "*BOUNDARY, AMPLITUDE=A", "*BOUNDARY", {"found parameter AMPLITUDE"}},
-      {"ParameterOnCload", kModel + "*CLOAD, AMPLITUDE=A\n3, 2, 1.0\n", "*CLOAD, AMPLITUDE=A", "*CLOAD", {"found parameter AMPLITUDE"}},
+      {"ParameterOnCload", kModel + "*CLOAD, TOTAL=YES\n3, 2, 1.0\n", "*CLOAD, TOTAL=YES", "*CLOAD", {"found parameter TOTAL"}},
       {"ParameterOnDensity", kMesh + kSection + "*MATERIAL, NAME=STEEL\n*ELASTIC\n2e11, 0.3\n*DENSITY, TEMP=20\n7850\n", "*DENSITY, TEMP=20", "*DENSITY", {"found parameter TEMP"}},
       {"ParameterWithoutName", kUnits + "*NODE, =A\n1, 0, 0, 0\n", "*NODE, =A", "*NODE", {"expected a parameter NAME or NAME=VALUE", "found '=A'"}},
       {"ParameterTwice", kUnits + "*NODE, NSET=A, nset=B\n1, 0, 0, 0\n", "*NODE, NSET=A, nset=B", "*NODE", {"each parameter once", "parameter NSET twice"}},
@@ -1053,7 +1109,7 @@ std::vector<ErrorCase> error_cases() {
       {"RectWithThreeDimensions", frame_with_section(kRectOnFrame + "RECT\n0.1, 0.2, 0.3\n"), "0.1, 0.2, 0.3", "*BEAM SECTION", {"expected the 1 or 2 dimensions of a RECT section (1 to 2 values)", "found 3 values in '0.1, 0.2, 0.3'"}},
       {"BoxWithFiveDimensions", frame_with_section(kRectOnFrame + "BOX\n0.1, 0.2, 0.01, 0.01, 0.01\n"), "0.1, 0.2, 0.01, 0.01, 0.01", "*BEAM SECTION", {"the 6 dimensions of a BOX section"}},
       {"PipeWithOneDimension", frame_with_section(kRectOnFrame + "PIPE\n0.1\n"), "0.1", "*BEAM SECTION", {"the 2 dimensions of a PIPE section"}},
-      {"CircWithTwoDimensions", frame_with_section(kRectOnFrame + "CIRC\n0.1, 0.2\n"), "0.1, 0.2", "*BEAM SECTION", {"the 1 dimensions of a CIRC section"}},
+      {"CircWithThreeDimensions", frame_with_section(kRectOnFrame + "CIRC\n0.1, 0.2, 0.3\n"), "0.1, 0.2, 0.3", "*BEAM SECTION", {"the 1 or 2 dimensions of a CIRC section"}},
       {"IWithSixDimensions", frame_with_section(kRectOnFrame + "I\n0.3, 0.2, 0.2, 0.02, 0.02, 0.01\n"), "0.3, 0.2, 0.2, 0.02, 0.02, 0.01", "*BEAM SECTION", {"the 7 dimensions of a I section"}},
       {"ChannelWithThreeDimensions", frame_with_section(kRectOnFrame + "CHANNEL\n0.2, 0.08, 0.01\n"), "0.2, 0.08, 0.01", "*BEAM SECTION", {"the 4 dimensions of a CHANNEL section"}},
       {"SectionDimensionText", frame_with_section(kRectOnFrame + "RECT\n0.1, wide\n"), "0.1, wide", "*BEAM SECTION", {"(a finite number)", "found 'wide'"}},
@@ -1153,12 +1209,24 @@ std::vector<ErrorCase> error_cases() {
       {"SpringStiffnessText", kModel + "*ELEMENT, TYPE=SPRING1, ELSET=S\n10, 3\n*SPRING, ELSET=S\n1\nstiff\n", "stiff", "*SPRING", {"the spring stiffness (a finite number)", "found 'stiff'"}},
       // ---- steps
       {"LoadBetweenSteps", kModel + "*STEP\n*STATIC\n*END STEP\n*CLOAD\n3, 2, 1\n*STEP\n*STATIC\n*END STEP\n", "*CLOAD", "*CLOAD", {"expected *CLOAD inside a *STEP", "found it between two steps"}},
-      {"AmplitudeIsNamedNotUnknown", "*AMPLITUDE, NAME=A1\n0, 0, 1, 1\n" + kModel, "*AMPLITUDE, NAME=A1", "*AMPLITUDE", {"expected loads that are constant in a step", "found *AMPLITUDE, NAME=A1"}},
-      {"ModalDynamicStepIsNamed", kModel + "*STEP\n*STATIC\n*END STEP\n*STEP\n*MODAL DYNAMIC\n1e-3, 1\n*END STEP\n", "*MODAL DYNAMIC", "*MODAL DYNAMIC", {"expected *STATIC or *FREQUENCY as the step's procedure", "found *MODAL DYNAMIC in step 2"}},
+      {"AmplitudeInTotalTime", "*AMPLITUDE, NAME=A1, TIME=TOTAL TIME\n0, 0, 1, 1\n" + kModel, "*AMPLITUDE, NAME=A1, TIME=TOTAL TIME", "*AMPLITUDE", {"expected TIME=STEP TIME", "found TIME=TOTAL TIME on *AMPLITUDE, NAME=A1"}},
+      {"AmplitudeSmoothStep", "*AMPLITUDE, NAME=A1, DEFINITION=SMOOTH STEP\n0, 0, 1, 1\n" + kModel, "*AMPLITUDE, NAME=A1, DEFINITION=SMOOTH STEP", "*AMPLITUDE", {"expected DEFINITION=TABULAR", "found DEFINITION=SMOOTH STEP"}},
+      {"AmplitudeOddCount", "*AMPLITUDE, NAME=A1\n0, 0, 1\n" + kModel, "0, 0, 1", "*AMPLITUDE", {"expected time, value pairs", "found 3 numbers (an odd count)"}},
+      {"AmplitudeBackInTime", "*AMPLITUDE, NAME=A1\n0, 0, 1, 1, 0.5, 2\n" + kModel, "0, 0, 1, 1, 0.5, 2", "*AMPLITUDE", {"found *AMPLITUDE, NAME=A1 going back in time"}},
+      {"AmplitudeUnknownName", kModel + "*STEP\n*DYNAMIC\n0.01, 0.1\n*CLOAD, AMPLITUDE=B\n3, 2, 1\n*END STEP\n", "3, 2, 1", "*CLOAD", {"AMPLITUDE= naming an *AMPLITUDE of the deck (it defines none)", "found AMPLITUDE=B"}},
+      {"AmplitudeInAStaticStep", "*AMPLITUDE, NAME=A1\n0, 0, 1, 1\n" + kModel + "*STEP\n*STATIC\n*CLOAD, AMPLITUDE=A1\n3, 2, 1\n*END STEP\n", "*STEP", "*STEP", {"expected AMPLITUDE= on loads of *MODAL DYNAMIC and *DYNAMIC steps only", "found AMPLITUDE=A1 on a load of step 1 (*STATIC)"}},
+      {"AmplitudeOnDload", kModel + "*STEP\n*DYNAMIC\n0.01, 0.1\n*DLOAD, AMPLITUDE=A1\nFRAME, PZ, 1\n*END STEP\n", "*DLOAD, AMPLITUDE=A1", "*DLOAD", {"expected a *DLOAD constant in its step", "found AMPLITUDE=A1"}},
+      {"DynamicWithoutDataLine", kModel + "*STEP\n*DYNAMIC\n*END STEP\n", "*DYNAMIC", "*DYNAMIC", {"expected a data line: time increment, time period", "found none"}},
+      {"DynamicIncrementLongerThanPeriod", kModel + "*STEP\n*DYNAMIC\n1, 0.5\n*END STEP\n", "1, 0.5", "*DYNAMIC", {"0 < increment <= period", "found '1, 0.5'"}},
+      {"DynamicExplicit", kModel + "*STEP\n*DYNAMIC, EXPLICIT\n0.01, 0.1\n*END STEP\n", "*DYNAMIC, EXPLICIT", "*DYNAMIC", {"framedyn has no explicit integration", "found EXPLICIT"}},
+      {"ModalDynamicSteadyState", kModel + "*STEP\n*MODAL DYNAMIC, STEADY STATE\n0.01, 0.1\n*END STEP\n", "*MODAL DYNAMIC, STEADY STATE", "*MODAL DYNAMIC", {"found STEADY STATE"}},
+      {"ModalDampingInAStaticStep", kModel + "*STEP\n*STATIC\n*MODAL DAMPING\n1, 2, 0.02\n*END STEP\n", "*MODAL DAMPING", "*MODAL DAMPING", {"expected *MODAL DAMPING in a *MODAL DYNAMIC step", "found it in step 1 (*STATIC)"}},
+      {"ModalDampingRatioOfOne", kModel + "*STEP\n*MODAL DYNAMIC\n0.01, 0.1\n*MODAL DAMPING\n1, 2, 1.0\n*END STEP\n", "1, 2, 1.0", "*MODAL DAMPING", {"a damping ratio 0 <= zeta < 1"}},
+      {"SteadyStateDynamicsStepIsNamed", kModel + "*STEP\n*STATIC\n*END STEP\n*STEP\n*STEADY STATE DYNAMICS\n1, 100\n*END STEP\n", "*STEADY STATE DYNAMICS", "*STEADY STATE DYNAMICS", {"expected *STATIC, *FREQUENCY, *MODAL DYNAMIC or *DYNAMIC as the step's procedure", "found *STEADY STATE DYNAMICS in step 2"}},
       {"BoundaryOpNewOnALaterCardOfTheStep", kModel + "*STEP\n*STATIC\n*BOUNDARY\n1, 1, 3\n*BOUNDARY, OP=NEW\n1, 1, 6\n*END STEP\n", "*BOUNDARY, OP=NEW", "*BOUNDARY",
        {"expected OP=NEW on the first *BOUNDARY of its step only", "found OP=NEW on *BOUNDARY card 2 of step 1"}},
       {"CloadOpUnknown", kModel + "*STEP\n*STATIC\n*CLOAD, OP=ADD\n3, 2, 1\n*END STEP\n", "*CLOAD, OP=ADD", "*CLOAD", {"expected OP=MOD or OP=NEW", "found OP=ADD"}},
-      {"TwoProceduresInOneStep", kModel + "*STEP\n*STATIC\n*FREQUENCY\n5\n*END STEP\n", "*FREQUENCY", "*FREQUENCY", {"expected one procedure (*STATIC or *FREQUENCY) per *STEP", "found *STATIC and *FREQUENCY in step 1"}},
+      {"TwoProceduresInOneStep", kModel + "*STEP\n*STATIC\n*FREQUENCY\n5\n*END STEP\n", "*FREQUENCY", "*FREQUENCY", {"expected one procedure (*STATIC, *FREQUENCY, *MODAL DYNAMIC or *DYNAMIC) per *STEP", "found *STATIC and *FREQUENCY in step 1"}},
       {"StepInsideStep", kModel + "*STEP\n*STEP, NAME=INNER\n*END STEP\n", "*STEP, NAME=INNER", "*STEP", {"expected *END STEP before the next *STEP"}},
       {"StepWithoutEndStep", kModel + "*STEP, NAME=ONLY\n*STATIC\n*CLOAD\n3, 2, 1\n", "*STEP, NAME=ONLY", "*STEP", {"expected *END STEP at the end of the step", "found end of file"}},
       {"EndStepWithoutStep", kModel + "*END STEP\n", "*END STEP", "*END STEP", {"expected a *STEP before *END STEP"}},
