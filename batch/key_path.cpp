@@ -106,13 +106,17 @@ YAML::Node find_key(const YAML::Node& doc, const std::string& path, const std::s
     }
     std::string names;
     YAML::Node found;
+    bool have = false;
     for (std::size_t j = 0; j < n.size(); ++j) {
       const YAML::Node item = n[j];
       if (!item.IsMap() || !item["name"] || !item["name"].IsScalar()) continue;
       names += (names.empty() ? "" : ", ") + item["name"].Scalar();
-      if (item["name"].Scalar() == k.name && !found.IsDefined()) found.reset(item);
+      if (item["name"].Scalar() == k.name && !have) {
+        found.reset(item);
+        have = true;
+      }
     }
-    if (!found.IsDefined())
+    if (!have)
       throw KeyPathError(fmt::format("{} has no item named '{}' ({})", here, k.name, names.empty() ? "its items have no names" : "it has " + names));
     n.reset(found);
   }
