@@ -7,7 +7,8 @@
 //   - standardised regression coefficients of an exactly linear output equal their closed form,
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
 //   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
-//     a batch resumed from a checkpoint gives the table of an uninterrupted one.
+//     a batch resumed from a checkpoint gives the table of an uninterrupted one;
+//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,7 @@
 #include "batch/sensitivity.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
+#include "tests/support/run_framedyn.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -259,6 +261,40 @@ TEST(BatchEngine, BatchResumedFromACheckpointGivesTheUninterruptedTable) {
   EXPECT_EQ(c.skipped, 3u);
   EXPECT_EQ(read_text(dir / "part" / "runs.csv"), read_text(dir / "whole" / "runs.csv"));
   EXPECT_EQ(read_text(dir / "part" / "summary.json"), read_text(dir / "whole" / "summary.json"));
+}
+
+// framedyn sweep's sweep.csv row by row: the parameter and the three response
+// peaks, as text (both tables write 10 significant digits).
+TEST(BatchEngine, GridOverOneParameterGivesTheNumbersOfFramedynSweep) {
+  TempDir dir;
+  fs::copy_file(kPlow2D, dir / "study.yaml");
+  const auto sweep = framedyn::testing::framedyn(dir, "sweep study.yaml -p soil.damping --values 200,300,400 --no-figures --out sweep -q");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "outputs:\n  - rigid.response.plow_vertical_pp\n  - rigid.response.peak_cutting_force\n  - rigid.response.peak_backing_force\n");
+  batch::BatchOptions opt;
+  opt.out = dir / "grid";
+  batch::run_batch(batch::read_batch_design((dir / "design.yaml").string()), opt);
+  std::istringstream sw(read_text(dir / "sweep" / "sweep.csv")), grid(read_text(dir / "grid" / "runs.csv"));
+  std::string a, b;
+  std::getline(sw, a);
+  std::getline(grid, b);
+  EXPECT_EQ(b, "index,soil.damping [in-lbf-s],rigid.response.plow_vertical_pp [in],rigid.response.peak_cutting_force [lbf],"
+               "rigid.response.peak_backing_force [lbf],status,message");
+  int rows = 0;
+  while (std::getline(sw, a) && std::getline(grid, b)) {
+    std::vector<std::string> ca, cb;
+    std::istringstream la(a), lb(b);
+    for (std::string c; std::getline(la, c, ',');) ca.push_back(c);
+    for (std::string c; std::getline(lb, c, ',');) cb.push_back(c);
+    ASSERT_GE(ca.size(), 4u);
+    ASSERT_GE(cb.size(), 6u);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(ca[k], cb[k + 1]) << "row " << rows << " column " << k;
+    EXPECT_EQ(cb[5], "done");
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3);
 }
 
 }  // namespace
