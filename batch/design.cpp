@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/units.h"
@@ -86,6 +88,12 @@ BatchDesign read_batch_design(const std::string& file) {
   d.study_file = std::filesystem::path(file).parent_path() / top.text("study");
   // The study is read once, here; its own errors name the study file.
   d.study = coupling::load_yaml_file(d.study_file.string());
+  {
+    std::ifstream in(d.study_file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    d.study_text = text.str();
+  }
   if (d.study.IsMap() && d.study["units"] && d.study["units"].IsScalar()) d.study_units = d.study["units"].Scalar();
 
   const YamlMap s = top.map("sampling");

@@ -18,7 +18,8 @@ namespace framedyn::batch {
 struct BatchDesign {
   std::string file;                  // the design file, as given
   std::filesystem::path study_file;  // relative to the design file's folder
-  YAML::Node study;                  // the study, parsed once (every run starts from a copy)
+  YAML::Node study;                  // the study, parsed once (to check the parameters' keys)
+  std::string study_text;            // its text: each run parses its own copy (YAML::Clone would lose the lines errors name)
   std::string study_units;           // the study's `units:` (parameters are in them)
   Sampling sampling;
   std::vector<ParameterSpec> parameters;

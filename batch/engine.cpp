@@ -147,7 +147,7 @@ RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::ve
   r.outputs.assign(design.outputs.size(), "");
   r.output_units.assign(design.outputs.size(), "");
   try {
-    YAML::Node doc = YAML::Clone(design.study);
+    YAML::Node doc = YAML::Load(design.study_text);  // with its marks: a refused sample's error names the study's line
     for (std::size_t j = 0; j < values.size(); ++j) set_number(doc, design.parameters[j].key, values[j]);
     report::StudyRunOptions opt;
     if (keep) opt.out = *keep;
