@@ -151,6 +151,7 @@ StudyRun run_rigid_2d(const YAML::Node& doc, const std::filesystem::path& file, 
   const std::string file_s = file.string();
   StudyRun run;
   run.model = "rigid_2d";
+  stage("reading " + file_s);
   const coupling::RigidStudy study = coupling::read_rigid_study(doc, file_s);
   const core::UnitSystem& u = study.units;
   stage(study.response ? "modes and forced response" : "modes");
@@ -296,6 +297,7 @@ StudyRun run_rigid_3d(const YAML::Node& doc, const std::filesystem::path& file, 
   const std::string file_s = file.string();
   StudyRun run;
   run.model = "rigid_3d";
+  stage("reading " + file_s);
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(doc, file_s);
   const core::UnitSystem& u = study.units;
   stage(study.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)");
