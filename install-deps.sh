@@ -6,6 +6,7 @@
 # paraview + python3-paraview give pvbatch, with which a test reads that output
 # back with ParaView's own readers (185 packages, 198 MB, about 1.5 min);
 # gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`;
+# libopenmpi-dev + openmpi-bin (Debian's Open MPI): the MPI engine of `framedyn batch` (FRAMEDYN_MPI);
 # clang with its runtime (libFuzzer, sanitizers) and its OpenMP (SUNDIALS's CMake
 # package asks for OpenMP) builds the fuzz harnesses of tests/fuzz.
 set -euo pipefail
@@ -19,6 +20,7 @@ packages=(
   libhdf5-dev
   paraview python3-paraview
   clang libclang-rt-14-dev libomp-dev
+  libopenmpi-dev openmpi-bin
 )
 missing=()
 for p in "${packages[@]}"; do

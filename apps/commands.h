@@ -19,5 +19,6 @@ void add_harmonic_command(CLI::App& app, std::function<int()>& run);        // h
 void add_random_command(CLI::App& app, std::function<int()>& run);          // random_command.cpp
 void add_rainflow_command(CLI::App& app, std::function<int()>& run);        // rainflow_command.cpp
 void add_transient_command(CLI::App& app, std::function<int()>& run);       // transient_command.cpp
+void add_batch_command(CLI::App& app, std::function<int()>& run);           // batch_command.cpp (issue 19)
 
 }  // namespace framedyn::apps

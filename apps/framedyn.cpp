@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   framedyn::apps::add_random_command(app, run);
   framedyn::apps::add_transient_command(app, run);
   framedyn::apps::add_rainflow_command(app, run);
+  framedyn::apps::add_batch_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

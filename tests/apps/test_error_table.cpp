@@ -713,6 +713,37 @@ std::vector<Row> rows() {
     r.push_back(row);
   }
 
+  // ---- design files of framedyn batch (batch/design.cpp, batch/key_path.cpp, apps/batch_command.cpp)
+  const std::string kDesign =
+      "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: latin_hypercube, samples: 4, seed: 1}\nparameters:\n"
+      "  - {key: soil.damping, distribution: uniform, low: 150, high: 450}\noutputs:\n  - rigid.response.peak_cutting_force\n";
+  const auto design_row = [&](const std::string& id, const std::string& from, const std::string& to, const std::string& marker, const std::string& key) {
+    const std::string text = edit(kDesign, from, to);
+    return Row{id, {{"study.yaml", kStudy2D}, {"design.yaml", text}}, "batch design.yaml --out results -q", at("design.yaml", text, marker, key)};
+  };
+  const std::vector<Row> batch = {
+      design_row("BATCH-01", "framedyn_batch: 1", "framedyn_batch: 2", "framedyn_batch", "framedyn_batch"),
+      design_row("BATCH-02", "latin_hypercube", "sobol", "sampling:", "sampling.method"),
+      design_row("BATCH-03", "soil.damping", "soil.dampin", "soil.dampin", "parameters[0].key"),
+      design_row("BATCH-04", "soil.damping,", "soil,", "key: soil,", "parameters[0].key"),
+      design_row("BATCH-05", "high: 450", "high: 100", "high: 100", "parameters[0].high"),
+      design_row("BATCH-06", "uniform", "beta", "beta", "parameters[0].distribution"),
+      design_row("BATCH-07", "distribution: uniform, low: 150, high: 450", "values: [1, 2]", "values:", "parameters[0].values"),
+      design_row("BATCH-08", "outputs:\n  - rigid.response.peak_cutting_force\n", "outputs: []\n", "outputs:", "outputs"),
+      {"CLI-54", {{"study.yaml", kStudy2D}, {"design.yaml", kDesign}}, "batch design.yaml --out results --threads -1 -q", "command line: --threads"},
+      {"CLI-55", {{"study.yaml", kStudy2D}, {"design.yaml", kDesign}}, "batch design.yaml --out results --checkpoint -2 -q", "command line: --checkpoint"},
+      {"CLI-56", {{"study.yaml", kStudy2D}, {"design.yaml", kDesign}}, "batch design.yaml --out results --resume -q", "command line: --resume"},
+      {"OUT-08",
+       {{"study.yaml", kStudy2D},
+        {"design.yaml", kDesign},
+        {"results/.framedyn-manifest", "# framedyn results manifest 1\nruns.csv\nsummary.json\n"},
+        {"results/summary.json", "{}\n"},
+        {"results/runs.csv", "index,soil.stiffness [in-lbf-s],rigid.response.peak_cutting_force [lbf],status,message\n"}},
+       "batch design.yaml --out results --resume -q",
+       "results/runs.csv:1"},
+  };
+  r.insert(r.end(), batch.begin(), batch.end());
+
   // ---- the results folder (core/results_folder.cpp): framedyn replaces only a folder it wrote
   const std::string manifest = "# framedyn results manifest 1\nsummary.json\n";
   const std::vector<Row> out = {

@@ -1,0 +1,300 @@
+// Design studies (`framedyn batch`, issue 19) and the library call under them,
+// report::run_study_document (report/study_run.h):
+//   - a study run in memory gives summary.json's content byte for byte and writes nothing;
+//   - a parsed document changed in memory runs as the same change made in the file;
+//   - key paths set exactly the number they name and refuse what is not one;
+//   - the inverse normal CDF against tabulated quantiles; Latin hypercube strata each sampled once;
+//   - standardised regression coefficients of an exactly linear output equal their closed form,
+//     Spearman's rho of a monotone output is 1, tied values get average ranks;
+//   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
+//     a batch resumed from a checkpoint gives the table of an uninterrupted one;
+//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include <cmath>
+#include <set>
+
+#include "batch/design.h"
+#include "batch/engine.h"
+#include "batch/key_path.h"
+#include "batch/sampling.h"
+#include "batch/sensitivity.h"
+#include "coupling/yaml_input.h"
+#include "report/study_run.h"
+#include "tests/support/run_framedyn.h"
+#include "tests/support/temp_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using framedyn::testing::TempDir;
+namespace report = framedyn::report;
+
+const fs::path kExamples = fs::path(FRAMEDYN_SOURCE_DIR) / "examples";
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The shipped plow studies with the shortest runs: 2-D (0.2 s) and 3-D offset plowing (0.2 s).
+const fs::path kPlow2D = kExamples / "r100_plow_2d_vertical_path.yaml";
+const fs::path kPlow3D = kExamples / "r100_plow_offset.yaml";
+
+TEST(StudyRun, SummaryInMemoryIsSummaryJsonByteForByteAndWritesNothing) {
+  for (const auto& [study, model] : {std::pair{kPlow2D, "rigid_2d"}, std::pair{kPlow3D, "rigid_3d"}}) {
+    TempDir dir;
+    report::StudyRunOptions to_disk;
+    to_disk.out = dir / "results";
+    const report::StudyRun written = report::run_study_file(study, to_disk);
+    const report::StudyRun in_memory = report::run_study_file(study);
+    EXPECT_EQ(in_memory.model, model);
+    EXPECT_EQ(in_memory.summary.dump(2) + "\n", read_text(dir / "results" / "summary.json")) << study;
+    EXPECT_EQ(written.summary, in_memory.summary);
+    // Nothing but the folder asked for: no second results folder, no partial one.
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++entries;
+    EXPECT_EQ(entries, 1u);
+  }
+}
+
+TEST(StudyRun, DocumentChangedInMemoryRunsAsTheSameChangeInTheFile) {
+  TempDir dir;
+  YAML::Node doc = framedyn::coupling::load_yaml_file(kPlow2D.string());
+  const double damping = doc["soil"]["damping"].as<double>();
+  doc["soil"]["damping"] = 2.0 * damping;
+  const fs::path changed = dir / "r100_plow_offset.yaml";
+  std::ofstream(changed) << YAML::Dump(doc) << "\n";
+  const report::StudyRun from_doc = report::run_study_document(doc, changed);
+  const report::StudyRun from_file = report::run_study_file(changed);
+  EXPECT_EQ(from_doc.summary, from_file.summary);
+  const report::StudyRun base = report::run_study_file(kPlow2D);
+  EXPECT_NE(base.summary["rigid"]["response"]["peak_cutting_force"]["value"], from_doc.summary["rigid"]["response"]["peak_cutting_force"]["value"]);
+}
+
+// ------------------------------------------------------------- key paths
+
+namespace batch = framedyn::batch;
+
+const char* kDoc = R"(soil: {stiffness: 40000, damping: 300}
+frame:
+  parts:
+    - {name: frame_structure, from: frame_mesh}
+    - {name: engine, weight: 850, position: [40, 0, 14]}
+plow: {shaker: {force: 26530, frequency_hz: 18.33}}
+)";
+
+TEST(KeyPath, SetsExactlyTheNumberItNamesByKeyIndexOrName) {
+  YAML::Node doc = YAML::Load(kDoc);
+  batch::set_number(doc, "soil.damping", 0.1 + 0.2);
+  batch::set_number(doc, "frame.parts[engine].weight", 900);
+  batch::set_number(doc, "frame.parts[1].position[2]", -3.5);
+  batch::set_number(doc, "plow.shaker.frequency_hz", 20.125);
+  EXPECT_EQ(batch::get_number(doc, "soil.damping"), 0.1 + 0.2);  // read back exactly (shortest round-trip text)
+  EXPECT_EQ(doc["frame"]["parts"][1]["weight"].Scalar(), "900");
+  EXPECT_EQ(doc["frame"]["parts"][1]["position"][2].Scalar(), "-3.5");
+  EXPECT_EQ(doc["plow"]["shaker"]["frequency_hz"].as<double>(), 20.125);
+  EXPECT_EQ(doc["soil"]["stiffness"].as<double>(), 40000.0);  // nothing else changed
+}
+
+TEST(KeyPath, RefusesAnUnknownKeyOrATargetThatIsNotANumberSayingWhatIsThere) {
+  YAML::Node doc = YAML::Load(kDoc);
+  const auto message = [&](const std::string& path) {
+    try {
+      batch::set_number(doc, path, 1.0, "the study");
+    } catch (const batch::KeyPathError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("soil.dampin"), "the study's soil has no key 'dampin' (it has stiffness, damping)");
+  EXPECT_EQ(message("frame.parts[cab].weight"), "the study's frame.parts has no item named 'cab' (it has frame_structure, engine)");
+  EXPECT_EQ(message("frame.parts[2].weight"), "the study's frame.parts has 2 items (positions 0 to 1), not [2]");
+  EXPECT_EQ(message("frame.parts[0].from"), "the study's frame.parts[0].from is 'frame_mesh', not a number");
+  EXPECT_EQ(message("plow.shaker"), "the study's plow.shaker is a map, not a number");
+  EXPECT_EQ(message("soil..damping"), "'soil..damping' is not a key path (an empty key)");
+}
+
+// ------------------------------------------------------------- sampling
+
+TEST(Sampling, NormalQuantileMatchesTabulatedValuesAndInvertsTheCdf) {
+  // Tabulated standard normal quantiles (Abramowitz and Stegun, Table 26.5).
+  EXPECT_NEAR(batch::standard_normal_quantile(0.975), 1.959963984540054, 1e-13);
+  EXPECT_NEAR(batch::standard_normal_quantile(0.5), 0.0, 1e-15);
+  EXPECT_NEAR(batch::standard_normal_quantile(0.001), -3.090232306167814, 1e-12);
+  EXPECT_NEAR(batch::standard_normal_cdf(1.0), 0.8413447460685429, 1e-15);
+  for (double p : {1e-9, 1e-4, 0.02, 0.3, 0.7, 0.98, 1 - 1e-6}) EXPECT_NEAR(batch::standard_normal_cdf(batch::standard_normal_quantile(p)), p, 1e-14 + 1e-12 * p);
+}
+
+TEST(Sampling, LatinHypercubeSamplesEachStratumOfEveryParameterExactlyOnce) {
+  batch::Sampling s{batch::SamplingMethod::latin_hypercube, 17, 42};
+  std::vector<batch::ParameterSpec> params(4);
+  params[0].distribution = batch::Distribution::uniform, params[0].low = 150, params[0].high = 450;
+  params[1].distribution = batch::Distribution::normal, params[1].mean = 4e4, params[1].std_dev = 4e3;
+  params[2].distribution = batch::Distribution::lognormal, params[2].median = 2.0, params[2].log_std = 0.3;
+  params[3].distribution = batch::Distribution::truncated_normal, params[3].mean = 0, params[3].std_dev = 1, params[3].low = -0.5, params[3].high = 2;
+  const auto rows = batch::draw_samples(s, params);
+  ASSERT_EQ(rows.size(), 17u);
+  for (std::size_t j = 0; j < params.size(); ++j) {
+    std::set<std::size_t> strata;
+    for (const auto& row : rows) strata.insert(batch::stratum_of(batch::cdf(params[j], row[j]), 17));
+    EXPECT_EQ(strata.size(), 17u) << "parameter " << j;
+  }
+  EXPECT_EQ(batch::draw_samples(s, params), rows);  // the same seed, the same samples
+}
+
+TEST(Sampling, GridRunsEveryCombinationWithTheLastParameterFastest) {
+  std::vector<batch::ParameterSpec> params(2);
+  params[0].values = {1, 2};
+  params[1].values = {10, 20, 30};
+  const auto rows = batch::draw_samples({batch::SamplingMethod::grid, 0, 1}, params);
+  const std::vector<std::vector<double>> expected = {{1, 10}, {1, 20}, {1, 30}, {2, 10}, {2, 20}, {2, 30}};
+  EXPECT_EQ(rows, expected);
+}
+
+// ------------------------------------------------------------- sensitivity
+
+TEST(Sensitivity, RegressionCoefficientsOfAnExactlyLinearOutputEqualTheClosedForm) {
+  // y = 2 a - b: SRC_a = 2 s_a / s_y, SRC_b = -s_b / s_y, s_y^2 = 4 s_a^2 + s_b^2 - 4 cov(a, b) (sample moments).
+  const std::vector<double> a = {1, 2, 3, 4, 5, 6, 7, 9}, b = {3, 1, 4, 1, 5, 9, 2, 6};
+  std::vector<std::vector<double>> x;
+  std::vector<double> y;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    x.push_back({a[i], b[i]});
+    y.push_back(2 * a[i] - b[i]);
+  }
+  const auto mean = [](const std::vector<double>& v) { double m = 0; for (double e : v) m += e; return m / v.size(); };
+  const auto cov = [&](const std::vector<double>& u, const std::vector<double>& v) {
+    double c = 0, mu = mean(u), mv = mean(v);
+    for (std::size_t i = 0; i < u.size(); ++i) c += (u[i] - mu) * (v[i] - mv);
+    return c / (u.size() - 1);
+  };
+  const double sy = std::sqrt(4 * cov(a, a) + cov(b, b) - 4 * cov(a, b));
+  const auto src = batch::standardised_regression_coefficients(x, y);
+  ASSERT_TRUE(src);
+  EXPECT_NEAR((*src)[0], 2 * std::sqrt(cov(a, a)) / sy, 1e-12);
+  EXPECT_NEAR((*src)[1], -std::sqrt(cov(b, b)) / sy, 1e-12);
+  EXPECT_EQ(batch::ranking(*src), (std::vector<std::size_t>{0, 1}));
+}
+
+TEST(Sensitivity, SpearmanOfAMonotoneOutputIsOneAndTiesGetAverageRanks) {
+  const std::vector<double> a = {0.3, -1.2, 2.5, 0.9, 1.7, -0.4};
+  std::vector<double> up, down;
+  for (double v : a) {
+    up.push_back(std::exp(3 * v));
+    down.push_back(-v * v * v);
+  }
+  EXPECT_DOUBLE_EQ(*batch::spearman(a, up), 1.0);
+  EXPECT_DOUBLE_EQ(*batch::spearman(a, down), -1.0);
+  EXPECT_EQ(batch::average_ranks({5, 1, 3, 3, 9, 3}), (std::vector<double>{5, 1, 3, 3, 6, 3}));
+  EXPECT_EQ(batch::average_ranks({2, 2}), (std::vector<double>{1.5, 1.5}));
+  EXPECT_FALSE(batch::spearman({1, 1, 1}, {1, 2, 3}));  // a constant series has no rank correlation
+  // A near-tie of coefficients keeps parameter order, whatever the round-off.
+  EXPECT_EQ(batch::ranking({0.5, -0.5 * (1 + 1e-9), 0.9}), (std::vector<std::size_t>{2, 0, 1}));
+}
+
+// ------------------------------------------------------------- engine
+
+// A Latin hypercube over the 2-D plow's soil (8 runs of 0.05 s). With a damping
+// range reaching below zero, some samples are refused by the study reader:
+// failed runs, recorded, while the rest complete.
+std::string design_text(const std::string& damping) {
+  return "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: latin_hypercube, samples: 8, seed: 3}\nparameters:\n"
+         "  - {key: soil.stiffness, distribution: uniform, low: 30000, high: 50000}\n  - " + damping +
+         "\noutputs:\n  - rigid.response.peak_cutting_force\n  - rigid.modes[0].frequency\n";
+}
+
+TEST(BatchEngine, TableIsByteIdenticalOnOneAndTwoThreadsAndAFailedRunIsRecorded) {
+  TempDir dir;
+  fs::copy_file(kPlow2D, dir / "study.yaml");
+  dir.write("design.yaml", design_text("{key: soil.damping, distribution: uniform, low: -300, high: 450}"));
+  const batch::BatchDesign d = batch::read_batch_design((dir / "design.yaml").string());
+  batch::BatchOptions one, two;
+  one.out = dir / "one";
+  two.out = dir / "two";
+  two.threads = 2;
+  const batch::BatchCounts c1 = batch::run_batch(d, one);
+  batch::run_batch(d, two);
+  const std::string table = read_text(dir / "one" / "runs.csv");
+  EXPECT_EQ(table, read_text(dir / "two" / "runs.csv"));
+  EXPECT_EQ(c1.total, 8u);
+  EXPECT_GE(c1.failed, 1u);  // the negative dampings
+  EXPECT_GE(c1.done, 4u);
+  EXPECT_EQ(c1.done + c1.failed, 8u);
+  EXPECT_NE(table.find(",failed,"), std::string::npos);
+  EXPECT_NE(table.find("soil.damping: expected"), std::string::npos) << table;  // the reader's own message, with the key
+  const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "one" / "summary.json"));
+  EXPECT_EQ(summary["runs"]["failed"], c1.failed);
+  EXPECT_EQ(summary["complete"], true);
+}
+
+TEST(BatchEngine, BatchResumedFromACheckpointGivesTheUninterruptedTable) {
+  TempDir dir;
+  fs::copy_file(kPlow2D, dir / "study.yaml");
+  dir.write("design.yaml", design_text("{key: soil.damping, distribution: uniform, low: 150, high: 450}"));
+  const batch::BatchDesign d = batch::read_batch_design((dir / "design.yaml").string());
+  batch::BatchOptions whole;
+  whole.out = dir / "whole";
+  batch::run_batch(d, whole);
+  // A batch stopped after three runs: its last checkpoint holds rows 0, 2 and 5 (threads finish out of order).
+  batch::BatchOptions part;
+  part.out = dir / "part";
+  const auto samples = batch::design_samples(d);
+  std::vector<batch::RunRecord> rows(samples.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].index = i;
+  for (std::size_t i : {0, 2, 5}) rows[i] = batch::run_sample(d, i, samples[i]);
+  batch::write_batch_folder(d, rows, part);
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "part" / "summary.json"))["complete"], false);
+  part.resume = true;
+  const batch::BatchCounts c = batch::run_batch(d, part);
+  EXPECT_EQ(c.skipped, 3u);
+  EXPECT_EQ(read_text(dir / "part" / "runs.csv"), read_text(dir / "whole" / "runs.csv"));
+  EXPECT_EQ(read_text(dir / "part" / "summary.json"), read_text(dir / "whole" / "summary.json"));
+}
+
+// framedyn sweep's sweep.csv row by row: the parameter and the three response
+// peaks, as text (both tables write 10 significant digits).
+TEST(BatchEngine, GridOverOneParameterGivesTheNumbersOfFramedynSweep) {
+  TempDir dir;
+  fs::copy_file(kPlow2D, dir / "study.yaml");
+  const auto sweep = framedyn::testing::framedyn(dir, "sweep study.yaml -p soil.damping --values 200,300,400 --no-figures --out sweep -q");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "outputs:\n  - rigid.response.plow_vertical_pp\n  - rigid.response.peak_cutting_force\n  - rigid.response.peak_backing_force\n");
+  batch::BatchOptions opt;
+  opt.out = dir / "grid";
+  batch::run_batch(batch::read_batch_design((dir / "design.yaml").string()), opt);
+  std::istringstream sw(read_text(dir / "sweep" / "sweep.csv")), grid(read_text(dir / "grid" / "runs.csv"));
+  std::string a, b;
+  std::getline(sw, a);
+  std::getline(grid, b);
+  EXPECT_EQ(b, "index,soil.damping [in-lbf-s],rigid.response.plow_vertical_pp [in],rigid.response.peak_cutting_force [lbf],"
+               "rigid.response.peak_backing_force [lbf],status,message");
+  int rows = 0;
+  while (std::getline(sw, a) && std::getline(grid, b)) {
+    std::vector<std::string> ca, cb;
+    std::istringstream la(a), lb(b);
+    for (std::string c; std::getline(la, c, ',');) ca.push_back(c);
+    for (std::string c; std::getline(lb, c, ',');) cb.push_back(c);
+    ASSERT_GE(ca.size(), 4u);
+    ASSERT_GE(cb.size(), 6u);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(ca[k], cb[k + 1]) << "row " << rows << " column " << k;
+    EXPECT_EQ(cb[5], "done");
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3);
+}
+
+}  // namespace
