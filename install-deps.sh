@@ -8,6 +8,9 @@
 # gnuplot (gnuplot-nox) draws the PNG figures of `framedyn sweep` and `run --figures`;
 # clang with its runtime (libFuzzer, sanitizers) and its OpenMP (SUNDIALS's CMake
 # package asks for OpenMP) builds the fuzz harnesses of tests/fuzz.
+# pybind11-dev, python3-dev and python3-numpy build the Python module (python/),
+# python3-pytest runs its tests, python3-matplotlib draws the figure of
+# examples/python/offset_plowing.py (Debian's /usr/bin/python3 is the interpreter).
 set -euo pipefail
 packages=(
   g++ make cmake pkg-config
@@ -19,6 +22,7 @@ packages=(
   libhdf5-dev
   paraview python3-paraview
   clang libclang-rt-14-dev libomp-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

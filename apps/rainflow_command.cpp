@@ -14,9 +14,8 @@
 #include "core/error.h"
 #include "core/number_text.h"
 #include "core/results_folder.h"
+#include "fatigue/counted_history.h"
 #include "fatigue/mean_stress.h"
-#include "fatigue/miner_damage.h"
-#include "fatigue/rainflow.h"
 #include "fatigue/sn_curve.h"
 #include "fatigue/stress_series.h"
 #include "report/rainflow_outputs.h"
@@ -29,20 +28,6 @@ struct RainflowOptions {
   std::string series, column, sn, out;
   bool repeat = false;
   ProgressFlags progress;
-};
-
-// Passes each cycle to the list and, with a curve, to the damage sum.
-class Tee : public fatigue::CycleSink {
- public:
-  Tee(fatigue::CycleSink& a, fatigue::CycleSink* b) : a_(a), b_(b) {}
-  void add(double range, double mean, double count) override {
-    a_.add(range, mean, count);
-    if (b_) b_->add(range, mean, count);
-  }
-
- private:
-  fatigue::CycleSink& a_;
-  fatigue::CycleSink* b_;
 };
 
 int run_rainflow(const RainflowOptions& opt) {
@@ -65,17 +50,15 @@ int run_rainflow(const RainflowOptions& opt) {
   run.series_file = opt.series;
   run.column = s.header;
   run.unit = s.unit;
-  fatigue::CycleList list;
-  std::optional<fatigue::MinerDamage> damage;
-  if (curve) damage.emplace(*curve, s.pascals_per_unit);  // as-welded: no mean-stress correction
-  Tee tee(list, damage ? &*damage : nullptr);
-  run.summary = fatigue::count_cycles(s.values, opt.repeat ? fatigue::Residue::repeated_block : fatigue::Residue::half_cycles, tee);
-  run.cycles = std::move(list.cycles);
+  fatigue::CountedHistory counted =
+      fatigue::count_history(s.values, opt.repeat ? fatigue::Residue::repeated_block : fatigue::Residue::half_cycles, curve, s.pascals_per_unit);
+  run.summary = counted.summary;
+  run.cycles = std::move(counted.cycles);
   if (curve) {
     run.curve = curve;
     run.mean_stress = fatigue::MeanStressCorrection::none().describe();
-    run.damage = damage->damage();
-    if (const std::optional<double> eq = fatigue::equivalent_range(*curve, run.damage)) run.equivalent_range = *eq / s.pascals_per_unit;
+    run.damage = *counted.damage;
+    run.equivalent_range = counted.equivalent_range;
   }
 
   progress.stage("writing results");
