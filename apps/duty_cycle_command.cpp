@@ -1,40 +1,21 @@
-// `framedyn run DUTY.yaml` for a duty cycle (model: duty_cycle; coupling/duty_cycle.h):
-// every scenario's pipeline (coupling/), the outputs (report/duty_cycle_outputs.h), and the
-// console's lines: each scenario's share at the shortest-life location, the shortest life.
+// The console of `framedyn run DUTY.yaml` for a duty cycle (model: duty_cycle;
+// coupling/duty_cycle.h): each scenario's share at the shortest-life location, the
+// shortest life. The run and its outputs are report::run_study_file's.
 #include "apps/duty_cycle_command.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <filesystem>
 
-#include "core/results_folder.h"
-#include "coupling/duty_cycle.h"
 #include "report/duty_cycle_outputs.h"
-#include "report/response_figures.h"
+#include "report/study_run_details.h"
 
 namespace framedyn::apps {
 
-int run_duty_cycle_study(const std::string& file, const std::string& out, bool figures, const ProgressFlags& flags) {
-  Progress progress(flags);
-  if (figures) report::require_gnuplot();
-  const std::string out_dir = out.empty() ? std::filesystem::path(file).stem().string() + "_results" : out;
-  core::check_results_target(out_dir, {file});
-  progress.stage("reading " + file);
-  const coupling::DutyCycleRequest q = coupling::read_duty_cycle(file);
-  std::vector<std::filesystem::path> inputs = {file};
-  for (const coupling::DutyCycleScenarioSpec& s : q.scenarios) inputs.push_back(s.study);
-  core::check_results_target(out_dir, inputs);
-  const coupling::DutyCycleResults r = coupling::run_duty_cycle(q, [&](const std::string& what) { progress.stage(what); });
-  progress.stage("writing results");
-  core::ResultsFolder folder(out_dir, inputs);
-  const std::vector<std::string> figure_files = report::write_duty_cycle_outputs(file, q, r, figures, folder);
-  folder.commit();
-  progress.done();
-  if (progress.quiet()) {
-    fmt::print("results in {}/\n", out_dir);
-    return 0;
-  }
+int print_duty_cycle_run(const std::string& file, const report::StudyRun& run, bool figures, const std::string& out_dir) {
+  const coupling::DutyCycleRequest& q = *run.details->duty_cycle;
+  const coupling::DutyCycleResults& r = *run.details->duty_cycle_results;
+  const std::vector<std::string>& figure_files = run.figures;
   const coupling::DutyCycleScenarioResult& first = r.scenarios.front();
   const coupling::StressHistories& h = first.frame.stress;
   const core::UnitSystem& u = first.request.units;

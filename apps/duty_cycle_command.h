@@ -1,14 +1,13 @@
-// `framedyn run` for duty cycles (model: duty_cycle); see duty_cycle_command.cpp.
+// The console of `framedyn run` for duty cycles (model: duty_cycle); see duty_cycle_command.cpp.
 #pragma once
 
 #include <string>
 
-#include "apps/progress.h"
+#include "report/study_run.h"
 
 namespace framedyn::apps {
 
-// Runs every scenario of the duty cycle and writes DIR/life_map.csv, frame_life.vtu,
-// summary.json (and frame_life.png with figures). Returns the exit code.
-int run_duty_cycle_study(const std::string& file, const std::string& out, bool figures, const ProgressFlags& flags);
+// Prints the cycle's lines (report::run_study_file ran it and wrote `out_dir`). Returns the exit code.
+int print_duty_cycle_run(const std::string& file, const report::StudyRun& run, bool figures, const std::string& out_dir);
 
 }  // namespace framedyn::apps

@@ -15,7 +15,7 @@
 
 #include "apps/commands.h"
 #include "apps/progress.h"
-#include "apps/run_outputs.h"
+#include "report/run_outputs.h"
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
@@ -56,7 +56,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
                 {"loads", q.loads ? q.loads->string() : std::string()}};
   j["frame"] = report::frame_summary(r, q);
   if (r.life) j["fatigue"] = report::fatigue_summary(r, q);
-  add_warnings(j, coupling::frame_warnings(r, q));
+  report::add_warnings(j, coupling::frame_warnings(r, q), print_warning);
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();
@@ -84,8 +84,8 @@ int run_frame_response(const FrameResponseOptions& opt) {
                u.label(Quantity::stress), at(rail.peak_normal_stress), 100.0 * rail.bending_share);
   }
   if (!r.rails.empty()) fmt::print("\n");
-  print_hot_spot_line(r, u);
-  print_fatigue_line(r, q);
+  report::print_hot_spot_line(r, u);
+  report::print_fatigue_line(r, q);
   for (const coupling::NodalHistory& h : r.nodal) {
     fmt::print("\n{}: peak displacement {:.5g} {} ({} of node {}), t = {:.4g} s\n", h.spec.name, h.peak_displacement.value * lf, u.label(Quantity::length),
                fem::dof_name(h.peak_displacement.dof), h.peak_displacement.node_id, h.peak_displacement.time);

@@ -59,6 +59,10 @@ void Progress::done() {
   if (announced_ || verbose_) fmt::print(stderr, "framedyn [{:7.2f} s] done\n", end);
 }
 
+void print_warning(const core::Warning& w) {
+  if (!quiet_console()) fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
+}
+
 std::function<void(const std::string&)> Progress::callback() {
   return [this](const std::string& s) { stage(s); };
 }

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "core/warnings.h"
+
 namespace framedyn::apps {
 
 // The --verbose and --quiet flags every command has (they exclude each other).
@@ -29,6 +31,9 @@ struct ProgressFlags {
 // results line (set by a Progress for the whole process; read by main's
 // closing "run time" line and the warnings' printer).
 bool quiet_console();
+
+// Prints a run's warning on stderr as "framedyn: warning [code]: message" (nothing with -q).
+void print_warning(const core::Warning& w);
 
 class Progress {
  public:

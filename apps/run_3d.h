@@ -1,15 +1,13 @@
-// `framedyn run` for 3-D rigid-body studies (model: rigid_3d); see run_3d.cpp.
+// The console of `framedyn run` for 3-D rigid-body studies (model: rigid_3d) and the pipeline; see run_3d.cpp.
 #pragma once
 
 #include <string>
 
-#include "apps/progress.h"
+#include "report/study_run.h"
 
 namespace framedyn::apps {
 
-// Runs a rigid_3d study and writes DIR/summary.json, rigid_modes.csv and, with a
-// response, response.csv, events.csv and frame_loads.csv (the load-history format of
-// coupling/load_history.h). Returns the exit code.
-int run_study_3d(const std::string& study_file, const std::string& out, bool figures, const ProgressFlags& flags);
+// Prints the run's tables (report::run_study_file ran it and wrote `out_dir`). Returns the exit code.
+int print_run_3d(const std::string& study_file, const report::StudyRun& run, bool figures, const std::string& out_dir);
 
 }  // namespace framedyn::apps

@@ -153,6 +153,7 @@ ResultsFolder::ResultsFolder(fs::path target, std::vector<fs::path> inputs) : ta
 }
 
 ResultsFolder::~ResultsFolder() {
+  if (in_memory()) return;
   auto gate = hold_output_gate();
   if (!committed_) {
     std::error_code ec;
@@ -161,10 +162,14 @@ ResultsFolder::~ResultsFolder() {
   unregister_temporary(partial_);
 }
 
-fs::path ResultsFolder::path_of(const std::string& file_name) const { return partial_ / file_name; }
+fs::path ResultsFolder::path_of(const std::string& file_name) const {
+  if (in_memory()) throw std::logic_error("a results folder in memory has no path for " + file_name);
+  return partial_ / file_name;
+}
 
 void ResultsFolder::write_text(const std::string& file_name, const std::string& content) const {
   check_finite_output((target_ / file_name).string(), content);  // no NaN or Inf in any results file
+  if (in_memory()) return;
   const fs::path p = path_of(file_name);
   auto gate = hold_output_gate();
   std::ofstream out(p, std::ios::binary);
@@ -174,6 +179,7 @@ void ResultsFolder::write_text(const std::string& file_name, const std::string& 
 }
 
 void ResultsFolder::commit() {
+  if (in_memory()) return;
   auto gate = hold_output_gate();  // an interrupt waits until the results are in place and the old ones gone
   check_results_target(target_, inputs_);
   std::error_code ec;

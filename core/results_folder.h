@@ -32,6 +32,12 @@ void check_results_target(const std::filesystem::path& target, const std::vector
 class ResultsFolder {
  public:
   explicit ResultsFolder(std::filesystem::path target, std::vector<std::filesystem::path> inputs = {});
+  // A folder that keeps nothing: write_text checks the text and drops it, commit()
+  // does nothing, path_of throws (no figures). For runs whose summary is wanted in
+  // memory only (report/study_run.h: design studies run thousands of them).
+  struct InMemory {};
+  explicit ResultsFolder(InMemory) {}
+  bool in_memory() const { return partial_.empty(); }
   ~ResultsFolder();  // removes the partial folder unless committed
   ResultsFolder(const ResultsFolder&) = delete;
   ResultsFolder& operator=(const ResultsFolder&) = delete;

@@ -2,7 +2,7 @@
 // the figures behind it (each a named value with its unit, in the study's
 // units). The library collects them in its results; the command line writes
 // them to summary.json's top-level `warnings` list and to stderr
-// (apps/run_outputs.h, add_warnings). docs/user-guide.md, "Warnings".
+// (report/run_outputs.h, add_warnings). docs/user-guide.md, "Warnings".
 #pragma once
 
 #include <string>

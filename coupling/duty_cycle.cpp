@@ -11,8 +11,9 @@
 
 namespace framedyn::coupling {
 
-DutyCycleRequest read_duty_cycle(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+DutyCycleRequest read_duty_cycle(const std::string& file) { return read_duty_cycle(load_yaml_file(file), file); }
+
+DutyCycleRequest read_duty_cycle(const YAML::Node& doc, const std::string& file) {
   const core::UnitSystem si = core::UnitSystem::si();
   YamlMap top(doc, "", file, &si);
   top.allow_only({"framedyn_study", "name", "model", "units", "scenarios", "fatigue"});

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+namespace YAML { class Node; }
+
 #include "coupling/frame_fatigue.h"
 #include "coupling/frame_study.h"
 
@@ -39,6 +41,8 @@ struct DutyCycleRequest {
 
 // Throws core::InputError (STUDY-123, STUDY-124; the fatigue block's STUDY-114 .. STUDY-119).
 DutyCycleRequest read_duty_cycle(const std::string& file);
+// The same from a parsed document; `file` names it in messages and anchors the scenarios' paths.
+DutyCycleRequest read_duty_cycle(const YAML::Node& doc, const std::string& file);
 
 struct DutyCycleScenarioResult {
   std::string name;

@@ -128,8 +128,9 @@ void set_parameter(rigid::Machine2DParameters& p, const std::string& name, doubl
   *slot = value;
 }
 
-RigidStudy read_rigid_study(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study(load_yaml_file(file), file); }
+
+RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) {
   {
     // The model first: another model's keys would otherwise be reported as unknown.
     core::UnitSystem si = core::UnitSystem::si();

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "core/error.h"
+
+namespace YAML { class Node; }
 #include "core/units.h"
 #include "coupling/contact_report.h"
 #include "coupling/static_report.h"
@@ -98,6 +100,8 @@ struct RigidStudy {
 
 // Throws core::InputError naming the file, line and key path.
 RigidStudy read_rigid_study(const std::string& file);
+// The same from a parsed document; `file` names it in messages and anchors relative paths.
+RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file);
 
 // One recovered time history with its unit.
 struct Series {

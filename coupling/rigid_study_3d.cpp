@@ -131,8 +131,9 @@ void read_part_mounts(const YamlMap& a, StudyFramePart& sp) {
 
 }  // namespace
 
-std::string study_model(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+std::string study_model(const std::string& file) { return study_model(load_yaml_file(file), file); }
+
+std::string study_model(const YAML::Node& doc, const std::string& file) {
   core::UnitSystem si = core::UnitSystem::si();
   return YamlMap(doc, "", file, &si).text("model");
 }
@@ -229,8 +230,9 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
   *s = value;
 }
 
-RigidStudy3D read_rigid_study_3d(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+RigidStudy3D read_rigid_study_3d(const std::string& file) { return read_rigid_study_3d(load_yaml_file(file), file); }
+
+RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file) {
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
                                                           "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"});
   RigidStudy3D s;

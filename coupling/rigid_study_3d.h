@@ -27,6 +27,7 @@ namespace framedyn::coupling {
 // The `model:` key of a study file ("rigid_2d", "rigid_3d", ...); throws
 // core::InputError if the file cannot be read or has no such key.
 std::string study_model(const std::string& file);
+std::string study_model(const YAML::Node& doc, const std::string& file);  // of a parsed document
 
 struct RigidStudy3D {
   std::string file;
@@ -44,6 +45,8 @@ struct RigidStudy3D {
 };
 
 RigidStudy3D read_rigid_study_3d(const std::string& file);
+// The same from a parsed document; `file` names it in messages and anchors relative paths.
+RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file);
 
 // Parameters a 3-D calibration may adjust (SI values). Names:
 //   tires.<front|rear>.<vertical|longitudinal|lateral>.stiffness  (both tires of the axle)

@@ -92,7 +92,16 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
       figure_files.push_back("frame_life.png");
     }
   }
-  // summary.json
+  folder.write_text("summary.json", duty_cycle_summary(file, q, r).dump(2) + "\n");
+  return figure_files;
+}
+
+ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCycleRequest& q, const coupling::DutyCycleResults& r) {
+  const coupling::DutyCycleScenarioResult& first = r.scenarios.front();
+  const coupling::StressHistories& h = first.frame.stress;
+  const core::UnitSystem& u = first.request.units;
+  const coupling::DutyLife& life = r.life;
+  const std::string L = u.label(Quantity::length);
   ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
   j["input"] = {{"study", file}, {"name", q.name}, {"model", "duty_cycle"}};
@@ -155,8 +164,7 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
   }
   fat["worst_locations"] = worst;
   j["fatigue"] = fat;
-  folder.write_text("summary.json", j.dump(2) + "\n");
-  return figure_files;
+  return j;
 }
 
 }  // namespace framedyn::report

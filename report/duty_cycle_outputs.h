@@ -6,6 +6,8 @@
 // where.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -18,7 +20,10 @@ namespace framedyn::report {
 // How many locations (station, section point) with damage each scenario dominates.
 std::vector<std::size_t> locations_dominated(const coupling::DutyLife& life, std::size_t scenarios);
 
-// Writes every output of the cycle into `folder` (not committed); returns the figures written.
+// summary.json's content: input, fatigue {code, min_life, scenarios, worst_locations, ...}.
+nlohmann::ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCycleRequest& q, const coupling::DutyCycleResults& r);
+
+// Writes every output of the cycle into `folder` (not committed), summary.json included; returns the figures written.
 std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const coupling::DutyCycleRequest& q, const coupling::DutyCycleResults& r,
                                                   bool figures, core::ResultsFolder& folder);
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -18,7 +19,7 @@
 #include "coupling/frame_study.h"
 #include "coupling/steady_report.h"
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 // rigid.contacts: one entry per contact, forces in the study's units.
 nlohmann::ordered_json contacts_json(const std::vector<coupling::ContactSummary>& contacts, const core::UnitSystem& units);
@@ -48,8 +49,9 @@ nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& fram
                                          const core::UnitSystem& units);
 
 // Appends the warnings to summary["warnings"] (created if absent, so that any
-// stage of a run may add its own) and prints each on stderr as
-// "framedyn: warning [code]: message".
-void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings);
+// stage of a run may add its own) and hands each to `console` (apps/ prints it
+// on stderr as "framedyn: warning [code]: message"; a batch run prints nothing).
+void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings,
+                  const std::function<void(const core::Warning&)>& console = {});
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

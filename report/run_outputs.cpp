@@ -1,14 +1,13 @@
 // rigid.contacts and the warnings list of summary.json: see run_outputs.h.
-#include "apps/run_outputs.h"
+#include "report/run_outputs.h"
 
-#include "apps/progress.h"
 #include "report/json_quantity.h"
 
 #include <fmt/format.h>
 
 #include <cstdio>
 
-namespace framedyn::apps {
+namespace framedyn::report {
 
 nlohmann::ordered_json contacts_json(const std::vector<coupling::ContactSummary>& contacts, const core::UnitSystem& units) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
@@ -125,7 +124,7 @@ nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& fram
   return j;
 }
 
-void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings) {
+void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings, const std::function<void(const core::Warning&)>& console) {
   if (!summary.contains("warnings")) summary["warnings"] = nlohmann::ordered_json::array();
   for (const core::Warning& w : warnings) {
     nlohmann::ordered_json jw = {{"code", w.code}, {"message", w.message}};
@@ -135,8 +134,8 @@ void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warni
       jw["figures"] = figures;
     }
     summary["warnings"].push_back(jw);
-    if (!quiet_console()) fmt::print(stderr, "framedyn: warning [{}]: {}\n", w.code, w.message);
+    if (console) console(w);
   }
 }
 
-}  // namespace framedyn::apps
+}  // namespace framedyn::report

@@ -1,0 +1,59 @@
+// Runs any study document in memory and returns its summary: the one library
+// call behind `framedyn run` (model rigid_2d; rigid_3d with and without the
+// frame_response block, i.e. the pipeline; duty_cycle) and behind design
+// studies (`framedyn batch`) and the Python binding, which need a run's
+// summary without a results folder. The summary is the content of
+// summary.json (nlohmann ordered JSON, every number {value, unit}; written with
+// dump(2) plus a newline it is summary.json byte for byte). With `out` the
+// results folder is written as `framedyn run --out` writes it
+// (core/results_folder: whole or nothing, never a file framedyn did not write).
+// docs/user-guide.md, "summary.json".
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/warnings.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace framedyn::report {
+
+struct StudyRunOptions {
+  // Write the results folder here (the files `framedyn run --out` writes); none:
+  // the summary only, in memory, and no file is written at all.
+  std::optional<std::filesystem::path> out;
+  bool figures = false;  // PNG figures (needs `out` and gnuplot)
+  // Progress: a stage begins ("reading ...", "modes and forced response", ...); a stage's loop advances.
+  std::function<void(const std::string&)> stage;
+  std::function<void(int, int)> step;
+  // Each warning as it joins the summary's `warnings` list (the console prints it).
+  std::function<void(const core::Warning&)> warning;
+};
+
+struct StudyRunDetails;  // the typed study and results, for the console (report/study_run_details.h)
+
+struct StudyRun {
+  std::string model;               // rigid_2d, rigid_3d or duty_cycle
+  nlohmann::ordered_json summary;  // summary.json's content
+  std::vector<std::string> figures;  // PNG files written (with figures)
+  std::shared_ptr<const StudyRunDetails> details;
+};
+
+// Runs the study `doc` (parsed; not modified). `file` names it in messages and
+// in summary.input.study and anchors its relative paths (meshes, scenarios).
+// Throws core::InputError on a bad study or a refused `out`, core::NumericalError
+// on a failed solution.
+StudyRun run_study_document(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options = {});
+// The same for a study file (reads it; a duplicated key or bad YAML is an InputError).
+StudyRun run_study_file(const std::filesystem::path& file, const StudyRunOptions& options = {});
+
+}  // namespace framedyn::report
