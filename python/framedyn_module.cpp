@@ -299,6 +299,8 @@ RainflowResult count(const py::array_t<double, py::array::c_style | py::array::f
 
 }  // namespace
 
+void bind_studies(py::module_& m);  // framedyn_study.cpp
+
 PYBIND11_MODULE(_framedyn, m) {
   // The extension and the libraries it links must have been compiled alike (core/build_info.h).
   if (std::strcmp(FRAMEDYN_BUILD_SIGNATURE, core::library_build_signature()) != 0)
@@ -399,4 +401,5 @@ PYBIND11_MODULE(_framedyn, m) {
         "Linear static response, as `framedyn static`: a StaticResult, or a list of them (one per step) for a deck with several static steps");
   m.def("rainflow", &count, py::arg("history"), py::arg("unit") = "MPa", py::arg("sn") = py::none(), py::arg("repeat") = false,
         "Rainflow counting of a stress history in `unit`; with an S-N curve (sn, as --sn: FAT90, EN71, ...) its Miner damage");
+  bind_studies(m);
 }

@@ -37,7 +37,8 @@ def _check_processor():
 _check_processor()
 
 from ._framedyn import (  # noqa: E402  (after the processor check, on purpose)
-    Error, Mesh, ModesResult, StaticResult, RainflowResult, build_signature, read_mesh, modes, static, rainflow)
+    Error, Mesh, ModesResult, StaticResult, RainflowResult, Study, Results, build_signature, read_mesh, modes, static,
+    rainflow, load_study, batch)
 
-__all__ = ["Error", "Mesh", "ModesResult", "StaticResult", "RainflowResult", "build_signature", "read_mesh", "modes",
-           "static", "rainflow"]
+__all__ = ["Error", "Mesh", "ModesResult", "StaticResult", "RainflowResult", "Study", "Results", "build_signature",
+           "read_mesh", "modes", "static", "rainflow", "load_study", "batch"]

@@ -2,12 +2,14 @@
 Debian's python3 and pytest (tests/CMakeLists.txt: PythonModule, labels python and fast).
 
 Checks: results equal the framedyn program's for the same input (modes, a static case,
-a rainflow count); arrays have the documented shapes and units and agree with closed
+a rainflow count, a study's summary.json); a parameter set from Python equals the same
+study edited as YAML; batch gives one row per sample; arrays have the documented shapes and units and agree with closed
 forms nobody tuned (a cantilever's bending frequencies and tip deflection, ASTM E1049's
 worked example); bad input raises framedyn.Error with framedyn's own message, file, line
 and key; a solve releases the GIL (a counter thread runs during it); the example runs.
 """
 import csv
+import json
 import math
 import os
 import subprocess
@@ -155,7 +157,6 @@ def test_rainflow_counts_astm_e1049_fig6_and_equals_the_command_line(tmp_path):
     d = framedyn.rainflow(20 * history, unit="MPa", sn="FAT90")
     run = run_cli("rainflow", str(series), "--sn", "FAT90", "-o", str(tmp_path / "rf"), "-q", cwd=tmp_path)
     assert run.returncode == 0, run.stderr
-    import json
     summary = json.loads((tmp_path / "rf" / "summary.json").read_text())
     damage = summary["fatigue"]["damage"]
     assert d.damage == pytest.approx(damage["value"] if isinstance(damage, dict) else damage, rel=1e-9)
@@ -216,3 +217,123 @@ def test_a_solve_does_not_block_another_python_thread(tmp_path):
         sys.setswitchinterval(interval)
     print("main-thread wake-ups during the solve:", counted)
     assert counted > 0
+
+
+# ------------------------------------------------------------------ studies
+
+PLOW_2D = os.path.join(SOURCE_DIR, "examples", "r100_plow_2d.yaml")
+
+
+def short_copy(tmp_path, name="study.yaml", replace=()):
+    """examples/r100_plow_2d.yaml with 0.1 s of plowing (and the given text edits) in tmp_path."""
+    text = open(PLOW_2D).read().replace("response: {duration: 0.5,", "response: {duration: 0.1,")
+    for old, new in replace:
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def test_study_summary_equals_the_command_lines_summary_json(tmp_path):
+    path = short_copy(tmp_path)
+    r = framedyn.load_study(path).run()
+    run = run_cli("run", path, "-o", str(tmp_path / "cli"), "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    with open(tmp_path / "cli" / "summary.json") as f:
+        assert r.summary == json.load(f)
+    # The series have the documented shapes and units.
+    n = len(r.time)
+    assert n > 100 and r.units["time"] == "s"
+    assert all(len(v) == n for v in r.coordinates.values())
+    assert set(r.coordinates) == set(r.summary["rigid"]["coordinates"])
+    assert all(len(v) == n for v in r.frame_loads.values()) and r.frame_loads
+    assert r.units[next(iter(r.frame_loads))] == "lbf"
+    assert r.rail_stress and r.units[next(iter(r.rail_stress))] == "psi"
+
+
+def test_a_parameter_set_from_python_equals_the_study_edited_as_yaml(tmp_path):
+    study = framedyn.load_study(short_copy(tmp_path))
+    study.set("soil.damping", 450)
+    study.set("analysis.response.output_interval", 0.001)
+    r = study.run()
+    edited = tmp_path / "edited"
+    edited.mkdir()
+    path = short_copy(edited, replace=[("damping: 300,", "damping: 450,"), ("output_interval: 0.0005", "output_interval: 0.001")])
+    run = run_cli("run", path, "-o", str(tmp_path / "cli"), "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    with open(tmp_path / "cli" / "summary.json") as f:
+        cli = json.load(f)
+    assert r.summary["input"].pop("study") != cli["input"].pop("study")  # the two files' names
+    assert r.summary == cli
+
+
+def test_key_path_errors_name_the_file_line_and_key(tmp_path):
+    path = short_copy(tmp_path)
+    study = framedyn.load_study(path)
+    with pytest.raises(framedyn.Error) as caught:
+        study.set("soil.dampng", 1)
+    e = caught.value
+    assert e.file == path and e.line > 0 and e.key == "soil.dampng"
+    with pytest.raises(framedyn.Error) as caught:
+        study.set("name", 1)
+    assert "a number there" in str(caught.value)
+
+
+def test_batch_tabulates_one_row_per_sample(tmp_path):
+    study = framedyn.load_study(short_copy(tmp_path))
+    samples = [{"soil.damping": d} for d in (200, 300)]
+    table = framedyn.batch(study, samples)
+    assert list(table["soil.damping"]) == [200, 300]
+    assert list(table["error"]) == ["", ""]
+    single = framedyn.load_study(short_copy(tmp_path))
+    single.set("soil.damping", 300)
+    response = single.run().summary["rigid"]["response"]
+    assert table["rigid.response.peak_cutting_force [lbf]"][1] == response["peak_cutting_force"]["value"]
+    assert table["rigid.response.steps"][1] == response["steps"]
+    assert table["rigid.response.peak_cutting_force [lbf]"][0] != table["rigid.response.peak_cutting_force [lbf]"][1]
+
+
+def test_the_example_script_runs_and_writes_its_figure(tmp_path):
+    out = tmp_path / "offset_plowing.png"
+    run = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "examples", "python", "offset_plowing.py"),
+                          "--duration", "0.2", "--out", str(out)], capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "peak" in run.stdout
+
+
+# docs/errors.md, "Python module": each row's call on examples/r100_plow_2d.yaml saved as study.yaml
+# gives the row's message word for word, and the table's IDs are exactly these.
+ERROR_CASES = {
+    "PY-01": lambda s: s.set("soil.dampng", 450),
+    "PY-02": lambda s: s.set("frame_output.points[99]", 1),
+    "PY-03": lambda s: s.set("name", 1),
+    "PY-04": lambda s: s.set("soil..damping", 1),
+    "PY-05": lambda s: s.set("soil.damping", float("nan")),
+}
+
+
+def python_error_rows():
+    rows, inside = {}, False
+    with open(os.path.join(SOURCE_DIR, "docs", "errors.md")) as f:
+        for line in f:
+            if line.startswith("## "):
+                inside = line.startswith("## Python module")
+            elif inside and line.startswith("| PY-"):
+                cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+                rows[cells[0]] = cells[-1].strip("`")
+    return rows
+
+
+def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
+    rows = python_error_rows()
+    assert sorted(rows) == sorted(ERROR_CASES)
+    monkeypatch.chdir(tmp_path)
+    short_copy(tmp_path)
+    for error_id, case in ERROR_CASES.items():
+        study = framedyn.load_study("study.yaml")
+        with pytest.raises(framedyn.Error) as caught:
+            case(study)
+        assert str(caught.value) == rows[error_id], error_id
+        assert caught.value.file == "study.yaml" and caught.value.key
