@@ -1,4 +1,4 @@
-"""framedyn from Python: meshes, modes, static response, rainflow counting (issue 20).
+"""framedyn from Python: meshes, modes, static response, rainflow counting, studies run in memory (issue 20).
 
 The functions are those of the framedyn program, computed by the same C++
 libraries (the extension _framedyn links them), and return numpy arrays in the

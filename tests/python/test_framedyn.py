@@ -297,7 +297,7 @@ def test_batch_tabulates_one_row_per_sample(tmp_path):
 def test_the_example_script_runs_and_writes_its_figure(tmp_path):
     out = tmp_path / "offset_plowing.png"
     run = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "examples", "python", "offset_plowing.py"),
-                          "--duration", "0.2", "--out", str(out)], capture_output=True, text=True, cwd=tmp_path)
+                          "--duration", "0.05", "--out", str(out)], capture_output=True, text=True, cwd=tmp_path)
     assert run.returncode == 0, run.stderr
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert "peak" in run.stdout
