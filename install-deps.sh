@@ -9,6 +9,9 @@
 # libopenmpi-dev + openmpi-bin (Debian's Open MPI): the MPI engine of `framedyn batch` (FRAMEDYN_MPI);
 # clang with its runtime (libFuzzer, sanitizers) and its OpenMP (SUNDIALS's CMake
 # package asks for OpenMP) builds the fuzz harnesses of tests/fuzz.
+# pybind11-dev, python3-dev and python3-numpy build the Python module (python/),
+# python3-pytest runs its tests, python3-matplotlib draws the figure of
+# examples/python/offset_plowing.py (Debian's /usr/bin/python3 is the interpreter).
 set -euo pipefail
 packages=(
   g++ make cmake pkg-config
@@ -21,6 +24,7 @@ packages=(
   paraview python3-paraview
   clang libclang-rt-14-dev libomp-dev
   libopenmpi-dev openmpi-bin
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

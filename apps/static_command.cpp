@@ -42,16 +42,8 @@ int run_static(const StaticOptions& opt) {
   // A deck with several static steps: one load case per step (docs/theory/fem.md section 18).
   std::vector<fem::FrameModel> cases;
   std::vector<int> step_numbers;
-  for (std::size_t i = 0; i < model.steps.size(); ++i)
-    if (model.steps[i].procedure == "STATIC") cases.push_back(fem::with_step(model, i)), step_numbers.push_back(model.steps[i].number);
+  for (fem::StaticLoadCase& c : fem::static_load_cases(model, opt.mesh.path)) cases.push_back(std::move(c.model)), step_numbers.push_back(c.step);
   const bool several = cases.size() > 1;
-  if (!several) cases = {model}, step_numbers = {0};
-  for (std::size_t c = 0; c < cases.size(); ++c)
-    if (cases[c].loads.empty() && cases[c].element_loads.empty())
-      throw core::InputError({opt.mesh.path, 0, "*CLOAD"},
-                             "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis" +
-                                 (several ? fmt::format(" in every static step") : std::string()),
-                             several ? fmt::format("none in step {}", step_numbers[c]) : std::string("none"));
   fem::StaticOptions so;
   so.inertia_relief = opt.inertia_relief;
   std::vector<fem::StaticResult> results;

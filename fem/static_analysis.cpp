@@ -190,4 +190,19 @@ std::vector<StaticResult> solve_static_cases(const std::vector<FrameModel>& case
   return out;
 }
 
+std::vector<StaticLoadCase> static_load_cases(const FrameModel& model, const std::string& source) {
+  std::vector<StaticLoadCase> cases;
+  for (std::size_t i = 0; i < model.steps.size(); ++i)
+    if (model.steps[i].procedure == "STATIC") cases.push_back({with_step(model, i), model.steps[i].number});
+  const bool several = cases.size() > 1;
+  if (!several) cases = {{model, 0}};
+  for (const StaticLoadCase& c : cases)
+    if (c.model.loads.empty() && c.model.element_loads.empty())
+      throw core::InputError({source, 0, "*CLOAD"},
+                             "at least one nodal load (*CLOAD) or distributed load (*DLOAD) for a static analysis" +
+                                 (several ? std::string(" in every static step") : std::string()),
+                             several ? "none in step " + std::to_string(c.step) : std::string("none"));
+  return cases;
+}
+
 }  // namespace framedyn::fem

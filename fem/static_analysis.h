@@ -62,4 +62,13 @@ StaticResult solve_static(const FrameModel& model, const std::function<void(cons
 std::vector<StaticResult> solve_static_cases(const std::vector<FrameModel>& cases, const std::function<void(const std::string&)>& progress = {},
                                              const StaticOptions& options = {}, int* factorisations = nullptr);
 
+// The load cases of `framedyn static`: one per static step of a multi-step deck
+// (with_step; docs/theory/fem.md section 18), else the model itself (step 0).
+// Throws core::InputError naming `source` and *CLOAD when a case has no load.
+struct StaticLoadCase {
+  FrameModel model;
+  int step = 0;  // the step's number; 0 for a deck with one static case
+};
+std::vector<StaticLoadCase> static_load_cases(const FrameModel& model, const std::string& source);
+
 }  // namespace framedyn::fem
