@@ -166,7 +166,7 @@ int run_study_3d(const std::string& study_file, const std::string& out, bool fig
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = study.fixed_coordinates;
   rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
-  rigid["modes_state"] = coupling::contact_state_name(rigid::Machine2D::ModalSoil::cutting);  // the contact state rigid.modes is in
+  rigid["modes_state"] = coupling::contact_state_name(rigid::ModalSoil::cutting);  // the contact state rigid.modes is in
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
   rigid["static"] = static_json(r.static_contacts, u);
 
