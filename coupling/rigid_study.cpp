@@ -128,8 +128,15 @@ void set_parameter(rigid::Machine2DParameters& p, const std::string& name, doubl
   *slot = value;
 }
 
-RigidStudy read_rigid_study(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+namespace {
+// The study in an already-parsed document; `file` names it in messages.
+RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file);
+}  // namespace
+
+RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study_document(load_yaml_file(file), file); }
+
+namespace {
+RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file) {
   {
     // The model first: another model's keys would otherwise be reported as unknown.
     core::UnitSystem si = core::UnitSystem::si();
@@ -269,6 +276,7 @@ RigidStudy read_rigid_study(const std::string& file) {
   check_machine(p, s.fixed_coordinates, root, file);
   return s;
 }
+}  // namespace
 
 RigidResults run_rigid_study(const RigidStudy& study_in) {
   RigidStudy study = study_in;

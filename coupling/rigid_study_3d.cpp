@@ -229,8 +229,15 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
   *s = value;
 }
 
-RigidStudy3D read_rigid_study_3d(const std::string& file) {
-  const YAML::Node doc = load_yaml_file(file);
+namespace {
+// The study in an already-parsed document; `file` names it in messages.
+RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file);
+}  // namespace
+
+RigidStudy3D read_rigid_study_3d(const std::string& file) { return read_rigid_study_3d_document(load_yaml_file(file), file); }
+
+namespace {
+RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file) {
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
                                                           "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"});
   RigidStudy3D s;
@@ -408,6 +415,7 @@ RigidStudy3D read_rigid_study_3d(const std::string& file) {
   check_machine(p, s.fixed_coordinates, root, file);
   return s;
 }
+}  // namespace
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   RigidStudy3D study = study_in;

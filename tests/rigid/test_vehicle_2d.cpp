@@ -1237,8 +1237,8 @@ TEST(ChainForce, FrameFreeBodyBalancesAtSamplesAHairBeforeToothCountChanges) {
   o.end_time = 5.5 * tpch;
   const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, zero, zero, o);
   ASSERT_EQ(tr.time.size(), 7u);  // 0, TPCH - ulp, ..., 5 (TPCH - ulp) and the end time
-  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(m, tr);
-  const coupling::StressResultants sr = coupling::frame_stress_resultants(m, tr, loads, {10.0});  // behind everything
+  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(m, p, m_run, tr);
+  const coupling::StressResultants sr = coupling::frame_stress_resultants(m, p.frame, tr, loads, {10.0});  // behind everything
   double scale = 0.0;
   for (const auto& l : loads)
     for (const auto& f : l.force) scale = std::max(scale, f.norm());

@@ -903,7 +903,7 @@ void check_frame_balance(rigid::Machine3DParameters p, const char* label) {
   o.absolute_tolerance = 1e-12;
   o.velocity_scale = 100.0;
   const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, zero, zero, o);
-  const coupling::FrameLoads3D loads = coupling::frame_loads_3d(m, tr);
+  const coupling::FrameLoads3D loads = coupling::frame_loads_3d(m, p, m_run, tr);
   ASSERT_EQ(loads.points.points.size(), 8u);
   const rigid::Body& frame = m.multibody.bodies()[static_cast<std::size_t>(m.frame_body)];
   const Vector3d cg = rigid::combine(p.frame.parts, "frame").cg;
