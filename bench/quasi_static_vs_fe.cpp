@@ -283,7 +283,7 @@ int main(int argc, char** argv) {
   fmt::print("{:>6} {:>5} | {:>9} {:>9} | {:>9} {:>9} {:>9} {:>9} | {:>9} {:>9} {:>9} {:>6} {:>9} | {:>6}\n", "X", "q", "2D mean", "2D full",
              "2D FEld", "2D mnt", "2D tube", "2D plow", "3D cut", "FE stat", "FE dyn", "lag", "FE free", "dyn/st");
   std::map<double, std::map<std::string, Series>> keep;
-  const framedyn::rigid::Machine2D machine2(s2.machine);
+  const framedyn::rigid::VehicleModel model2 = framedyn::rigid::build_vehicle_model(s2.machine);
   double max_dev_2d = 0;
   for (double xin : cuts_in) {
     const double x = xin * kIn;
@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
       const Cut all = cut_2d(r2.frame_loads, i, x, nullptr), fe = cut_2d(r2.frame_loads, i, x, &fe_carried),
                    mnt = cut_2d(r2.frame_loads, i, x, &mounted);
       // Eq. 2.47 at X: the loads in front and the tube's distributed inertia in front (as frame_stress_resultants).
-      const c::SectionLoad d = c::tube_inertia_in_front(machine2, r2.trajectory.a[i], x, 0.0);
+      const c::SectionLoad d = c::tube_inertia_in_front(model2, s2.machine.frame, r2.trajectory.a[i], x, 0.0);
       const double full_srx = all.srx - d.force.x(), full_srmy = all.srmy + d.moment;
       if (it != sr.output_x.end()) {  // the study's own output agrees
         const std::size_t k = static_cast<std::size_t>(it - sr.output_x.begin());

@@ -33,6 +33,8 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/rigid_study_3d.h"
 #include "rigid/machine_3d.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 #include "rigid/time_integration.h"
 
 using namespace framedyn;
@@ -56,9 +58,10 @@ struct Method {
   std::string label() const { return rk4 ? fmt::format("RK4, h = {:g} s", value) : fmt::format("event-located, rtol {:g}", value); }
 };
 
-rigid::Trajectory integrate(rigid::Machine3D& m, const Method& method, const coupling::ResponseRequest& req) {
+rigid::VehicleRun integrate(const rigid::VehicleModel& m, const Method& method, const coupling::ResponseRequest& req) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRun run{rigid::start_run(m, 0.0, zero), {}};
+  rigid::VehicleDynamics dynamics(m, run.state);
   rigid::IntegrationOptions o;
   o.end_time = req.duration;
   o.output_interval = req.output_interval;
@@ -66,7 +69,8 @@ rigid::Trajectory integrate(rigid::Machine3D& m, const Method& method, const cou
   o.absolute_tolerance = 1e-12;  // as coupling::run_rigid_study_3d
   o.velocity_scale = 100.0;
   o.max_steps = 100000000;
-  return method.rk4 ? rigid::integrate_rk4(m, zero, zero, method.value, o) : rigid::integrate_event_located(m, zero, zero, o);
+  run.trajectory = method.rk4 ? rigid::integrate_rk4(dynamics, zero, zero, method.value, o) : rigid::integrate_event_located(dynamics, zero, zero, o);
+  return run;
 }
 
 // CPU time of one run, from a block of repeated runs at least min_cpu long.
@@ -154,14 +158,13 @@ void benchmark(const std::string& what, const std::string& file, double thesis_s
   const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(file);
   if (!study.response) throw std::invalid_argument(file + " has no analysis.response");
   const coupling::ResponseRequest& req = *study.response;
-  rigid::Machine3D m(study.machine);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
   const Method el{false, req.relative_tolerance}, rk{true, thesis_step}, reference{false, 1e-11};
-  const rigid::Trajectory tr_ref = integrate(m, reference, req);
-  const coupling::FrameLoads3D loads_ref = coupling::frame_loads_3d(m, tr_ref);
-  const rigid::Trajectory tr_el = integrate(m, el, req);
-  const coupling::FrameLoads3D loads_el = coupling::frame_loads_3d(m, tr_el);
-  const rigid::Trajectory tr_rk = integrate(m, rk, req);
-  const coupling::FrameLoads3D loads_rk = coupling::frame_loads_3d(m, tr_rk);
+  const rigid::VehicleRun run_ref = integrate(m, reference, req), run_el = integrate(m, el, req), run_rk = integrate(m, rk, req);
+  const rigid::Trajectory &tr_ref = run_ref.trajectory, &tr_el = run_el.trajectory, &tr_rk = run_rk.trajectory;
+  const coupling::FrameLoads3D loads_ref = coupling::frame_loads_3d(m, study.machine, run_ref.state, tr_ref);
+  const coupling::FrameLoads3D loads_el = coupling::frame_loads_3d(m, study.machine, run_el.state, tr_el);
+  const coupling::FrameLoads3D loads_rk = coupling::frame_loads_3d(m, study.machine, run_rk.state, tr_rk);
   const LoadDifference d_el = compare_loads(loads_el, loads_ref, kSettled), d_rk = compare_loads(loads_rk, loads_ref, kSettled);
   const PairTiming t = time_pair([&] { (void)integrate(m, el, req); }, [&] { (void)integrate(m, rk, req); });
   const std::string dofs = fmt::format("{} DOF", m.size());

@@ -46,6 +46,8 @@
 #include "coupling/rigid_study.h"
 #include "rigid/machine_2d.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 using namespace framedyn;
 
@@ -96,30 +98,34 @@ rigid::IntegrationOptions options(double interval, double rtol) {
 }
 
 // Integrates only (what the benchmark times).
-rigid::Trajectory integrate(rigid::Machine2D& m, const Method& method, double interval) {
+rigid::VehicleRun integrate(const rigid::VehicleModel& m, const Method& method, double interval) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRun run{rigid::start_run(m, 0.0, zero), {}};
+  rigid::VehicleDynamics dynamics(m, run.state);
   const rigid::IntegrationOptions o = options(interval, method.rk4 ? 1e-8 : method.value);
-  return method.rk4 ? rigid::integrate_rk4(m, zero, zero, method.value, o) : rigid::integrate_event_located(m, zero, zero, o);
+  run.trajectory = method.rk4 ? rigid::integrate_rk4(dynamics, zero, zero, method.value, o) : rigid::integrate_event_located(dynamics, zero, zero, o);
+  return run;
 }
 
-Response respond(rigid::Machine2D& m, const Method& method, double interval) {
-  const rigid::Trajectory tr = integrate(m, method, interval);
+Response respond(const rigid::VehicleModel& m, const rigid::Machine2DParameters& p, const Method& method, double interval) {
+  const rigid::VehicleRun run = integrate(m, method, interval);
+  const rigid::Trajectory& tr = run.trajectory;
   Response r;
   r.interval = interval;
   r.steps = tr.steps;
   r.rhs = tr.rhs_evaluations;
-  const auto& history = m.soil_history();
+  const auto& history = run.state.soil.history();
   for (std::size_t i = 1; i < history.size(); ++i) r.switches.push_back({history[i].time, history[i].cutting});
-  const rigid::Jacobian& j = m.model().points()[static_cast<std::size_t>(m.blade_point())].displacement;
-  const double vs = m.parameters().forward_speed * std::cos(m.parameters().ground_slope);
+  const rigid::Jacobian& j = m.multibody.points()[static_cast<std::size_t>(m.blade_point)].displacement;
+  const double vs = p.forward_speed * std::cos(p.ground_slope);
   for (std::size_t i = 0; i < tr.time.size(); ++i) {
     const Eigen::Vector3d d = j * tr.q[i];
     r.time.push_back(tr.time[i]);
     r.blade_z.push_back(d(2));
-    const Eigen::Vector2d f = m.plow_force(tr.time[i], tr.q[i], tr.v[i]);
+    const Eigen::Vector3d f3 = rigid::plow_force(m, run.state, tr.time[i], tr.q[i], tr.v[i]);
+    const Eigen::Vector2d f(f3.x(), f3.z());
     r.force.push_back(f.x() < 0 ? f.norm() : -f.norm());
-    const rigid::Machine2D::SoilState s = m.soil_state_at(tr.time[i]);
+    const rigid::SoilState s = rigid::soil_state_at(run.state, tr.time[i]);
     if (!s.cutting) r.penetration = std::max(r.penetration, s.line + vs * (tr.time[i] - s.time) - d(0));
   }
   return r;
@@ -214,13 +220,13 @@ double rk4_limit(std::complex<double> lambda) {
   return h;
 }
 
-Eigen::VectorXcd first_order_eigenvalues(const rigid::Machine2D& m) {
+Eigen::VectorXcd first_order_eigenvalues(const rigid::VehicleModel& m) {
   const int n = m.size();
-  const Eigen::MatrixXd mi = m.mass_matrix().inverse();
+  const Eigen::MatrixXd mi = m.m.inverse();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
   a.topRightCorner(n, n).setIdentity();
-  a.bottomLeftCorner(n, n) = -mi * m.stiffness_matrix();
-  a.bottomRightCorner(n, n) = -mi * m.damping_matrix();
+  a.bottomLeftCorner(n, n) = -mi * m.k_full;
+  a.bottomRightCorner(n, n) = -mi * m.c_full;
   return Eigen::EigenSolver<Eigen::MatrixXd>(a).eigenvalues();
 }
 
@@ -233,7 +239,7 @@ void print_stability(const rigid::Machine2DParameters& p) {
       q.soil.stiffness *= p.soil.stiffness_reduction;
       q.soil.damping *= p.soil.damping_reduction;
     }
-    const rigid::Machine2D m(q);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(q);
     const Eigen::VectorXcd ev = first_order_eigenvalues(m);
     std::complex<double> fastest = 0.0;
     double limit = 1e300, worst = 0.0;
@@ -264,13 +270,13 @@ void print_switch_list(const std::vector<Switch>& s) {
 }
 
 void convergence(const std::string& title, const rigid::Machine2DParameters& p) {
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const double shaker = p.plow.shaker_frequency;
-  const Response ref = respond(m, {false, kReferenceRtol}, kFine);
+  const Response ref = respond(m, p, {false, kReferenceRtol}, kFine);
   fmt::print("\n### {}\n\n", title);
   print_switch_list(ref.switches);
   // The reference's own error: against rtol 1e-12.
-  const Response tighter = respond(m, {false, 1e-12}, kFine);
+  const Response tighter = respond(m, p, {false, 1e-12}, kFine);
   const Response ref_out = subsample(ref, kOutput);
   const double ref_peak = peak_force(ref_out), ref_pp = average_peak_to_peak(ref_out, shaker);
   fmt::print(
@@ -296,7 +302,7 @@ void convergence(const std::string& title, const rigid::Machine2DParameters& p) 
     const double interval = method.rk4 ? std::max(kOutput, method.value) : kOutput;
     std::string row = fmt::format("| {}{} ", method.label(), interval != kOutput ? " (samples every 0.005 s)" : "");
     try {
-      const Response r = respond(m, method, interval);
+      const Response r = respond(m, p, method, interval);
       const Response ref_here = subsample(ref, interval);  // same sample times
       const double pk = peak_force(r), pp = average_peak_to_peak(r, shaker);
       const double ref_pk = peak_force(ref_here), ref_p = average_peak_to_peak(ref_here, shaker);
@@ -362,15 +368,15 @@ PairTiming time_pair(const std::function<void()>& a, const std::function<void()>
   return t;
 }
 
-std::function<void()> runner(rigid::Machine2D& m, const Method& method, double interval = kOutput) {
+std::function<void()> runner(const rigid::VehicleModel& m, const Method& method, double interval = kOutput) {
   return [&m, method, interval] { (void)integrate(m, method, interval); };
 }
 
 // `interval`: the output interval (the study's, or kDuration for samples only at the ends).
 void throughput(const std::string& what, const rigid::Machine2DParameters& p, const std::vector<double>& rk4_steps, double interval = kOutput) {
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const Method el{false, 1e-8};
-  const rigid::Trajectory tr = integrate(m, el, interval);
+  const rigid::Trajectory tr = integrate(m, el, interval).trajectory;
   const long el_steps = tr.steps;
   for (double h : rk4_steps) {
     const PairTiming t = time_pair(runner(m, el, interval), runner(m, {true, h}, interval));
@@ -383,16 +389,16 @@ void throughput(const std::string& what, const rigid::Machine2DParameters& p, co
 
 // The loosest rtol (largest h) such that it and every tighter one tried reach `target` in peak plow force.
 void cost_of_accuracy(const std::string& what, const rigid::Machine2DParameters& p, double target) {
-  rigid::Machine2D m(p);
-  const double ref_peak = peak_force(respond(m, {false, kReferenceRtol}, kOutput));
-  auto error_of = [&](const Method& method) { return std::abs(peak_force(respond(m, method, kOutput)) - ref_peak) / ref_peak; };
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  const double ref_peak = peak_force(respond(m, p, {false, kReferenceRtol}, kOutput));
+  auto error_of = [&](const Method& method) { return std::abs(peak_force(respond(m, p, method, kOutput)) - ref_peak) / ref_peak; };
 
   std::vector<double> rtols = {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 1e-9, 1e-10};
   std::vector<double> rtol_errors;
   std::vector<long> rtol_steps;
   for (double r : rtols) {
     rtol_errors.push_back(error_of({false, r}));
-    rtol_steps.push_back(integrate(m, {false, r}, kOutput).steps);
+    rtol_steps.push_back(integrate(m, {false, r}, kOutput).trajectory.steps);
   }
   std::optional<std::size_t> el_pick;
   for (std::size_t i = rtols.size(); i-- > 0;) {
@@ -420,7 +426,7 @@ void cost_of_accuracy(const std::string& what, const rigid::Machine2DParameters&
   }
   const Method el{false, rtols[*el_pick]}, rk{true, steps[*rk_pick]};
   const PairTiming t = time_pair(runner(m, el), runner(m, rk));
-  const long el_steps = integrate(m, el, kOutput).steps;
+  const long el_steps = integrate(m, el, kOutput).trajectory.steps;
   fmt::print("| case | integrator reaching {:g} % | its error | steps | CPU per 0.5 s run | runs timed | CPU / event-located CPU |\n|---|---|---:|---:|---:|---:|---:|\n",
              100 * target);
   fmt::print("| {} | event-located, rtol {:g} | {:.1e} | {} | {:.3f} ms | {} | 1 |\n", what, el.value, rtol_errors[*el_pick], el_steps, 1e3 * t.a, t.runs_a);

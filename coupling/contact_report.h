@@ -14,7 +14,7 @@
 #include "core/units.h"
 #include "core/warnings.h"
 #include "rigid/time_integration.h"
-#include "rigid/unilateral_contact.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::coupling {
 
@@ -26,37 +26,8 @@ struct ContactSummary {
   double lift_off_fraction = 0.0;           // of the output samples with the contact lost
 };
 
-// Machine: rigid::Machine2D or Machine3D after the run that gave `tr` (its contact log).
-template <class Machine>
-std::vector<ContactSummary> summarize_contacts(const Machine& machine, const rigid::Trajectory& tr) {
-  const rigid::UnilateralContacts& contacts = machine.contacts();
-  std::vector<ContactSummary> out;
-  const std::size_t ns = tr.time.size();
-  for (std::size_t c = 0; c < contacts.contacts().size(); ++c) {
-    ContactSummary s;
-    s.name = contacts.contacts()[c].name;
-    if (ns == 0) {
-      out.push_back(s);
-      continue;
-    }
-    const int e = contacts.contacts()[c].normal;
-    std::size_t pulling = 0, lost = 0;
-    for (std::size_t i = 0; i < ns; ++i) {
-      const double f = contacts.transmitted_force(e, tr.time[i], tr.q[i], tr.v[i]);
-      if (i == 0 || f < s.min_force) {
-        s.min_force = f;
-        s.min_force_time = tr.time[i];
-      }
-      if (i == 0 || f > s.max_force) s.max_force = f;
-      if (f < 0.0) ++pulling;
-      if (!contacts.touching_at(static_cast<int>(c), tr.time[i])) ++lost;
-    }
-    s.tension_fraction = static_cast<double>(pulling) / static_cast<double>(ns);
-    s.lift_off_fraction = static_cast<double>(lost) / static_cast<double>(ns);
-    out.push_back(s);
-  }
-  return out;
-}
+// `run`: the state the run that gave `tr` left (its contact log, rigid/vehicle_run.h).
+std::vector<ContactSummary> summarize_contacts(const rigid::VehicleRunState& run, const rigid::Trajectory& tr);
 
 // A `contact_in_tension` warning for every contact with tension_fraction > 0
 // (forces in the study's units).

@@ -11,6 +11,7 @@ namespace {
 constexpr int X = 0, Z = 2;
 
 Eigen::Vector2d planar(const Eigen::Vector3d& v) { return {v(X), v(Z)}; }
+Eigen::Vector3d in_3d(const Eigen::Vector2d& p) { return {p.x(), 0.0, p.y()}; }
 // Moment about +Y of a force f at offset r (both in X-Z): r_z f_x - r_x f_z.
 double moment_y(const Eigen::Vector2d& r, const Eigen::Vector2d& f) { return r.y() * f.x() - r.x() * f.y(); }
 
@@ -30,18 +31,18 @@ const std::vector<std::string>& part_load_names_2d() {
   return names;
 }
 
-std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const rigid::Trajectory& tr) {
-  const rigid::Machine2DParameters& p = machine.parameters();
-  const rigid::Multibody& mb = machine.model();
+std::vector<FrameLoad2D> frame_loads_2d(const rigid::VehicleModel& model, const rigid::Machine2DParameters& p, const rigid::VehicleRunState& run,
+                                        const rigid::Trajectory& tr) {
+  const rigid::Multibody& mb = model.multibody;
   const std::size_t ns = tr.time.size();
-  const int ity = machine.coordinate("theta_y");
+  const int ity = model.coordinate("theta_y");
   Loads loads;
 
   // Added masses (Eqs. 2.45-2.46): the inertia force -m a at the mass, moved
   // to its attachment point with the moment it makes there.
   for (const rigid::AddedMass& a : p.frame.added_masses) {
     const int l = loads.add(a.name, a.attachment, ns);
-    const rigid::Jacobian j = machine.frame_point_jacobian(a.position);
+    const rigid::Jacobian j = rigid::frame_point_jacobian(model, in_3d(a.position));
     for (std::size_t i = 0; i < ns; ++i) {
       const Eigen::Vector2d f = -a.mass * planar(j * tr.a[i]);
       loads.list[static_cast<std::size_t>(l)].force[i] = f;
@@ -60,7 +61,7 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
     if (l < 0) l = loads.add(load, point, ns);
     const Eigen::Vector2d n = planar(el.direction);
     for (std::size_t i = 0; i < ns; ++i) {
-      const double tension = machine.element_tension(e, tr.time[i], tr.q[i], tr.v[i]);
+      const double tension = rigid::element_tension(model, run, e, tr.time[i], tr.q[i], tr.v[i]);
       // A stretched element pulls its ends together: on a (of a pair) +T n;
       // on the point of a grounded element (which runs from the ground) -T n.
       loads.list[static_cast<std::size_t>(l)].force[i] += (frame_is_a_of_pair ? tension : -tension) * n;
@@ -78,7 +79,7 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
   // kinematic tie acts (the thesis splits it between the two mounts).
   {
     const int l = loads.add("cab_x_tie", p.cab.cg, ns);
-    const rigid::Body& cab = mb.bodies()[1];
+    const rigid::Body& cab = mb.bodies()[static_cast<std::size_t>(model.cab_body)];
     for (std::size_t i = 0; i < ns; ++i) loads.list[static_cast<std::size_t>(l)].force[i] = {-p.cab.mass * cab.translation.row(X).dot(tr.a[i]), 0.0};
   }
 
@@ -88,7 +89,7 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
     // (force f10 along the arm). Its three equations give F9 and f10; the
     // massless upper arm then passes F9 and the lift cylinder's pull to pin 6.
     const rigid::Plow2D& pl = p.plow;
-    const rigid::Body& plow = mb.bodies()[2];
+    const rigid::Body& plow = mb.bodies()[static_cast<std::size_t>(model.plow_body)];
     const Eigen::Vector2d r9 = pl.linkage.upper_joint, r10 = pl.linkage.lower_joint;
     const Eigen::Vector2d lower_axis = (r10 - pl.linkage.lower_pivot).normalized();
     const int bounce = mb.element_index("bounce_tire"), cylinder = mb.element_index("lift_cylinder");
@@ -100,9 +101,9 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
     for (std::size_t i = 0; i < ns; ++i) {
       const double t = tr.time[i];
       // External forces on the shank, and its inertia (d'Alembert).
-      const Eigen::Vector2d f_shaker = machine.shaker_force(t);
-      const Eigen::Vector2d f_soil = -machine.plow_force(t, tr.q[i], tr.v[i]);
-      const Eigen::Vector2d f_bounce = -machine.element_tension(bounce, t, tr.q[i], tr.v[i]) * bounce_dir;
+      const Eigen::Vector2d f_shaker = planar(rigid::shaker_force(model, t));
+      const Eigen::Vector2d f_soil = -planar(rigid::plow_force(model, run, t, tr.q[i], tr.v[i]));
+      const Eigen::Vector2d f_bounce = -rigid::element_tension(model, run, bounce, t, tr.q[i], tr.v[i]) * bounce_dir;
       const Eigen::Vector2d f_inertia = -pl.mass * planar(plow.translation * tr.a[i]);
       const double m_inertia = -pl.inertia * plow.rotation.row(1).dot(tr.a[i]);
       const Eigen::Vector2d f_ext = f_shaker + f_soil + f_bounce + f_inertia;
@@ -113,7 +114,7 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
       if (std::abs(arm) < 1e-12) throw std::invalid_argument("the plow's lower arm points at pin 9: its force has no lever arm");
       const double f10 = -m_ext / arm;
       const Eigen::Vector2d f9 = -f_ext - f10 * lower_axis;  // on the shank, from the upper arm
-      const double tension = machine.element_tension(cylinder, t, tr.q[i], tr.v[i]);
+      const double tension = rigid::element_tension(model, run, cylinder, t, tr.q[i], tr.v[i]);
       // Upper arm (massless): from the shank -F9, from the cylinder at 8 -T n, from the frame F6.
       const Eigen::Vector2d f6_on_arm = f9 + tension * cyl_dir;
       loads.list[static_cast<std::size_t>(l6)].force[i] = -f6_on_arm;
@@ -124,8 +125,8 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
     const int l5 = loads.add("boom_soil", p.chain.boom_point, ns);
     const int l6 = loads.add("chain", p.chain.chain_pin, ns);
     for (std::size_t i = 0; i < ns; ++i) {
-      loads.list[static_cast<std::size_t>(l5)].force[i] = -machine.plow_force(tr.time[i], tr.q[i], tr.v[i]);
-      const double rch = machine.chain_force(tr.time[i]);
+      loads.list[static_cast<std::size_t>(l5)].force[i] = -planar(rigid::plow_force(model, run, tr.time[i], tr.q[i], tr.v[i]));
+      const double rch = rigid::chain_force(model, run, tr.time[i]);
       loads.list[static_cast<std::size_t>(l6)].force[i] = rch * Eigen::Vector2d(std::cos(p.chain.chain_angle), -std::sin(p.chain.chain_angle));
       loads.list[static_cast<std::size_t>(l6)].moment[i] = -rch * p.chain.moment_arm;  // -RMCH (Eq. 2.33)
     }
@@ -133,14 +134,13 @@ std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const r
   return loads.list;
 }
 
-SectionLoad tube_inertia_in_front(const rigid::Machine2D& machine, const Eigen::VectorXd& a, double x_cut, double z_cut) {
-  const rigid::Frame2D& f = machine.parameters().frame;
+SectionLoad tube_inertia_in_front(const rigid::VehicleModel& model, const rigid::Frame2D& f, const Eigen::VectorXd& a, double x_cut, double z_cut) {
   SectionLoad s;
   const double x0 = f.front_end, x1 = std::min(x_cut, f.front_end + f.length);
   if (!(x1 > x0) || f.mass_per_length == 0.0) return s;
   // The tube lies on Z = 0 and moves rigidly: its acceleration is linear in X,
   // so the integrals are exact with the segment's end points.
-  const rigid::Jacobian j0 = machine.frame_point_jacobian({x0, 0.0}), j1 = machine.frame_point_jacobian({x1, 0.0});
+  const rigid::Jacobian j0 = rigid::frame_point_jacobian(model, {x0, 0.0, 0.0}), j1 = rigid::frame_point_jacobian(model, {x1, 0.0, 0.0});
   const Eigen::Vector2d a0 = planar(j0 * a), a1 = planar(j1 * a);
   const double len = x1 - x0, rho = f.mass_per_length;
   // Inertia force -rho a(x) dx over [x0, x1]; its moment about (x_cut, z_cut).
@@ -154,7 +154,7 @@ SectionLoad tube_inertia_in_front(const rigid::Machine2D& machine, const Eigen::
   return s;
 }
 
-StressResultants frame_stress_resultants(const rigid::Machine2D& machine, const rigid::Trajectory& tr, const std::vector<FrameLoad2D>& loads,
+StressResultants frame_stress_resultants(const rigid::VehicleModel& model, const rigid::Frame2D& frame, const rigid::Trajectory& tr, const std::vector<FrameLoad2D>& loads,
                                          const std::vector<double>& output_x, double output_z) {
   StressResultants r;
   r.output_x = output_x;
@@ -173,7 +173,7 @@ StressResultants frame_stress_resultants(const rigid::Machine2D& machine, const 
         f += l.force[i];
         m += l.moment[i] + moment_y(l.point - op, l.force[i]);
       }
-      const SectionLoad d = tube_inertia_in_front(machine, tr.a[i], op.x(), op.y());
+      const SectionLoad d = tube_inertia_in_front(model, frame, tr.a[i], op.x(), op.y());
       // The D terms of Eq. 2.47 are the tube's inertia (SRXD = int rho a_x) with
       // the signs that make the front part's free body balance.
       r.srx[i][k] = -f.x() - d.force.x();

@@ -17,6 +17,8 @@
 
 #include "rigid/machine_2d.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::coupling {
 
@@ -33,7 +35,10 @@ struct FrameLoad2D {
 // mass's load carries the mass's name, so it may not take one of these.
 const std::vector<std::string>& part_load_names_2d();
 
-std::vector<FrameLoad2D> frame_loads_2d(const rigid::Machine2D& machine, const rigid::Trajectory& trajectory);
+// The loads of a run: `model` built from `parameters` (rigid::build_vehicle_model),
+// `run` the state that run left (its soil and tooth logs), `trajectory` its samples.
+std::vector<FrameLoad2D> frame_loads_2d(const rigid::VehicleModel& model, const rigid::Machine2DParameters& parameters,
+                                        const rigid::VehicleRunState& run, const rigid::Trajectory& trajectory);
 
 // The distributed inertia of the uniform section in front of `x_cut`, as a
 // force (X, Z) and its moment about (x_cut, z_cut), at one sample.
@@ -41,7 +46,8 @@ struct SectionLoad {
   Eigen::Vector2d force{0, 0};
   double moment = 0.0;
 };
-SectionLoad tube_inertia_in_front(const rigid::Machine2D& machine, const Eigen::VectorXd& acceleration, double x_cut, double z_cut);
+SectionLoad tube_inertia_in_front(const rigid::VehicleModel& model, const rigid::Frame2D& frame, const Eigen::VectorXd& acceleration, double x_cut,
+                                  double z_cut);
 
 // Stress resultants (Eq. 2.47) for the whole frame (both rails together):
 //   SRX  = -sum FCX_j + SRXD     (axial force on the front part's rear face)
@@ -56,7 +62,7 @@ struct StressResultants {
   double output_z = 0.0;                         // m
   std::vector<std::vector<double>> srx, srz, srmy;  // N, N, N m
 };
-StressResultants frame_stress_resultants(const rigid::Machine2D& machine, const rigid::Trajectory& trajectory,
+StressResultants frame_stress_resultants(const rigid::VehicleModel& model, const rigid::Frame2D& frame, const rigid::Trajectory& trajectory,
                                          const std::vector<FrameLoad2D>& loads, const std::vector<double>& output_x,
                                          double output_z = 0.0);
 

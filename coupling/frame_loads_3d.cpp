@@ -22,9 +22,10 @@ LoadPointHistory make_point(const std::string& name, const Eigen::Vector3d& at, 
 
 // Force of element e on its point a (grounded: the point it acts on), N: a stretched
 // element pulls its ends together, so on a of a pair +T n, on a grounded element's point -T n.
-Eigen::Vector3d element_force_on_a(const rigid::Machine3D& m, int e, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-  const rigid::SpringDamper& el = m.model().elements()[static_cast<std::size_t>(e)];
-  const double tension = m.element_tension(e, t, q, v);
+Eigen::Vector3d element_force_on_a(const rigid::VehicleModel& m, const rigid::VehicleRunState& run, int e, double t, const Eigen::VectorXd& q,
+                                   const Eigen::VectorXd& v) {
+  const rigid::SpringDamper& el = m.multibody.elements()[static_cast<std::size_t>(e)];
+  const double tension = rigid::element_tension(m, run, e, t, q, v);
   return (el.point_b < 0 ? -tension : tension) * el.direction;
 }
 
@@ -49,8 +50,7 @@ struct LoadState {
 };
 
 // The frame loads' layout (points 24-31; the attachment's at point 19) with `ns` samples at `times`.
-FrameLoads3D empty_loads(const rigid::Machine3D& m, const Eigen::VectorXd& times) {
-  const rigid::Machine3DParameters& p = m.parameters();
+FrameLoads3D empty_loads(const rigid::Machine3DParameters& p, const Eigen::VectorXd& times) {
   if (p.cab.mounts.size() != 4) throw std::invalid_argument("3-D frame loads need the cab's four mounts (points 28-31)");
   const std::size_t ns = static_cast<std::size_t>(times.size());
   const std::vector<std::string> names = frame_load_point_names();
@@ -70,9 +70,8 @@ FrameLoads3D empty_loads(const rigid::Machine3D& m, const Eigen::VectorXd& times
 }
 
 // Row i of every load point from the state s.
-void sample_loads(const rigid::Machine3D& m, const LoadState& s, std::size_t i, FrameLoads3D& out) {
-  const rigid::Machine3DParameters& p = m.parameters();
-  const rigid::Multibody& mb = m.model();
+void sample_loads(const rigid::VehicleModel& m, const rigid::Machine3DParameters& p, const LoadState& s, std::size_t i, FrameLoads3D& out) {
+  const rigid::Multibody& mb = m.multibody;
   const Eigen::Vector3d p24 = p.frame.reel_attachment, p25 = p.front_axle.pin, p26 = p.frame.rear_pin, p27 = p.frame.leveling_cylinder;
   auto set = [](LoadPointHistory& l, std::size_t row, const Eigen::Vector3d& f, const Eigen::Vector3d& mo) {
     l.values.row(static_cast<Eigen::Index>(row)).head<3>() += f.transpose();
@@ -116,13 +115,13 @@ void sample_loads(const rigid::Machine3D& m, const LoadState& s, std::size_t i, 
   if (!(std::abs(lever) > 0.0)) throw std::invalid_argument("the leveling cylinder (point 27) must be beside the rear axle pin (point 26) in Y");
   Eigen::Vector3d f, mo;
   // 24: reel and reel carrier, rigid on the frame.
-  joint_on_frame(m.reel_body(), p.frame.reel_and_carrier.cg, p24, {}, {}, f, mo);
+  joint_on_frame(m.reel_body, p.frame.reel_and_carrier.cg, p24, {}, {}, f, mo);
   set(out.points.points[0], i, f, mo);
   // 25: front axle pin; the pin passes no moment about X (the eta equation makes TX vanish).
-  joint_on_frame(m.front_axle_body(), p.front_axle.axle.cg, p25, front_tires, {}, f, mo);
+  joint_on_frame(m.front_axle_body, p.front_axle.axle.cg, p25, front_tires, {}, f, mo);
   set(out.points.points[1], i, f, mo);
   // 26 and 27: the rear axle; the leveling cylinder (vertical, at 27) carries the moment about the pin's X axis.
-  joint_on_frame(m.rear_axle_body(), p.frame.rear_axle.cg, p26, rear_tires, {}, f, mo);
+  joint_on_frame(m.rear_axle_body, p.frame.rear_axle.cg, p26, rear_tires, {}, f, mo);
   const Eigen::Vector3d r = p27 - p26;
   // Cylinder force on the frame Fc z at 27: its moment about 26 along X is r_y Fc.
   const double fc = mo.x() / r.y();
@@ -141,51 +140,54 @@ void sample_loads(const rigid::Machine3D& m, const LoadState& s, std::size_t i, 
   }
   // Direct loads at point 19.
   if (p.attachment == rigid::Attachment::plow) {
-    const rigid::Machine3D::PlowPlacement& pp = m.plow_placement();
+    const rigid::PlowPlacement& pp = m.plow_placement;
     std::vector<External> ext;
-    for (int e : m.soil_elements()) ext.push_back({e, pp.blade});
+    for (int e : m.soil_elements) ext.push_back({e, pp.blade});
     const int bounce = mb.element_index("bounce_tire");
     if (bounce >= 0) ext.push_back({bounce, pp.bounce});
-    joint_on_frame(m.plow_body(), pp.cg, p.plow.swing_pin, ext, {{pp.shaker, s.shaker}}, f, mo);
+    joint_on_frame(m.plow_body, pp.cg, p.plow.swing_pin, ext, {{pp.shaker, s.shaker}}, f, mo);
     set(out.direct.points[0], i, f, mo);
   } else if (p.attachment == rigid::Attachment::chain) {
     set(out.direct.points[0], i, s.chain_force, s.chain_moment);
     Eigen::Vector3d soil = Eigen::Vector3d::Zero();
-    for (int e : m.soil_elements()) soil += s.element_force(e);
+    for (int e : m.soil_elements) soil += s.element_force(e);
     set(out.direct.points[1], i, soil, Eigen::Vector3d::Zero());
   }
 }
 
 }  // namespace
 
-FrameLoads3D frame_loads_3d(const rigid::Machine3D& m, const rigid::Trajectory& tr) {
+FrameLoads3D frame_loads_3d(const rigid::VehicleModel& m, const rigid::Machine3DParameters& p, const rigid::VehicleRunState& run,
+                            const rigid::Trajectory& tr) {
   const std::size_t ns = tr.time.size();
-  FrameLoads3D out = empty_loads(m, Eigen::Map<const Eigen::VectorXd>(tr.time.data(), static_cast<Eigen::Index>(ns)));
+  FrameLoads3D out = empty_loads(p, Eigen::Map<const Eigen::VectorXd>(tr.time.data(), static_cast<Eigen::Index>(ns)));
   for (std::size_t i = 0; i < ns; ++i) {
     LoadState s;
     s.a = tr.a[i];
-    s.element_force = [&](int e) { return element_force_on_a(m, e, tr.time[i], tr.q[i], tr.v[i]); };
-    s.shaker = m.shaker_force(tr.time[i]);
-    if (m.parameters().attachment == rigid::Attachment::chain) {
-      s.chain_force = m.chain_force_vector(tr.time[i]);
-      s.chain_moment = m.chain_moment(tr.time[i]);
+    s.element_force = [&](int e) { return element_force_on_a(m, run, e, tr.time[i], tr.q[i], tr.v[i]); };
+    s.shaker = rigid::shaker_force(m, tr.time[i]);
+    if (p.attachment == rigid::Attachment::chain) {
+      // RCH along the chain, RMCH about +Y.
+      const double rch = rigid::chain_force(m, run, tr.time[i]);
+      s.chain_force = rch * m.chain_direction;
+      s.chain_moment = Eigen::Vector3d(0.0, -rch * m.chain_moment_arm, 0.0);
     }
-    sample_loads(m, s, i, out);
+    sample_loads(m, p, s, i, out);
   }
   return out;
 }
 
-FrameLoads3D static_frame_loads_3d(const rigid::Machine3D& m) {
-  FrameLoads3D out = empty_loads(m, Eigen::VectorXd::Zero(1));
-  std::vector<double> sf = m.static_element_forces();
+FrameLoads3D static_frame_loads_3d(const rigid::VehicleModel& m, const rigid::Machine3DParameters& p) {
+  FrameLoads3D out = empty_loads(p, Eigen::VectorXd::Zero(1));
+  std::vector<double> sf = m.statics.element_forces;
   // A contact the statics released carries nothing (its SF_e is the gap times k, not a force).
-  const rigid::ContactStatics& st = m.statics();
+  const rigid::ContactStatics& st = m.statics;
   for (std::size_t c = 0; c < st.contacts.size(); ++c) {
     if (st.engaged[c]) continue;
     sf[static_cast<std::size_t>(st.contacts[c].normal)] = 0.0;
     for (int e : st.contacts[c].tangential) sf[static_cast<std::size_t>(e)] = 0.0;
   }
-  const rigid::Multibody& mb = m.model();
+  const rigid::Multibody& mb = m.multibody;
   LoadState s;
   s.a = Eigen::VectorXd::Zero(mb.size());
   // SF_e is compression positive: on point a it pushes along +direction, on a grounded element's point too
@@ -195,8 +197,8 @@ FrameLoads3D static_frame_loads_3d(const rigid::Machine3D& m) {
     const double tension = -sf[static_cast<std::size_t>(e)];
     return Eigen::Vector3d((el.point_b < 0 ? -tension : tension) * el.direction);
   };
-  s.gravity = Eigen::Vector3d(0.0, 0.0, -m.parameters().gravity);
-  sample_loads(m, s, 0, out);
+  s.gravity = Eigen::Vector3d(0.0, 0.0, -p.gravity);
+  sample_loads(m, p, s, 0, out);
   return out;
 }
 

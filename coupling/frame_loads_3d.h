@@ -19,6 +19,8 @@
 #include "coupling/load_history.h"
 #include "rigid/machine_3d.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::coupling {
 
@@ -33,7 +35,10 @@ struct FrameLoads3D {
 // Names of the load points, in file order (the node sets of meshes/r100_frame.inp).
 std::vector<std::string> frame_load_point_names();
 
-FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajectory& trajectory);
+// The loads of a run: `model` built from `parameters` (rigid::build_vehicle_model),
+// `run` the state that run left (its soil and tooth logs), `trajectory` its samples.
+FrameLoads3D frame_loads_3d(const rigid::VehicleModel& model, const rigid::Machine3DParameters& parameters, const rigid::VehicleRunState& run,
+                            const rigid::Trajectory& trajectory);
 
 // The static frame loads: the same load points at the vehicle model's static
 // equilibrium under gravity (rigid/contact_statics.h, Eqs. 11.1-11.4), one
@@ -44,7 +49,7 @@ FrameLoads3D frame_loads_3d(const rigid::Machine3D& machine, const rigid::Trajec
 // in the dynamic loads, which are measured from this equilibrium). With the
 // frame assembly's own weight these loads balance (docs/theory/coupling.md,
 // section 11).
-FrameLoads3D static_frame_loads_3d(const rigid::Machine3D& machine);
+FrameLoads3D static_frame_loads_3d(const rigid::VehicleModel& model, const rigid::Machine3DParameters& parameters);
 
 // Every load the vehicle model puts on the frame, as one history: points
 // 24-31, then the attachment's (`direct`: P19_PLOW_SWING_PIN, or

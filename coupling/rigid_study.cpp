@@ -128,9 +128,17 @@ void set_parameter(rigid::Machine2DParameters& p, const std::string& name, doubl
   *slot = value;
 }
 
-RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study(load_yaml_file(file), file); }
+namespace {
+// The study in an already-parsed document; `file` names it in messages.
+RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file);
+}  // namespace
 
-RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) {
+RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study_document(load_yaml_file(file), file); }
+
+RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) { return read_rigid_study_document(doc, file); }
+
+namespace {
+RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file) {
   {
     // The model first: another model's keys would otherwise be reported as unknown.
     core::UnitSystem si = core::UnitSystem::si();
@@ -233,9 +241,9 @@ RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) {
     s.modes = analysis->boolean_or("modes", true);
     s.fixed_coordinates = analysis->strings("fixed_coordinates");
     const std::string modal_soil = analysis->text_or("modal_soil", "cutting");
-    if (modal_soil == "cutting") s.modal_soil = rigid::Machine2D::ModalSoil::cutting;
-    else if (modal_soil == "backing") s.modal_soil = rigid::Machine2D::ModalSoil::backing;
-    else if (modal_soil == "none") s.modal_soil = rigid::Machine2D::ModalSoil::none;
+    if (modal_soil == "cutting") s.modal_soil = rigid::ModalSoil::cutting;
+    else if (modal_soil == "backing") s.modal_soil = rigid::ModalSoil::backing;
+    else if (modal_soil == "none") s.modal_soil = rigid::ModalSoil::none;
     else throw analysis->error("modal_soil", "cutting (K5), backing (REK K5) or none", "'" + modal_soil + "'");
     if (auto r = analysis->optional_map("response")) s.response = read_response_request(*r);
   }
@@ -270,92 +278,73 @@ RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) {
   check_machine(p, s.fixed_coordinates, root, file);
   return s;
 }
+}  // namespace
 
 RigidResults run_rigid_study(const RigidStudy& study_in) {
   RigidStudy study = study_in;
   RigidResults r;
   if (study.calibration)
-    r.calibration = calibrate_parameters<rigid::Machine2D>(study.machine, *study.calibration, get_parameter, set_parameter, [&](const rigid::Machine2D& m) {
-      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(study.modal_soil), m.model().coordinate_names(), study.fixed_coordinates);
+    r.calibration = calibrate_parameters(study.machine, *study.calibration, get_parameter, set_parameter, [&](const rigid::VehicleModel& m) {
+      return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
-  rigid::Machine2D machine(study.machine);
-  r.coordinates = machine.model().coordinate_names();
-  r.coordinate_quantities = machine.model().coordinate_quantities();
-  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(study.modal_soil), r.coordinates, study.fixed_coordinates);
-  r.static_contacts = static_contacts(machine);
-  if (study.modes) r.modes_by_state = modes_by_contact_state(machine, study.fixed_coordinates);
-  if (!study.response) return r;
-
+  const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
+  const std::optional<rigid::VehicleRunState> run =
+      run_vehicle_study(model, study.modes, study.fixed_coordinates, study.modal_soil, study.response, study.units, r);
+  if (!run) return r;
   const ResponseRequest& req = *study.response;
-  r.trajectory = response_from_rest(machine, req);
+  const rigid::VehicleRunState& state = *run;
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
-  r.contacts = summarize_contacts(machine, tr);
-  for (core::Warning& w : contact_warnings(r.contacts, study.units)) r.warnings.push_back(std::move(w));
 
   // Element forces: spring + damper + static (Eq. 2.42), compression positive.
-  const rigid::Multibody& mb = machine.model();
-  const std::vector<double> statics = machine.static_element_forces();
+  const rigid::Multibody& mb = model.multibody;
+  const std::vector<double>& statics = model.statics.element_forces;
   for (std::size_t e = 0; e < mb.elements().size(); ++e) {
     const rigid::SpringDamper& el = mb.elements()[e];
     if (el.name.rfind("soil", 0) == 0) continue;  // the soil's force is the plow/boom force below
     Series s{el.name + "_force", Quantity::force, {}};
     for (std::size_t i = 0; i < ns; ++i) {
       // Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF, compression positive; zero for a contact lost (Eq. 4a.4).
-      s.values.push_back(statics[e] - machine.element_tension(static_cast<int>(e), tr.time[i], tr.q[i], tr.v[i]));
+      s.values.push_back(statics[e] - rigid::element_tension(model, state, static_cast<int>(e), tr.time[i], tr.q[i], tr.v[i]));
     }
     r.series.push_back(std::move(s));
   }
-  if (machine.blade_point() >= 0) {
-    const rigid::Jacobian& j = mb.points()[static_cast<std::size_t>(machine.blade_point())].displacement;
+  if (model.blade_point >= 0) {
+    const rigid::Jacobian& j = mb.points()[static_cast<std::size_t>(model.blade_point)].displacement;
     Series bx{"blade_x", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
     Series fx{"plow_force_x", Quantity::force, {}}, fz{"plow_force_z", Quantity::force, {}};
     Series mag{"plow_force_signed_magnitude", Quantity::force, {}}, angle{"plow_force_angle_deg", Quantity::dimensionless, {}};
+    std::vector<double> magnitude(ns);
+    std::vector<bool> cutting(ns);
     for (std::size_t i = 0; i < ns; ++i) {
       const Eigen::Vector3d d = j * tr.q[i];
       bx.values.push_back(d(0));
       bz.values.push_back(d(2));
-      const Eigen::Vector2d f = machine.plow_force(tr.time[i], tr.q[i], tr.v[i]);
+      const Eigen::Vector3d f3 = rigid::plow_force(model, state, tr.time[i], tr.q[i], tr.v[i]);
+      const Eigen::Vector2d f(f3.x(), f3.z());
       fx.values.push_back(f.x());
       fz.values.push_back(f.y());
       // Eq. 2.38-2.39 (with |RPFX|): magnitude positive for forward blade travel (RPFX < 0).
       const double m = f.norm();
       mag.values.push_back(f.x() < 0 ? m : -m);
+      magnitude[i] = m;
+      cutting[i] = rigid::soil_state_at(state, tr.time[i]).cutting;
       double phi;
       if (f.x() > 0) phi = -std::atan(f.y() / std::abs(f.x())) + M_PI;
       else if (f.x() < 0) phi = std::atan(f.y() / std::abs(f.x()));
       else phi = (f.y() >= 0 ? 1.0 : -1.0) * M_PI / 2;
       angle.values.push_back(phi / kDegree);
     }
-    if (!mag.values.empty()) {
-      // One meaning in 2-D and 3-D (issue 15): the largest |RPF| over the samples in which
-      // the soil law says the blade cuts (backs off); zero if it never does.
-      double cut = 0.0, back = 0.0;
-      for (std::size_t i = 0; i < ns; ++i) {
-        const double m = std::abs(mag.values[i]);
-        if (machine.soil_state_at(tr.time[i]).cutting) cut = std::max(cut, m);
-        else back = std::max(back, m);
-      }
-      r.peak_cutting_force = cut;
-      r.peak_backing_force = back;
-    }
-    if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
-      // Average peak-to-peak vertical blade motion over whole shaker cycles.
-      const double period = 1.0 / study.machine.plow.shaker_frequency;
-      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, period, req.duration);
-      std::vector<double> backing(mag.values.size());
-      std::transform(mag.values.begin(), mag.values.end(), backing.begin(), [](double m) { return -m; });
-      r.average_peak_cutting_force = average_cycle_peak(tr.time, mag.values, period, req.duration);
-      r.average_peak_backing_force = average_cycle_peak(tr.time, backing, period, req.duration);
-    }
+    const double shaker_hz = study.machine.attachment == rigid::Attachment::plow ? study.machine.plow.shaker_frequency : 0.0;
+    set_plow_force_peaks(tr.time, bz.values, magnitude, cutting, shaker_hz, req.duration, r);
     for (Series* s : {&bx, &bz, &fx, &fz, &mag, &angle}) r.series.push_back(std::move(*s));
   }
-  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(machine, tr));
+  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
   if (study.frame_output) {
     const FrameOutputRequest& fo = *study.frame_output;
-    r.frame_loads = frame_loads_2d(machine, tr);
-    r.resultants = frame_stress_resultants(machine, tr, r.frame_loads, fo.points, fo.height);
+    r.frame_loads = frame_loads_2d(model, study.machine, state, tr);
+    r.resultants = frame_stress_resultants(model, study.machine.frame, tr, r.frame_loads, fo.points, fo.height);
     if (fo.rail_area > 0) {
       // Each of the two rails carries half of the whole frame's resultants (Eq. 2.47d).
       r.rail_top_stress.assign(ns, std::vector<double>(fo.points.size(), 0.0));
@@ -365,7 +354,7 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
                                     0.5 * r.resultants->srmy[i][k] * fo.rail_top_fiber / fo.rail_second_moment;
     }
   }
-  assess_response(study, machine, r);  // steady operation, validity warnings (issue 15)
+  assess_response(study, model, state, r);  // steady operation, validity warnings (issue 15)
   return r;
 }
 

@@ -104,7 +104,7 @@ struct RigidStudy {
   // The soil stiffness the modal analysis (and a calibration) sees:
   // analysis.modal_soil = cutting (K5, the default), backing (REK K5) or none.
   // The thesis does not say which CMW2D used; docs/theory/rigid.md, section 5.
-  rigid::Machine2D::ModalSoil modal_soil = rigid::Machine2D::ModalSoil::cutting;
+  rigid::ModalSoil modal_soil = rigid::ModalSoil::cutting;
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;
   std::optional<FrameOutputRequest> frame_output;
@@ -122,30 +122,40 @@ struct Series {
   std::vector<double> values;  // SI
 };
 
-struct RigidResults {
+// What a run of a vehicle study gives, the same fields with the same meaning
+// in 2-D and 3-D (docs/theory/rigid.md section 13): filled by the one runner
+// (coupling/study_blocks.h, run_vehicle_study) and the one peak function
+// (set_plow_force_peaks); each model's results add only their own extras.
+struct VehicleResults {
   std::vector<std::string> coordinates;
   std::vector<core::Quantity> coordinate_quantities;  // length or angle, one per coordinate (the model's table)
   std::optional<rigid::CalibrationResult> calibration;  // with the study's CalibrationRequest
   std::vector<rigid::RigidMode> modes;
+  std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
+  std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
   // Response (empty if none was asked for).
   rigid::Trajectory trajectory;
-  std::vector<Series> series;  // blade motion, plow force, element forces, chain force
-  std::optional<double> plow_vertical_peak_to_peak;  // m, average over shaker cycles
-  std::optional<double> peak_cutting_force;          // N, largest |RPF| while the soil law says the blade cuts (as in 3-D)
+  std::vector<Series> series;                        // blade motion, blade force, element forces (2-D), chain force
+  std::vector<ContactSummary> contacts;              // tires and bounce tire
+  std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
+  SteadyReport steady;                               // steady operation and the peaks before and in it
+  // The blade's (or boom's) soil force |RPF| and motion, set_plow_force_peaks.
+  std::optional<double> plow_vertical_peak_to_peak;  // m, average over whole shaker cycles
+  std::optional<double> peak_cutting_force;          // N, largest |RPF| while the soil law says the blade cuts
   std::optional<double> peak_backing_force;          // N, largest |RPF| while it backs off
-  // N: the thesis's "average peak" forces (Figure 10), each shaker cycle's
-  // largest, averaged over the whole cycles in which the blade cuts (backs).
+  // N: the thesis's "average peak" forces (Figure 10): each whole shaker
+  // cycle's largest |RPF| while cutting (backing off), averaged over the
+  // cycles in which the blade cuts (backs off) at all.
   std::optional<double> average_peak_cutting_force;
   std::optional<double> average_peak_backing_force;
+};
+
+// The 2-D model's results: the common ones and its frame's resultants.
+struct RigidResults : VehicleResults {
   // Frame loads and resultants (with a response and a frame_output request).
   std::vector<FrameLoad2D> frame_loads;
   std::optional<StressResultants> resultants;
   std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
-  std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
-  std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
-  std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
-  std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
-  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults run_rigid_study(const RigidStudy& study);

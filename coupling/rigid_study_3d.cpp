@@ -274,9 +274,17 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
   *s = value;
 }
 
-RigidStudy3D read_rigid_study_3d(const std::string& file) { return read_rigid_study_3d(load_yaml_file(file), file); }
+namespace {
+// The study in an already-parsed document; `file` names it in messages.
+RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file);
+}  // namespace
 
-RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file) {
+RigidStudy3D read_rigid_study_3d(const std::string& file) { return read_rigid_study_3d_document(load_yaml_file(file), file); }
+
+RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file) { return read_rigid_study_3d_document(doc, file); }
+
+namespace {
+RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file) {
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
                                                           "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"});
   RigidStudy3D s;
@@ -455,66 +463,53 @@ RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file)
   check_machine(p, s.fixed_coordinates, root, file);
   return s;
 }
+}  // namespace
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   RigidStudy3D study = study_in;
   RigidResults3D r;
   if (study.calibration)
-    r.calibration = calibrate_parameters<rigid::Machine3D>(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::Machine3D& m) {
-      return rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting), m.model().coordinate_names(), study.fixed_coordinates);
+    r.calibration = calibrate_parameters(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::VehicleModel& m) {
+      return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, rigid::ModalSoil::cutting), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
   r.machine = study.machine;
-  rigid::Machine3D machine(study.machine);
-  r.coordinates = machine.model().coordinate_names();
-  r.coordinate_quantities = machine.model().coordinate_quantities();
+  const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
   // The modes in the state the response starts in: the blade cutting (Eq. 11.7).
-  if (study.modes) r.modes = rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting), r.coordinates, study.fixed_coordinates);
-  r.static_contacts = static_contacts(machine);
-  if (study.modes) r.modes_by_state = modes_by_contact_state(machine, study.fixed_coordinates);
-  if (!study.response) return r;
-
+  const std::optional<rigid::VehicleRunState> run =
+      run_vehicle_study(model, study.modes, study.fixed_coordinates, rigid::ModalSoil::cutting, study.response, study.units, r);
+  if (!run) return r;
   const ResponseRequest& req = *study.response;
-  r.trajectory = response_from_rest(machine, req);
+  const rigid::VehicleRunState& state = *run;
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
-  r.contacts = summarize_contacts(machine, tr);
-  for (core::Warning& w : contact_warnings(r.contacts, study.units)) r.warnings.push_back(std::move(w));
-  if (machine.blade_point() >= 0) {
-    const rigid::Jacobian& j = machine.model().points()[static_cast<std::size_t>(machine.blade_point())].displacement;
+  if (model.blade_point >= 0) {
+    const rigid::Jacobian& j = model.multibody.points()[static_cast<std::size_t>(model.blade_point)].displacement;
     Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
     Series fx{"soil_force_x", Quantity::force, {}}, fy{"soil_force_y", Quantity::force, {}}, fz{"soil_force_z", Quantity::force, {}};
-    double cut = 0, back = 0;
-    std::vector<double> cutting_magnitude(ns, 0.0), backing_magnitude(ns, 0.0);  // each zero in the other state
+    std::vector<double> magnitude(ns);
+    std::vector<bool> cutting(ns);
     for (std::size_t i = 0; i < ns; ++i) {
       const Eigen::Vector3d d = j * tr.q[i];
       bx.values.push_back(d.x());
       by.values.push_back(d.y());
       bz.values.push_back(d.z());
       // The soil's force on the blade is minus the sum of the soil elements' pull on it.
-      const Eigen::Vector3d f = machine.plow_force(tr.time[i], tr.q[i], tr.v[i]);
+      const Eigen::Vector3d f = rigid::plow_force(model, state, tr.time[i], tr.q[i], tr.v[i]);
       fx.values.push_back(f.x());
       fy.values.push_back(f.y());
       fz.values.push_back(f.z());
-      (machine.soil_state_at(tr.time[i]).cutting ? cutting_magnitude : backing_magnitude)[i] = f.norm();
-      cut = std::max(cut, cutting_magnitude[i]);
-      back = std::max(back, backing_magnitude[i]);
+      magnitude[i] = f.norm();
+      cutting[i] = rigid::soil_state_at(state, tr.time[i]).cutting;
     }
-    r.peak_cutting_force = cut;
-    r.peak_backing_force = back;
-    if (study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0) {
-      // Average peak-to-peak vertical blade motion over whole shaker cycles.
-      const double period = 1.0 / study.machine.plow.shaker_frequency;
-      r.plow_vertical_peak_to_peak = average_peak_to_peak(tr.time, bz.values, period, req.duration);
-      r.average_peak_cutting_force = average_cycle_peak(tr.time, cutting_magnitude, period, req.duration);
-      r.average_peak_backing_force = average_cycle_peak(tr.time, backing_magnitude, period, req.duration);
-    }
+    const double shaker_hz = study.machine.attachment == rigid::Attachment::plow ? study.machine.plow.shaker_frequency : 0.0;
+    set_plow_force_peaks(tr.time, bz.values, magnitude, cutting, shaker_hz, req.duration, r);
     for (Series* s : {&bx, &by, &bz, &fx, &fy, &fz}) r.series.push_back(std::move(*s));
   }
-  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(machine, tr));
-  r.frame_loads = frame_loads_3d(machine, tr);
-  r.static_frame_loads = static_frame_loads_3d(machine);
-  assess_response(study, machine, r);  // steady operation, validity warnings (issue 15)
+  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
+  r.frame_loads = frame_loads_3d(model, study.machine, state, tr);
+  r.static_frame_loads = static_frame_loads_3d(model, study.machine);
+  assess_response(study, model, r);  // steady operation, validity warnings (issue 15)
   return r;
 }
 

@@ -74,26 +74,12 @@ double get_parameter_3d(const rigid::Machine3DParameters& p, const std::string& 
 void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, double value);
 core::Quantity parameter_quantity_3d(const std::string& name);
 
-struct RigidResults3D {
-  std::vector<std::string> coordinates;
-  std::vector<core::Quantity> coordinate_quantities;  // length or angle, one per coordinate (the model's table)
-  std::optional<rigid::CalibrationResult> calibration;
+// The 3-D model's results: the common ones (coupling/rigid_study.h,
+// VehicleResults) and its parameters as analysed and frame loads.
+struct RigidResults3D : VehicleResults {
   rigid::Machine3DParameters machine;  // as analysed (after any calibration)
-  std::vector<rigid::RigidMode> modes;
-  rigid::Trajectory trajectory;
-  std::vector<Series> series;          // blade motion and plow force, chain force
-  std::optional<double> plow_vertical_peak_to_peak;  // m, average over whole shaker cycles
-  std::optional<double> peak_cutting_force;          // N: largest soil force magnitude while the blade cuts
-  std::optional<double> peak_backing_force;          // N: while it backs off
-  std::optional<double> average_peak_cutting_force;  // N: each shaker cycle's largest, averaged (as RigidResults)
-  std::optional<double> average_peak_backing_force;  // N
   std::optional<FrameLoads3D> frame_loads;           // with a response
   std::optional<FrameLoads3D> static_frame_loads;    // with a response: the same points at the static equilibrium (static_frame_loads_3d)
-  std::vector<ContactSummary> contacts;              // with a response: tires and bounce tire
-  std::vector<core::Warning> warnings;               // validity warnings (contact_in_tension, ...)
-  std::vector<StaticContact> static_contacts;        // the equilibrium the response starts from (Eqs. 11.1-11.3)
-  std::vector<StateModes> modes_by_state;            // with modes: cutting, backing_off, contact_lost (Eq. 11.7)
-  SteadyReport steady;                               // with a response: steady operation and the peaks before and in it
 };
 
 RigidResults3D run_rigid_study_3d(const RigidStudy3D& study);

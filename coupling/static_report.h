@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid/machine_2d.h"
+#include "rigid/vehicle_model.h"
 #include "rigid/rigid_modes.h"
 
 namespace framedyn::coupling {
@@ -30,29 +30,14 @@ struct StateModes {
   std::vector<rigid::RigidMode> modes;
 };
 
-// Machine: rigid::Machine2D or Machine3D.
-template <class Machine>
-std::vector<StaticContact> static_contacts(const Machine& machine) {
-  const rigid::ContactStatics& s = machine.statics();
-  const std::vector<double> forces = machine.static_element_forces();
-  std::vector<StaticContact> out;
-  for (std::size_t i = 0; i < s.contacts.size(); ++i)
-    out.push_back({s.contacts[i].name, forces.at(static_cast<std::size_t>(s.contacts[i].normal)), static_cast<bool>(s.engaged[i])});
-  return out;
-}
+// The static force of every contact of `model` in its equilibrium.
+std::vector<StaticContact> static_contacts(const rigid::VehicleModel& model);
 
 // The state a ModalSoil stands for, and its label.
-std::string contact_state_name(rigid::Machine2D::ModalSoil soil);
-std::string contact_state_label(rigid::Machine2D::ModalSoil soil, const rigid::SoilLaw& law);
+std::string contact_state_name(rigid::ModalSoil soil);
+std::string contact_state_label(rigid::ModalSoil soil, const rigid::SoilLaw& law);
 
-template <class Machine>
-std::vector<StateModes> modes_by_contact_state(const Machine& machine, const std::vector<std::string>& fixed) {
-  std::vector<StateModes> out;
-  using S = rigid::Machine2D::ModalSoil;
-  for (S soil : {S::cutting, S::backing, S::none})
-    out.push_back({contact_state_name(soil), contact_state_label(soil, machine.parameters().soil),
-                   rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(soil), machine.model().coordinate_names(), fixed)});
-  return out;
-}
+// The modes of `model` in each contact state, `fixed` coordinates held.
+std::vector<StateModes> modes_by_contact_state(const rigid::VehicleModel& model, const std::vector<std::string>& fixed);
 
 }  // namespace framedyn::coupling

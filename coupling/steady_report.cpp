@@ -64,11 +64,11 @@ double shaker_of(rigid::Attachment a, double frequency) { return a == rigid::Att
 
 }  // namespace
 
-void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, RigidResults& r) {
+void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& run, RigidResults& r) {
   if (!study.response) return;
   const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
   // The frame loads (computed here if the study did not ask for frame_output).
-  const std::vector<FrameLoad2D> computed = r.frame_loads.empty() ? frame_loads_2d(machine, r.trajectory) : std::vector<FrameLoad2D>{};
+  const std::vector<FrameLoad2D> computed = r.frame_loads.empty() ? frame_loads_2d(model, study.machine, run, r.trajectory) : std::vector<FrameLoad2D>{};
   const std::vector<FrameLoad2D>& loads = r.frame_loads.empty() ? computed : r.frame_loads;
   std::vector<History> frame;
   for (const FrameLoad2D& l : loads) {
@@ -88,12 +88,12 @@ void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, R
       r.steady.peaks.push_back({fmt::format("rail_top_stress_point_{}", k + 1), Quantity::stress,
                                 rigid::split_peaks(r.trajectory.time, s, r.steady.operation.reached_at)});
     }
-  const char* soil = study.modal_soil == rigid::Machine2D::ModalSoil::cutting ? "cutting"
-                     : study.modal_soil == rigid::Machine2D::ModalSoil::backing ? "backing" : "none";
-  add_validity_warnings(study, machine.model(), shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
+  const char* soil = study.modal_soil == rigid::ModalSoil::cutting ? "cutting"
+                     : study.modal_soil == rigid::ModalSoil::backing ? "backing" : "none";
+  add_validity_warnings(study, model.multibody, shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
 }
 
-void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine, RigidResults3D& r) {
+void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model, RigidResults3D& r) {
   if (!study.response) return;
   const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
   std::vector<History> frame;
@@ -105,7 +105,7 @@ void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine,
         frame.push_back(std::move(h));
       }
   r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
-  add_validity_warnings(study, machine.model(), shaker_hz, "of the 3-D model", r);
+  add_validity_warnings(study, model.multibody, shaker_hz, "of the 3-D model", r);
 }
 
 }  // namespace framedyn::coupling

@@ -14,8 +14,8 @@
 #include "rigid/steady_operation.h"
 
 namespace framedyn::rigid {
-class Machine2D;
-class Machine3D;
+struct VehicleModel;
+struct VehicleRunState;
 }
 
 namespace framedyn::coupling {
@@ -43,7 +43,8 @@ struct RigidResults3D;
 // After the response (and its series and frame loads) is in `r`: sets
 // r.steady and appends the validity warnings (rotation range, chattering,
 // shaker near a mode, steady not reached) to r.warnings.
-void assess_response(const RigidStudy& study, const rigid::Machine2D& machine, RigidResults& r);
-void assess_response(const RigidStudy3D& study, const rigid::Machine3D& machine, RigidResults3D& r);
+// `model` is the study's model, `run` the state its response left.
+void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& run, RigidResults& r);
+void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model, RigidResults3D& r);
 
 }  // namespace framedyn::coupling

@@ -57,13 +57,13 @@ void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool w
   if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in, with_table);
 }
 
-template <class Machine, class Parameters>
+template <class Parameters>
 void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
   try {
-    Machine check(p);
+    const rigid::VehicleModel check = rigid::build_vehicle_model(p);
     // Each value is in range (yaml_input.cpp); their products need not be: a 1e200 lbf/in spring 1e200 in from the CG.
-    for (const auto& [name, matrix] : {std::pair<const char*, Eigen::MatrixXd>{"mass", check.mass_matrix()},
-                                       {"stiffness", check.stiffness_matrix()}, {"damping", check.damping_matrix()}})
+    for (const auto& [name, matrix] : {std::pair<const char*, Eigen::MatrixXd>{"mass", check.m},
+                                       {"stiffness", check.k_full}, {"damping", check.c_full}})
       if (!matrix.allFinite())
         throw core::InputError({file, 0, "machine"}, "masses, stiffnesses, dampings and positions whose products are finite",
                                fmt::format("a {} matrix with an infinite or undefined entry (values too large?)", name));
@@ -102,11 +102,11 @@ Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key) {
 
 void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
                    const std::string& file) {
-  check_machine_of<rigid::Machine2D>(p, fixed_coordinates, root, file);
+  check_machine_of(p, fixed_coordinates, root, file);
 }
 void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
                    const std::string& file) {
-  check_machine_of<rigid::Machine3D>(p, fixed_coordinates, root, file);
+  check_machine_of(p, fixed_coordinates, root, file);
 }
 
 StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, std::initializer_list<const char*> top_keys) {
@@ -508,9 +508,9 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
   return rigid::calibrate(modes_of, initial, c.targets, options);
 }
 
-rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req,
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& system, const ResponseRequest& req,
                                      const std::vector<std::string>& coordinate_names) {
-  const int n = machine.size();
+  const int n = system.size();
   const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n), v0 = Eigen::VectorXd::Zero(n);
   rigid::IntegrationOptions o;
   o.end_time = req.duration;
@@ -519,8 +519,57 @@ rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const Respo
   o.absolute_tolerance = 1e-12;
   o.velocity_scale = 100.0;
   o.coordinate_names = coordinate_names;
-  return req.method == ResponseRequest::Method::event_located ? rigid::integrate_event_located(machine, q0, v0, o)
-                                                              : rigid::integrate_rk4(machine, q0, v0, req.rk4_step, o);
+  return req.method == ResponseRequest::Method::event_located ? rigid::integrate_event_located(system, q0, v0, o)
+                                                              : rigid::integrate_rk4(system, q0, v0, req.rk4_step, o);
+}
+
+rigid::VehicleRun response_from_rest(const rigid::VehicleModel& model, const ResponseRequest& req) {
+  rigid::VehicleRun run{rigid::start_run(model, 0.0, Eigen::VectorXd::Zero(model.size())), {}};
+  rigid::VehicleDynamics dynamics(model, run.state);
+  run.trajectory = integrate_response(dynamics, req, model.multibody.coordinate_names());
+  return run;
+}
+
+std::optional<rigid::VehicleRunState> run_vehicle_study(const rigid::VehicleModel& model, bool modes, const std::vector<std::string>& fixed,
+                                                        rigid::ModalSoil modal_soil, const std::optional<ResponseRequest>& response,
+                                                        const core::UnitSystem& units, VehicleResults& r) {
+  r.coordinates = model.multibody.coordinate_names();
+  r.coordinate_quantities = model.multibody.coordinate_quantities();
+  if (modes) r.modes = rigid::rigid_modes(model.m, rigid::modal_stiffness(model, modal_soil), r.coordinates, fixed);
+  r.static_contacts = static_contacts(model);
+  if (modes) r.modes_by_state = modes_by_contact_state(model, fixed);
+  if (!response) return std::nullopt;
+  rigid::VehicleRun run = response_from_rest(model, *response);
+  r.trajectory = std::move(run.trajectory);
+  r.contacts = summarize_contacts(run.state, r.trajectory);
+  for (core::Warning& w : contact_warnings(r.contacts, units)) r.warnings.push_back(std::move(w));  // after the calibration's, if any
+  return std::move(run.state);
+}
+
+void set_plow_force_peaks(const std::vector<double>& time, const std::vector<double>& blade_z, const std::vector<double>& magnitude,
+                          const std::vector<bool>& cutting, double shaker_hz, double duration, VehicleResults& r) {
+  if (time.empty()) return;
+  // Each state's magnitude, zero in the other state.
+  std::vector<double> cutting_magnitude(time.size(), 0.0), backing_magnitude(time.size(), 0.0);
+  double cut = 0.0, back = 0.0;
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    (cutting[i] ? cutting_magnitude : backing_magnitude)[i] = magnitude[i];
+    cut = std::max(cut, cutting_magnitude[i]);
+    back = std::max(back, backing_magnitude[i]);
+  }
+  r.peak_cutting_force = cut;
+  r.peak_backing_force = back;
+  if (!(shaker_hz > 0)) return;
+  const double period = 1.0 / shaker_hz;
+  r.plow_vertical_peak_to_peak = average_peak_to_peak(time, blade_z, period, duration);
+  r.average_peak_cutting_force = average_cycle_peak(time, cutting_magnitude, period, duration);
+  r.average_peak_backing_force = average_cycle_peak(time, backing_magnitude, period, duration);
+}
+
+Series chain_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr) {
+  Series c{"chain_force", core::Quantity::force, {}};
+  for (std::size_t i = 0; i < tr.time.size(); ++i) c.values.push_back(rigid::chain_force(model, run, tr.time[i]));
+  return c;
 }
 
 namespace {

@@ -17,7 +17,6 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "core/units.h"
@@ -29,6 +28,8 @@
 #include "coupling/yaml_input.h"
 #include "rigid/machine_2d.h"
 #include "rigid/machine_3d.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn::coupling {
 
@@ -132,28 +133,28 @@ std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, con
 
 // Calibrates `parameters` in place (run_calibration, then the fitted values
 // set): get(p, name) and set(p, name, value) read and write a named
-// parameter, modes(machine) gives a Machine's modes as the analysis sees them.
+// parameter, modes(model) gives a vehicle model's modes as the analysis sees
+// them (the model built from the trial parameters by rigid::build_vehicle_model).
 // A fit the targets cannot determine is an InputError at the calibration block.
-template <class Machine, class Parameters, class Get, class Set, class Modes>
+template <class Parameters, class Get, class Set, class Modes>
 rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const CalibrationRequest& c, Get get, Set set, Modes modes) {
   CalibrationRequest request = c;
   {
     // Measured shapes seen through the nominal machine (the calibrated
     // parameters do not move its points or change its coordinates).
-    const Machine nominal(parameters);
+    const rigid::VehicleModel nominal = rigid::build_vehicle_model(parameters);
     const auto jacobian = [&](const std::vector<double>& point) {
-      if constexpr (std::is_same_v<Machine, rigid::Machine2D>)
-        return nominal.frame_point_jacobian(Eigen::Vector2d(point.at(0), point.at(1)));
-      else
-        return nominal.frame_point_jacobian(Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
+      // Frame points are [X, Z] in 2-D, [X, Y, Z] in 3-D.
+      return nominal.dimensions == 2 ? rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), 0.0, point.at(1)))
+                                     : rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
     };
     for (std::size_t t = 0; t < c.shapes.size(); ++t)
-      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.model(), jacobian);
+      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.multibody, jacobian);
   }
   const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
     Parameters p = parameters;
     for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
-    return modes(Machine(p));
+    return modes(rigid::build_vehicle_model(p));
   };
   rigid::ModeFamily family;
   if (c.symmetric_modes) {
@@ -177,23 +178,37 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
 }
 
 // The forced response from rest (q = v = 0 at t = 0), event-located or RK4
-// as requested; response_from_rest resets the machine's discrete state first.
-// The coordinate names (or none) name the state in the integrator's messages.
-rigid::Trajectory integrate_response(rigid::SwitchedSystem& machine, const ResponseRequest& req,
+// as requested, of a switched system; the coordinate names (or none) name the
+// state in the integrator's messages.
+rigid::Trajectory integrate_response(rigid::SwitchedSystem& system, const ResponseRequest& req,
                                      const std::vector<std::string>& coordinate_names = {});
-template <class Machine>
-rigid::Trajectory response_from_rest(Machine& machine, const ResponseRequest& req) {
-  machine.reset(0.0, Eigen::VectorXd::Zero(machine.size()));
-  return integrate_response(machine, req, machine.model().coordinate_names());
-}
+// A run of `model` from rest with a fresh state (rigid::start_run at t = 0):
+// the state it leaves (for force recovery) and its trajectory.
+rigid::VehicleRun response_from_rest(const rigid::VehicleModel& model, const ResponseRequest& req);
 
-// The chain force RCH at every sample of a response.
-template <class Machine>
-Series chain_force_series(const Machine& machine, const rigid::Trajectory& tr) {
-  Series c{"chain_force", core::Quantity::force, {}};
-  for (std::size_t i = 0; i < tr.time.size(); ++i) c.values.push_back(machine.chain_force(tr.time[i]));
-  return c;
-}
+// The one runner of a vehicle study, 2-D or 3-D (docs/theory/rigid.md
+// section 13): the coordinate table, the modes (K in `modal_soil`), the static
+// contacts and the modes by contact state of `model`; with a response, the run
+// from rest (response_from_rest) into r.trajectory, the contacts' summary and
+// their warnings. Returns the state the run left (for force recovery), or
+// nothing without a response.
+std::optional<rigid::VehicleRunState> run_vehicle_study(const rigid::VehicleModel& model, bool modes, const std::vector<std::string>& fixed,
+                                                        rigid::ModalSoil modal_soil, const std::optional<ResponseRequest>& response,
+                                                        const core::UnitSystem& units, VehicleResults& r);
+
+// Every peak key of the blade's (or boom's) soil force, with one meaning in
+// 2-D and 3-D: `magnitude` |RPF| and `cutting` the soil law's state at each
+// sample of `time`. peak_cutting_force (peak_backing_force): the largest
+// magnitude over the samples in which the blade cuts (backs off), 0 if it never
+// does. With a shaker (shaker_hz > 0) over whole periods within `duration`:
+// average_peak_cutting_force (backing): average_cycle_peak of the magnitude
+// while cutting (backing off), and plow_vertical_peak_to_peak:
+// average_peak_to_peak of `blade_z`.
+void set_plow_force_peaks(const std::vector<double>& time, const std::vector<double>& blade_z, const std::vector<double>& magnitude,
+                          const std::vector<bool>& cutting, double shaker_hz, double duration, VehicleResults& r);
+
+// The chain force RCH at every sample of a run.
+Series chain_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr);
 
 // The average over whole periods (of `period`, within `duration`) of the
 // peak-to-peak of `values` sampled at `time`; empty if no period has a sample.

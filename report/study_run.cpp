@@ -322,7 +322,7 @@ StudyRun run_rigid_3d(const YAML::Node& doc, const std::filesystem::path& file, 
                     {"delay", report::quantity(d.delay, "s")}, {"source", d.given ? "behind (given)" : "derived from the tire positions"}});
   if (!road.empty()) rigid["road_inputs"] = road;
   rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
-  rigid["modes_state"] = coupling::contact_state_name(rigid::Machine2D::ModalSoil::cutting);  // the contact state rigid.modes is in
+  rigid["modes_state"] = coupling::contact_state_name(rigid::ModalSoil::cutting);  // the contact state rigid.modes is in
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
   rigid["static"] = static_json(r.static_contacts, u);
 

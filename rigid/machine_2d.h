@@ -1,5 +1,6 @@
-// The 2-D vehicle model of the thesis's Chapter II (program CMW2D) on the
-// multibody assembly: frame (uniform section plus added masses, Appendix C),
+// The parameters of the 2-D vehicle model of the thesis's Chapter II (program
+// CMW2D), the input of its builder (rigid::build_vehicle_model, rigid/vehicle_model.h;
+// a run: rigid/vehicle_run.h). The model is the multibody assembly of: frame (uniform section plus added masses, Appendix C),
 // cab (w, theta_v; its X motion tied to the frame, Eq. 2.8), front and rear
 // tires (normal and tractive spring-dampers along the ground slope), and
 // either the vibratory plow (four-bar linkage, Appendix A; lift cylinder,
@@ -23,15 +24,12 @@
 #include <string>
 #include <vector>
 
-#include "rigid/contact_statics.h"
 #include "rigid/ground_input.h"
 #include "rigid/multibody.h"
 #include "rigid/plow_linkage.h"
 #include "rigid/soil_contact.h"
-#include "rigid/switched_system.h"
 #include "rigid/unilateral_contact.h"
 #include "rigid/vehicle_model.h"
-#include "rigid/vehicle_run.h"
 
 namespace framedyn::rigid {
 
@@ -127,79 +125,5 @@ struct FrameMassProperties {
   Eigen::Vector2d reference{0, 0};  // (XCG, ZCG) of the thesis
 };
 FrameMassProperties frame_mass_properties(const Frame2D& frame, const Cab2D& cab);
-
-// The 2-D machine as one object: a compatibility wrapper over the vehicle
-// model (rigid/vehicle_model.h, built by build_vehicle_model) and the state of
-// its last run (rigid/vehicle_run.h). New code builds a VehicleModel and runs it
-// (run_vehicle); this class keeps the older call sites working.
-class Machine2D : public SwitchedSystem {
- public:
-  explicit Machine2D(const Machine2DParameters& p);
-
-  const Multibody& model() const { return model_.multibody; }
-  const VehicleModel& vehicle() const { return model_; }
-  const VehicleRunState& run_state() const { return state_; }
-  const Machine2DParameters& parameters() const { return p_; }
-  const FrameMassProperties& frame_mass() const { return frame_; }
-  // Index of a coordinate by name ("x", "psi", ...), -1 if absent.
-  int coordinate(const std::string& name) const { return model_.coordinate(name); }
-
-  // K and C with every element at full value (soil K5 included, every contact engaged).
-  Eigen::MatrixXd stiffness_matrix() const { return model_.k_full; }
-  // The stiffness the response sees in a contact state (rigid::modal_stiffness).
-  using ModalSoil = rigid::ModalSoil;
-  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const { return modal_stiffness(model_, soil); }
-  Eigen::MatrixXd damping_matrix() const { return model_.c_full; }
-  Eigen::MatrixXd mass_matrix() const { return model_.m; }
-
-  // Static equilibrium under gravity with the contact law the response starts
-  // in (rigid/contact_statics.h); the response's q is measured from it.
-  Eigen::VectorXd static_deflection() const { return model_.statics.deflection; }
-  std::vector<double> static_element_forces() const { return model_.statics.element_forces; }
-  const ContactStatics& statics() const { return model_.statics; }
-
-  // SwitchedSystem: VehicleDynamics over the model and this object's run state.
-  int size() const override { return model_.size(); }
-  void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
-  int event_count() const override;
-  void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
-  std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
-                       const std::vector<int>& directions) override;
-  EventLength last_event_length() const override { return state_.last_event_length; }
-  double next_scheduled_change(double t) const override;
-  std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
-
-  // Resets the run state for a run starting at t with (q, v = 0): rigid::start_run.
-  void reset(double t, const Eigen::VectorXd& q) { state_ = start_run(model_, t, q); }
-
-  // The soil law's state (anchor in machine axes, Y = 0): rigid/vehicle_run.h.
-  using SoilState = rigid::SoilState;
-  const std::vector<SoilState>& soil_history() const { return state_.soil.history(); }
-  SoilState soil_state_at(double t) const { return rigid::soil_state_at(state_, t); }
-
-  // Forces for recovery (rigid/vehicle_run.h). Plow resultant RPF (Eq. 2.37), N, in (X, Z).
-  Eigen::Vector2d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
-  double chain_force(double t) const { return rigid::chain_force(model_, state_, t); }
-  bool cutting() const { return state_.soil.cutting(); }
-  double soil_line_at(double t) const { return state_.soil.line_at(t); }
-
-  // Displacement Jacobian of a point fixed to the frame at (X, Z).
-  Jacobian frame_point_jacobian(const Eigen::Vector2d& point) const;
-  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
-    return rigid::element_tension(model_, state_, element, t, q, v);
-  }
-  // The shaker's force vector at t (X, Z), N; zero without a plow.
-  Eigen::Vector2d shaker_force(double t) const;
-  const GroundInput* ground_input_of(int element) const { return rigid::ground_input_of(model_, element); }
-  const UnilateralContacts& contacts() const { return state_.contacts; }
-  int blade_point() const { return model_.blade_point; }
-  const std::vector<int>& soil_elements() const { return model_.soil_elements; }
-
- private:
-  Machine2DParameters p_;
-  FrameMassProperties frame_;
-  VehicleModel model_;
-  mutable VehicleRunState state_;  // mutable: the SwitchedSystem interface evaluates through VehicleDynamics
-};
 
 }  // namespace framedyn::rigid

@@ -1,13 +1,8 @@
-// The 3-D machine on the multibody assembly (thesis Chapter III, Eqs.
-// 3.1-3.12, Appendices E and F, Table II); see machine_3d.h and
-// docs/theory/rigid.md, section 10.
+// Mass properties of the 3-D machine's rigid parts (Appendix F, Eqs. F.1-F.12);
+// see machine_3d.h and docs/theory/rigid.md, section 10.
 #include "rigid/machine_3d.h"
 
-#include <fmt/format.h>
-
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace framedyn::rigid {
@@ -34,25 +29,6 @@ RigidPart3D combine(const std::vector<RigidPart3D>& parts, const std::string& na
     c.inertia += p.inertia + p.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   }
   return c;
-}
-
-Machine3D::Machine3D(const Machine3DParameters& p)
-    : p_(p), model_(build_vehicle_model(p)), state_(start_run(model_, 0.0, Eigen::VectorXd::Zero(model_.size()))) {}
-
-void Machine3D::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const {
-  VehicleDynamics(model_, state_).acceleration(t, q, v, a);
-}
-int Machine3D::event_count() const { return VehicleDynamics(model_, state_).event_count(); }
-void Machine3D::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const {
-  VehicleDynamics(model_, state_).events(t, q, v, g);
-}
-std::string Machine3D::on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
-                                const std::vector<int>& directions) {
-  return VehicleDynamics(model_, state_).on_event(t, q, v, fired, directions);
-}
-double Machine3D::next_scheduled_change(double t) const { return VehicleDynamics(model_, state_).next_scheduled_change(t); }
-std::string Machine3D::on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-  return VehicleDynamics(model_, state_).on_scheduled_change(t, q, v);
 }
 
 }  // namespace framedyn::rigid

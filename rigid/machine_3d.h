@@ -1,5 +1,6 @@
-// The 3-D vehicle model of the thesis's Chapter III (program CMW3D) on the
-// multibody assembly (rigid/multibody.h): frame assembly (6 DOF), cab on
+// The parameters of the 3-D vehicle model of the thesis's Chapter III (program
+// CMW3D), the input of its builder (rigid::build_vehicle_model, rigid/vehicle_model.h;
+// a run: rigid/vehicle_run.h). The model is the multibody assembly (rigid/multibody.h) of: frame assembly (6 DOF), cab on
 // four mounts with spring-dampers in X, Y, Z (6 DOF), front axle pinned to
 // the frame at point 20 and free to roll (eta; Eq. 3.4, Appendix F), rear
 // axle rigid with the frame (pin 26 plus leveling cylinder 27), four tires
@@ -32,16 +33,13 @@
 #include <string>
 #include <vector>
 
-#include "rigid/contact_statics.h"
 #include "rigid/ground_input.h"
 #include "rigid/machine_2d.h"
 #include "rigid/multibody.h"
 #include "rigid/plow_linkage.h"
 #include "rigid/soil_contact.h"
-#include "rigid/switched_system.h"
 #include "rigid/unilateral_contact.h"
 #include "rigid/vehicle_model.h"
-#include "rigid/vehicle_run.h"
 
 namespace framedyn::rigid {
 
@@ -162,92 +160,6 @@ struct Machine3DParameters {
   // Tires and the bounce tire push only (unilateral, rigid/unilateral_contact.h),
   // or act as the thesis's bilateral springs (linear).
   ContactLaw contacts = ContactLaw::unilateral;
-};
-
-// The 3-D machine as one object: a compatibility wrapper over the vehicle
-// model (rigid/vehicle_model.h, built by build_vehicle_model) and the state of
-// its last run (rigid/vehicle_run.h), as Machine2D.
-class Machine3D : public SwitchedSystem {
- public:
-  explicit Machine3D(const Machine3DParameters& p);
-
-  const Multibody& model() const { return model_.multibody; }
-  const VehicleModel& vehicle() const { return model_; }
-  const VehicleRunState& run_state() const { return state_; }
-  const Machine3DParameters& parameters() const { return p_; }
-  int coordinate(const std::string& name) const { return model_.coordinate(name); }  // -1 if absent
-  const Eigen::Vector3d& reference() const { return model_.reference; }
-
-  Eigen::MatrixXd mass_matrix() const { return model_.m; }
-  Eigen::MatrixXd stiffness_matrix() const { return model_.k_full; }  // soil at full value
-  Eigen::MatrixXd damping_matrix() const { return model_.c_full; }
-
-  // Static equilibrium under gravity with the contact law the response starts
-  // in (rigid/contact_statics.h, Eqs. 11.1-11.4); q is measured from it.
-  Eigen::VectorXd static_deflection() const { return model_.statics.deflection; }
-  // The static force SF_e = -k_e G_e q_s in every element (compression positive; 0 for the soil under unilateral contacts).
-  std::vector<double> static_element_forces() const { return model_.statics.element_forces; }
-  const ContactStatics& statics() const { return model_.statics; }
-  // The stiffness the response sees in a contact state (Eq. 11.7).
-  Eigen::MatrixXd stiffness_matrix(ModalSoil soil) const { return modal_stiffness(model_, soil); }
-  const UnilateralContacts& contacts() const { return state_.contacts; }
-
-  // SwitchedSystem: VehicleDynamics over the model and this object's run state.
-  int size() const override { return model_.size(); }
-  void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) const override;
-  int event_count() const override;
-  void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double* g) const override;
-  std::string on_event(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const std::vector<int>& fired,
-                       const std::vector<int>& directions) override;
-  EventLength last_event_length() const override { return state_.last_event_length; }
-  double next_scheduled_change(double t) const override;
-  std::string on_scheduled_change(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
-  void reset(double t, const Eigen::VectorXd& q) { state_ = start_run(model_, t, q); }
-
-  // The soil law's state (rigid/vehicle_run.h): line, the blade displacement
-  // along the travel where the soil is unpenetrated, m; anchor, the blade
-  // displacement where the soil springs are unstretched, m (fixed in the
-  // machine: SoilLaw::contact_moves_with_soil is not supported in 3-D).
-  using SoilState = rigid::SoilState;
-  const std::vector<SoilState>& soil_history() const { return state_.soil.history(); }
-  SoilState soil_state_at(double t) const { return rigid::soil_state_at(state_, t); }
-  bool cutting() const { return state_.soil.cutting(); }
-
-  // Recovery (rigid/vehicle_run.h).
-  Jacobian frame_point_jacobian(const Eigen::Vector3d& point) const { return rigid::frame_point_jacobian(model_, point); }
-  double element_tension(int element, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
-    return rigid::element_tension(model_, state_, element, t, q, v);
-  }
-  Eigen::Vector3d shaker_force(double t) const { return rigid::shaker_force(model_, t); }  // N, fixed axes
-  Eigen::Vector3d plow_force(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
-    return rigid::plow_force(model_, state_, t, q, v);  // soil on the blade/boom reversed: Eq. 2.37 in 3-D
-  }
-  double chain_force(double t) const { return rigid::chain_force(model_, state_, t); }               // RCH, N
-  Eigen::Vector3d chain_force_vector(double t) const { return chain_force(t) * model_.chain_direction; }  // RCH along the chain, N
-  Eigen::Vector3d chain_moment(double t) const { return Eigen::Vector3d(0.0, -chain_force(t) * model_.chain_moment_arm, 0.0); }  // RMCH about +Y, N m
-  const GroundInput* ground_input_of(int element) const { return rigid::ground_input_of(model_, element); }
-
-  // Where the model put things (machine axes, m), and unit directions.
-  int blade_point() const { return model_.blade_point; }
-  int shaker_point() const { return model_.shaker_point; }
-  int chain_point() const { return model_.chain_point; }
-  const std::vector<int>& soil_elements() const { return model_.soil_elements; }
-  Eigen::Vector3d travel_direction() const { return model_.cut_direction; }  // horizontal, rearward relative to the ground (-travel)
-  using PlowPlacement = rigid::PlowPlacement;
-  const PlowPlacement& plow_placement() const { return model_.plow_placement; }
-  double linkage_ratio() const { return model_.linkage_ratio; }
-  // Body indices in model().bodies(), in the order build_vehicle_model adds them.
-  int frame_body() const { return model_.frame_body; }
-  int reel_body() const { return 1; }
-  int rear_axle_body() const { return 2; }
-  int front_axle_body() const { return 3; }
-  int cab_body() const { return 4; }
-  int plow_body() const { return p_.attachment == Attachment::plow ? 5 : -1; }
-
- private:
-  Machine3DParameters p_;
-  VehicleModel model_;
-  mutable VehicleRunState state_;  // mutable: the SwitchedSystem interface evaluates through VehicleDynamics
 };
 
 }  // namespace framedyn::rigid

@@ -1,5 +1,5 @@
 // The soil law and the digging chain's tooth law shared by the 2-D and the
-// 3-D machine (Machine2D, Machine3D):
+// 3-D machine (rigid::VehicleModel, rigid/vehicle_run.h):
 //
 // - SoilContact: the cutting/backing switching law of the soil at the blade
 //   or boom point (thesis Eq. 2.36, with the soil streaming past the machine
@@ -46,7 +46,7 @@ struct SoilLaw {
   // (VS cos theta_g, -VS sin theta_g) from the instant the cut began; the
   // spring then acts on the blade's penetration into the soil it is cutting,
   // as the damper acts on its velocity relative to that soil. 2-D only:
-  // Machine3D keeps the anchor fixed and its study reader refuses it.
+  // the 3-D model keeps the anchor fixed and its study reader refuses it.
   bool contact_moves_with_soil = false;
   // The cut-face reading: the cutting blade fails the soil it pushes, so the
   // springs' ground end stays at the blade while it cuts (they carry

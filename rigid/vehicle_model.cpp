@@ -155,6 +155,7 @@ VehicleModel build_vehicle_model(const Machine2DParameters& p) {
     return mb.add_body_point(name, cab_body, in_3d(p2 - p.cab.cg));
   };
   vm.frame_body = frame_body;
+  vm.cab_body = cab_body;
 
   const Eigen::Vector3d ground_normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));
   const Eigen::Vector3d ground_tangent(std::cos(p.ground_slope), 0.0, -std::sin(p.ground_slope));  // rearward along the ground
@@ -208,7 +209,7 @@ VehicleModel build_vehicle_model(const Machine2DParameters& p) {
     plow.translation = shank_point(pl.cg);
     plow.rotation = Jacobian::Zero(3, n);
     plow.rotation.row(Y) = shank_rotation;
-    mb.add_body(plow);
+    vm.plow_body = mb.add_body(plow);
     vm.blade_point = mb.add_point({"blade", shank_point(pl.blade_point)});
     vm.shaker_point = mb.add_point({"shaker", shank_point(pl.shaker_point)});
     const int bounce = mb.add_point({"bounce_tire", shank_point(pl.bounce_tire_point)});
@@ -487,7 +488,11 @@ VehicleModel build_vehicle_model(const Machine3DParameters& p) {
   vm.contact_definitions = contacts;
   vm.contact_law = p.contacts;
   finish_contacts(vm);
-  (void)reel_body, (void)rear_axle_body, (void)cab_body, (void)plow_body;
+  vm.reel_body = reel_body;
+  vm.rear_axle_body = rear_axle_body;
+  vm.front_axle_body = front_axle_body;
+  vm.cab_body = cab_body;
+  vm.plow_body = plow_body;
   return vm;
 }
 

@@ -76,7 +76,9 @@ struct VehicleModel {
   double soil_line_speed = 0.0;               // VS cos theta_g, m/s
 
   int blade_point = -1, shaker_point = -1, chain_point = -1;
-  int frame_body = 0;
+  // Body indices in multibody.bodies() (-1: the model has no such body).
+  int frame_body = 0, cab_body = -1, plow_body = -1;
+  int reel_body = -1, rear_axle_body = -1, front_axle_body = -1;  // 3-D only: rigid with the frame (reel) or its own (axles)
   Eigen::Vector3d frame_cg{0, 0, 0};          // c.g. of the frame body (for frame_point_jacobian)
   Eigen::Vector3d reference{0, 0, 0};         // where x, (y,) z are measured
 

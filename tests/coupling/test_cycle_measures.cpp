@@ -1,6 +1,7 @@
 // The per-cycle measures of a plowing run (coupling/study_blocks.h): the
 // average peak-to-peak blade motion and the thesis's "average peak" plow
-// forces of Figures 9-10, on hand-made signals whose cycle peaks are known.
+// forces of Figures 9-10, and every peak key of the blade force
+// (set_plow_force_peaks), on hand-made signals whose cycle peaks are known.
 #include <gtest/gtest.h>
 
 #include "coupling/study_blocks.h"
@@ -51,6 +52,40 @@ TEST(CycleMeasures, OnlyWholeCyclesWithinTheDurationCount) {
   // A signal that never rises above zero has no average peak.
   const std::vector<double> below(s.values.size(), -1.0);
   EXPECT_FALSE(coupling::average_cycle_peak(s.time, below, kPeriod, 4 * kPeriod));
+}
+
+// Every peak key of the blade force (set_plow_force_peaks, Eqs. 13.1-13.2),
+// the same function in 2-D and 3-D: the samples are split by the soil law's
+// state, not by the force's direction. Two shaker periods; |RPF| = A_c |sin|
+// with A = 2, 5, exactly 0 at the period ends; the blade cuts only in the
+// first half of the first period. Hand values: peak cutting 2 (t = T/4),
+// peak backing 5 (t = 5T/4); the cutting average counts the first period only
+// (2), the backing one both (max 2 at 3T/4, then 5: 3.5).
+TEST(CycleMeasures, PlowForcePeaksSplitTheSamplesByTheSoilLawsState) {
+  std::vector<double> time, blade_z, magnitude;
+  std::vector<bool> cutting;
+  for (int k = 0; k <= 200; ++k) {
+    time.push_back(kPeriod * k / 100.0);
+    const double s = std::sin(2 * M_PI * k / 100.0);
+    blade_z.push_back(s);
+    magnitude.push_back(k % 100 == 0 ? 0.0 : (k < 100 ? 2.0 : 5.0) * std::abs(s));
+    cutting.push_back(k >= 1 && k <= 50);
+  }
+  coupling::VehicleResults r;
+  coupling::set_plow_force_peaks(time, blade_z, magnitude, cutting, 1.0 / kPeriod, 2 * kPeriod, r);
+  ASSERT_TRUE(r.peak_cutting_force && r.peak_backing_force && r.average_peak_cutting_force && r.average_peak_backing_force);
+  EXPECT_NEAR(*r.peak_cutting_force, 2.0, 1e-12);
+  EXPECT_NEAR(*r.peak_backing_force, 5.0, 1e-12);
+  EXPECT_NEAR(*r.average_peak_cutting_force, 2.0, 1e-12);
+  EXPECT_NEAR(*r.average_peak_backing_force, (2.0 + 5.0) / 2, 1e-12);
+  ASSERT_TRUE(r.plow_vertical_peak_to_peak);
+  EXPECT_NEAR(*r.plow_vertical_peak_to_peak, 2.0, 1e-12);
+  // Without a shaker (a chain): the peaks, but no per-cycle measures.
+  coupling::VehicleResults chain;
+  coupling::set_plow_force_peaks(time, blade_z, magnitude, cutting, 0.0, 2 * kPeriod, chain);
+  ASSERT_TRUE(chain.peak_cutting_force);
+  EXPECT_NEAR(*chain.peak_cutting_force, 2.0, 1e-12);
+  EXPECT_FALSE(chain.average_peak_cutting_force || chain.plow_vertical_peak_to_peak);
 }
 
 }  // namespace

@@ -81,9 +81,9 @@ struct FrameAssemblyMotion {
   Vector3d acceleration_at;           // m/s^2 at `about`
   Vector3d angular_acceleration;      // rad/s^2
 };
-FrameAssemblyMotion vehicle_frame(const rigid::Machine3D& m, const rigid::Trajectory& tr, std::size_t i, const Vector3d& about) {
-  const rigid::Body& frame = m.model().bodies()[static_cast<std::size_t>(m.frame_body())];
-  const Vector3d cg = rigid::combine(m.parameters().frame.parts, "frame").cg;
+FrameAssemblyMotion vehicle_frame(const rigid::VehicleModel& m, const rigid::Trajectory& tr, std::size_t i, const Vector3d& about) {
+  const rigid::Body& frame = m.multibody.bodies()[static_cast<std::size_t>(m.frame_body)];
+  const Vector3d cg = m.frame_cg;  // the frame parts' c.g. (rigid::combine)
   const Vector3d a = frame.translation * tr.a[i], alpha = frame.rotation * tr.a[i];
   FrameAssemblyMotion out;
   out.inertia_force << frame.mass * a, frame.inertia * alpha + (cg - about).cross(frame.mass * a);
@@ -132,7 +132,7 @@ TEST(FrameBalance, LoadsOnTheMeshIncludingTheSwingPinEqualTheVehicleFrameAssembl
   where.pop_back();
   const coupling::LoadResultants without_19 = coupling::applied_load_resultants(mesh, body, coupling::map_load_points(mesh, where), without);
 
-  const rigid::Machine3D machine(r.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(r.machine);
   double scale_f = 0, scale_m = 0, worst_f = 0, worst_m = 0, missing_f = 0;
   // Inertia relief's rigid-body acceleration of the bare model against the vehicle model's frame
   // acceleration at the mesh's c.g., with and without point 19: least-squares slope and correlation.
@@ -266,7 +266,7 @@ TEST(FrameParts, ShippedPipelinesInertiaReliefAccelerationIsTheVehicleModelsFram
 
   // Inertia relief's rigid-body acceleration at the assembly's c.g. against the vehicle model's, every sample.
   const coupling::LoadResultants res = coupling::applied_load_resultants(f.model, f.mass, f.mapping, f.loads);
-  const rigid::Machine3D machine(s.results.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(s.results.machine);
   std::vector<double> vehicle_a[6], relief_a[6];
   double worst = 0, scale = 0, worst_rot = 0, scale_rot = 0;
   for (std::size_t i = 0; i < s.results.trajectory.time.size(); ++i) {

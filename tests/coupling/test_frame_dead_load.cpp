@@ -106,8 +106,8 @@ struct ShippedStatics {
 ShippedStatics shipped_statics(double slope_deg, bool gravity_along_ground_normal = false) {
   coupling::RigidStudy3D study = coupling::read_rigid_study_3d(kSource + "/examples/offset_plowing.yaml");
   study.machine.ground_slope = slope_deg * 3.14159265358979323846 / 180.0;
-  const rigid::Machine3D machine(study.machine);
-  const coupling::LoadHistory loads = coupling::all_frame_loads(coupling::static_frame_loads_3d(machine));
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
+  const coupling::LoadHistory loads = coupling::all_frame_loads(coupling::static_frame_loads_3d(machine, study.machine));
   coupling::FrameStudyRequest q = *study.frame_response;
   fem::FrameModel model = coupling::read_frame_mesh(q);
   std::vector<coupling::LoadPointLocation> where;

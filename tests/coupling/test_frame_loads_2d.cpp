@@ -9,26 +9,35 @@
 #include "coupling/frame_loads_2d.h"
 #include "coupling/rigid_study.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace framedyn {
 namespace {
 
+// A study's model and one run of it (the state it left, its trajectory).
 struct PlowRun {
   coupling::RigidStudy study;
-  std::unique_ptr<rigid::Machine2D> machine;
+  rigid::VehicleModel model;
+  rigid::VehicleRunState state;
   rigid::Trajectory trajectory;
+  std::vector<coupling::FrameLoad2D> loads() const { return coupling::frame_loads_2d(model, study.machine, state, trajectory); }
+  coupling::StressResultants resultants(const std::vector<coupling::FrameLoad2D>& loads, const std::vector<double>& x) const {
+    return coupling::frame_stress_resultants(model, study.machine.frame, trajectory, loads, x);
+  }
 };
 
 PlowRun plowing(double duration, const std::string& example = "r100_plow_2d.yaml") {
   PlowRun r;
   r.study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/" + example);
-  r.machine = std::make_unique<rigid::Machine2D>(r.study.machine);
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r.machine->size());
-  r.machine->reset(0.0, zero);
+  r.model = rigid::build_vehicle_model(r.study.machine);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r.model.size());
   rigid::IntegrationOptions o;
   o.end_time = duration;
   o.output_interval = 1e-3;
-  r.trajectory = rigid::integrate_event_located(*r.machine, zero, zero, o);
+  rigid::VehicleRun run = rigid::run_vehicle(r.model, zero, zero, o);
+  r.state = std::move(run.state);
+  r.trajectory = std::move(run.trajectory);
   return r;
 }
 
@@ -41,9 +50,9 @@ PlowRun plowing(double duration, const std::string& example = "r100_plow_2d.yaml
 // Tolerance: round-off relative to the largest load (the shaker's 1.2e5 N).
 TEST(FrameLoads2D, FrameFreeBodyBalancesAtEveryInstant) {
   const PlowRun r = plowing(0.2);
-  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
+  const std::vector<coupling::FrameLoad2D> loads = r.loads();
   const double behind_everything = 10.0;  // m
-  const coupling::StressResultants sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {behind_everything});
+  const coupling::StressResultants sr = r.resultants(loads, {behind_everything});
   double scale = 0.0;
   for (const auto& l : loads)
     for (const auto& f : l.force) scale = std::max(scale, f.norm());
@@ -66,7 +75,7 @@ TEST(FrameLoads2D, PartLoadNamesAreTheLoadsOfThePlowAndChainMachines) {
     std::set<std::string> added;
     for (const rigid::AddedMass& a : r.study.machine.frame.added_masses) added.insert(a.name);
     ASSERT_FALSE(added.empty()) << example;
-    for (const coupling::FrameLoad2D& l : coupling::frame_loads_2d(*r.machine, r.trajectory))
+    for (const coupling::FrameLoad2D& l : r.loads())
       if (!added.count(l.name)) given.insert(l.name);
   }
   const std::vector<std::string>& listed = coupling::part_load_names_2d();
@@ -76,8 +85,8 @@ TEST(FrameLoads2D, PartLoadNamesAreTheLoadsOfThePlowAndChainMachines) {
 // In front of the frame's front end there is nothing to cut: all resultants zero.
 TEST(FrameLoads2D, ResultantsVanishInFrontOfTheFrame) {
   const PlowRun r = plowing(0.05);
-  const auto loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
-  const auto sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {-2.0});
+  const auto loads = r.loads();
+  const auto sr = r.resultants(loads, {-2.0});
   for (std::size_t i = 0; i < r.trajectory.time.size(); ++i) {
     EXPECT_EQ(sr.srx[i][0], 0.0);
     EXPECT_EQ(sr.srz[i][0], 0.0);
@@ -91,11 +100,11 @@ TEST(FrameLoads2D, ResultantsVanishInFrontOfTheFrame) {
 // plus the tube's share, which vanishes as the two cuts close in).
 TEST(FrameLoads2D, MomentChangesBetweenCutsByShearTimesDistance) {
   const PlowRun r = plowing(0.05);
-  const auto loads = coupling::frame_loads_2d(*r.machine, r.trajectory);
+  const auto loads = r.loads();
   // Two cuts 1 mm apart between two loads (the front axle at X = 0 and the
   // ballast at -22 in): no load between them.
   const double xa = -0.20, xb = -0.199;
-  const auto sr = coupling::frame_stress_resultants(*r.machine, r.trajectory, loads, {xa, xb});
+  const auto sr = r.resultants(loads, {xa, xb});
   for (std::size_t i = 0; i < r.trajectory.time.size(); ++i) {
     // SRMY(x) = sum M + sum F_x (Z_j - Z_op) + F_z (X_op - X_j) + tube: d SRMY/dX = sum F_z + tube share = -SRZ.
     const double slope = (sr.srmy[i][1] - sr.srmy[i][0]) / (xb - xa);

@@ -64,7 +64,7 @@ TEST(QuasiStaticCut, BeamFrameUnderSlowlyAppliedPlowLoadsReproducesTheStaticCutO
   const std::size_t i = run.trajectory.time.size() - 1;
 
   // Eq. 2.47 at that instant with the frame at rest (no tube inertia): the static cut of the loads.
-  framedyn::rigid::Machine2D machine(study.machine);
+  const framedyn::rigid::VehicleModel machine = framedyn::rigid::build_vehicle_model(study.machine);
   framedyn::rigid::Trajectory still;
   still.time = {0.0};
   still.q = {Eigen::VectorXd::Zero(run.trajectory.q[i].size())};
@@ -125,7 +125,7 @@ TEST(QuasiStaticCut, BeamFrameUnderSlowlyAppliedPlowLoadsReproducesTheStaticCutO
     if (!straddled) cuts.push_back(x);
   }
   ASSERT_GE(cuts.size(), 8u);
-  const c::StressResultants cut = c::frame_stress_resultants(machine, still, loads, cuts, 0.0);
+  const c::StressResultants cut = c::frame_stress_resultants(machine, study.machine.frame, still, loads, cuts, 0.0);
 
   // Bound of the dynamic residual of a linear ramp of duration T on an
   // undamped oscillator of circular frequency w: 2 / (w T) of the static

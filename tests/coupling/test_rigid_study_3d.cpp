@@ -57,9 +57,9 @@ TEST(ThesisCases3D, CalibrationFitOfTableVCase6Chain3DColumn) { check_case("exam
 
 TEST(ShippedExamples3D, PlowStudiesHave15AndChainStudies13Coordinates) {
   for (const char* f : {"examples/r100_plow_straight.yaml", "examples/r100_plow_offset.yaml"})
-    EXPECT_EQ(framedyn::rigid::Machine3D(coupling::read_rigid_study_3d(source(f)).machine).size(), 15) << f;
+    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study_3d(source(f)).machine).size(), 15) << f;
   for (const char* f : {"examples/r100_chain_center.yaml", "examples/r100_chain_offset.yaml"})
-    EXPECT_EQ(framedyn::rigid::Machine3D(coupling::read_rigid_study_3d(source(f)).machine).size(), 13) << f;
+    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study_3d(source(f)).machine).size(), 13) << f;
   const auto offset = coupling::read_rigid_study_3d(source("examples/r100_plow_offset.yaml")).machine;
   EXPECT_NEAR(offset.front_tires.steering_angle, 22 * M_PI / 180, 1e-15);
   EXPECT_NEAR(offset.rear_tires.steering_angle, 22 * M_PI / 180, 1e-15);

@@ -22,6 +22,7 @@
 #include "coupling/rigid_study_3d.h"
 #include "rigid/machine_2d.h"
 #include "rigid/machine_3d.h"
+#include "rigid/vehicle_model.h"
 
 namespace {
 
@@ -33,12 +34,11 @@ namespace fc = framedyn::coupling;
 }
 
 // What a rigid-body reader accepted assembles: finite M, K, C and a positive definite M.
-template <class Machine>
-void check_machine(const Machine& machine) {
-  if (!machine.mass_matrix().allFinite()) finding("accepted a study whose mass matrix is not finite");
-  if (!machine.stiffness_matrix().allFinite()) finding("accepted a study whose stiffness matrix is not finite");
-  if (!machine.damping_matrix().allFinite()) finding("accepted a study whose damping matrix is not finite");
-  if (machine.mass_matrix().llt().info() != Eigen::Success) finding("accepted a study whose mass matrix is not positive definite");
+void check_machine(const framedyn::rigid::VehicleModel& model) {
+  if (!model.m.allFinite()) finding("accepted a study whose mass matrix is not finite");
+  if (!model.k_full.allFinite()) finding("accepted a study whose stiffness matrix is not finite");
+  if (!model.c_full.allFinite()) finding("accepted a study whose damping matrix is not finite");
+  if (model.m.llt().info() != Eigen::Success) finding("accepted a study whose mass matrix is not positive definite");
 }
 
 bool refused_at_model(const framedyn::core::InputError& e) { return e.where().key == "model"; }
@@ -61,13 +61,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) finding("cannot write the harness's temporary file");
   try {
     try {
-      check_machine(framedyn::rigid::Machine2D(fc::read_rigid_study(file).machine));
+      check_machine(framedyn::rigid::build_vehicle_model(fc::read_rigid_study(file).machine));
       return 0;
     } catch (const framedyn::core::InputError& e) {
       if (!refused_at_model(e)) throw;
     }
     try {
-      check_machine(framedyn::rigid::Machine3D(fc::read_rigid_study_3d(file).machine));
+      check_machine(framedyn::rigid::build_vehicle_model(fc::read_rigid_study_3d(file).machine));
       return 0;
     } catch (const framedyn::core::InputError& e) {
       if (!refused_at_model(e)) throw;

@@ -12,6 +12,8 @@
 #include "coupling/rigid_study.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_2d.h"
+#include "rigid/rigid_modes.h"
+#include "rigid/vehicle_model.h"
 #include "tests/support/calibration_checks.h"
 #include "tests/support/temp_dir.h"
 
@@ -339,10 +341,10 @@ TEST(CalibrationStudy, MeasuredShapeInTheStudysUnitsIsTheMachinesOwnModeShape) {
   const auto pitch = std::find_if(own.modes.begin(), own.modes.end(), [](const rigid::RigidMode& m) { return m.dominant == "theta_y"; });
   ASSERT_NE(pitch, own.modes.end());
   const rigid::RigidMode& mode = *pitch;
-  const rigid::Machine2D machine(base.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(base.machine);
   const int iz = machine.coordinate("z"), it = machine.coordinate("theta_y");
   const double in = 0.0254, scale = 3.7;
-  const double point_z = (machine.frame_point_jacobian(Eigen::Vector2d(40 * in, 10 * in)).row(2) * mode.shape)(0);
+  const double point_z = (rigid::frame_point_jacobian(machine, Eigen::Vector3d(40 * in, 0.0, 10 * in)).row(2) * mode.shape)(0);
   const double z_in = scale * mode.shape(iz) / in, theta = scale * mode.shape(it), p_in = scale * point_z / in;
   const std::string block = fmt::format(
       "calibration:\n  parameters: [tires.front.normal.stiffness]\n  targets:\n    - frequency_hz: {:.17g}\n      shape:\n        components:\n"
@@ -399,9 +401,9 @@ TEST(CalibrationStudy, InertiaBoundsFollowTheDeclaredBox) {
 // fitted value, its k and the limit, in the study's units (in, lbf s^2 in).
 TEST(CalibrationStudy, FittedInertiaOutsideItsBoxIsWarnedOf) {
   const coupling::RigidStudy nominal = case1_with_calibration("");
-  const rigid::Machine2D machine(nominal.machine);
+  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine);
   double f0 = 0;
-  for (const rigid::RigidMode& m : rigid::rigid_modes(machine.mass_matrix(), machine.stiffness_matrix(nominal.modal_soil), machine.model().coordinate_names()))
+  for (const rigid::RigidMode& m : rigid::rigid_modes(model.m, rigid::modal_stiffness(model, nominal.modal_soil), model.multibody.coordinate_names()))
     if (m.dominant == "theta_v") f0 = m.frequency_hz;
   ASSERT_GT(f0, 0);
   const std::string head = fmt::format("calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {{frequency_hz: {:.17g}, dominant: theta_v}}\n  bounds:\n", 0.85 * f0);
@@ -476,7 +478,7 @@ namespace {
 // Thesis Table V, case 5 (plow attached), 2-D column, fitted the same way.
 TEST(ThesisCase5, CalibrationFitOfTableVCase5KeepsItsBoundsAndReportsItsResidual) {
   const coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/thesis/case5_2d.yaml");
-  ASSERT_TRUE(study.modal_soil == rigid::Machine2D::ModalSoil::cutting);
+  ASSERT_TRUE(study.modal_soil == rigid::ModalSoil::cutting);
   const coupling::RigidResults r = coupling::run_rigid_study(study);
   ASSERT_TRUE(r.calibration.has_value());
   test::expect_fit_properties("case 5, 2-D", *study.calibration, *r.calibration, r.modes);
@@ -494,8 +496,8 @@ TEST(ThesisCase5, PsiModeOfTheAttachedPlowIsTheIsolatedAppendixGModeExactly) {
   for (const double k5 : {0.0, 6000.0 * kNewtonPerMetrePerLbfPerInch, 40000.0 * kNewtonPerMetrePerLbfPerInch, 1e8}) {  // lbf/in -> N/m
     rigid::Machine2DParameters p = study.machine;
     p.soil.stiffness = k5;
-    const rigid::Machine2D m(p);
-    const std::vector<rigid::RigidMode> modes = rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names());
+    const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+    const std::vector<rigid::RigidMode> modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names());
     const double expected = std::sqrt((k5 + p.plow.bounce_tire.stiffness) / p.plow.mass) / kTwoPi;
     const int psi = m.coordinate("psi");
     bool found = false;
@@ -527,25 +529,25 @@ TEST(ModalSoil, CuttingBackingAndNoneDifferByTheSoilSpringsShare) {
   study.machine.soil.stiffness_reduction = 0.3;
   {
     ASSERT_TRUE(study.machine.soil.cut_face);  // the shipped reading
-    const rigid::Machine2D cut(study.machine);
-    const double scale = cut.stiffness_matrix().norm();
-    EXPECT_LT((cut.stiffness_matrix(rigid::Machine2D::ModalSoil::cutting) - cut.stiffness_matrix(rigid::Machine2D::ModalSoil::none)).norm(),
+    const rigid::VehicleModel cut = rigid::build_vehicle_model(study.machine);
+    const double scale = cut.k_full.norm();
+    EXPECT_LT((rigid::modal_stiffness(cut, rigid::ModalSoil::cutting) - rigid::modal_stiffness(cut, rigid::ModalSoil::none)).norm(),
               1e-14 * scale);
   }
   study.machine.soil.cut_face = false;
   study.machine.soil.spring_from_contact = false;
   study.machine.soil.contact_moves_with_soil = false;
-  const rigid::Machine2D m(study.machine);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
   Eigen::MatrixXd soil = Eigen::MatrixXd::Zero(m.size(), m.size());
-  for (int e : m.soil_elements()) {
-    const Eigen::RowVectorXd g = m.model().elongation_map(e);
+  for (int e : m.soil_elements) {
+    const Eigen::RowVectorXd g = m.multibody.elongation_map(e);
     soil += study.machine.soil.stiffness * g.transpose() * g;
   }
-  using S = rigid::Machine2D::ModalSoil;
-  const double scale = m.stiffness_matrix().norm();
-  EXPECT_LT((m.stiffness_matrix(S::cutting) - m.stiffness_matrix()).norm(), 1e-14 * scale);
-  EXPECT_LT((m.stiffness_matrix(S::cutting) - m.stiffness_matrix(S::none) - soil).norm(), 1e-12 * scale);
-  EXPECT_LT((m.stiffness_matrix(S::backing) - m.stiffness_matrix(S::none) - 0.3 * soil).norm(), 1e-12 * scale);
+  using S = rigid::ModalSoil;
+  const double scale = m.k_full.norm();
+  EXPECT_LT((rigid::modal_stiffness(m, S::cutting) - m.k_full).norm(), 1e-14 * scale);
+  EXPECT_LT((rigid::modal_stiffness(m, S::cutting) - rigid::modal_stiffness(m, S::none) - soil).norm(), 1e-12 * scale);
+  EXPECT_LT((rigid::modal_stiffness(m, S::backing) - rigid::modal_stiffness(m, S::none) - 0.3 * soil).norm(), 1e-12 * scale);
 }
 
 }  // namespace

@@ -29,6 +29,8 @@
 #include "rigid/machine_3d.h"
 #include "rigid/multibody.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace {
 
@@ -134,13 +136,14 @@ TEST(ContactStatics, ACentreOfGravityBeyondTheTiresHasNoEquilibriumAndTheErrorNa
 }
 
 // Starts a machine from q = v = 0 with no shaker, no travel and no ground input, and returns max |q| over 0.3 s.
-template <class Machine>
-double drift_from_statics(Machine& machine) {
-  machine.reset(0.0, Eigen::VectorXd::Zero(machine.size()));
+double drift_from_statics(const rigid::VehicleModel& machine) {
   rigid::IntegrationOptions o;
   o.end_time = 0.3;
   o.output_interval = 0.01;
-  const rigid::Trajectory tr = rigid::integrate_rk4(machine, Eigen::VectorXd::Zero(machine.size()), Eigen::VectorXd::Zero(machine.size()), 5e-4, o);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(machine.size());
+  rigid::VehicleRunState run = rigid::start_run(machine, 0.0, zero);
+  rigid::VehicleDynamics dynamics(machine, run);
+  const rigid::Trajectory tr = rigid::integrate_rk4(dynamics, zero, zero, 5e-4, o);
   double drift = 0.0;
   for (const Eigen::VectorXd& q : tr.q) drift = std::max(drift, q.cwiseAbs().maxCoeff());
   return drift;
@@ -150,23 +153,23 @@ TEST(ContactStatics, TheShipped2DPlowStartedFromItsStaticsStaysThere) {
   coupling::RigidStudy study = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml");
   study.machine.plow.shaker_amplitude = 0.0;
   study.machine.forward_speed = 0.0;
-  rigid::Machine2D machine(study.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
   EXPECT_LT(drift_from_statics(machine), 1e-9);
   // The soil carries nothing statically; the contacts carry the weight with the cab mounts and cylinder inside.
-  for (int e : machine.soil_elements()) EXPECT_EQ(machine.static_element_forces()[static_cast<std::size_t>(e)], 0.0);
+  for (int e : machine.soil_elements) EXPECT_EQ(machine.statics.element_forces[static_cast<std::size_t>(e)], 0.0);
 }
 
 TEST(ContactStatics, TheShipped3DOffsetPlowStartedFromItsStaticsStaysThere) {
   coupling::RigidStudy3D study = coupling::read_rigid_study_3d(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/offset_plowing.yaml");
   study.machine.plow.shaker_amplitude = 0.0;
   study.machine.forward_speed = 0.0;
-  rigid::Machine3D machine(study.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
   EXPECT_LT(drift_from_statics(machine), 1e-9);
   double weight = 0.0;
-  for (const rigid::Body& b : machine.model().bodies()) weight += b.mass * study.machine.gravity;
+  for (const rigid::Body& b : machine.multibody.bodies()) weight += b.mass * study.machine.gravity;
   double carried = 0.0;
-  for (std::size_t i = 0; i < machine.statics().contacts.size(); ++i)
-    if (machine.statics().engaged[i]) carried += machine.static_element_forces()[static_cast<std::size_t>(machine.statics().contacts[i].normal)];
+  for (std::size_t i = 0; i < machine.statics.contacts.size(); ++i)
+    if (machine.statics.engaged[i]) carried += machine.statics.element_forces[static_cast<std::size_t>(machine.statics.contacts[i].normal)];
   EXPECT_NEAR(carried, weight, 1e-9 * weight);  // level ground: the vertical contacts carry the whole weight
 }
 

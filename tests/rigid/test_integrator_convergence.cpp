@@ -23,6 +23,8 @@
 #include "coupling/rigid_study.h"
 #include "rigid/machine_2d.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 namespace {
 
@@ -86,30 +88,31 @@ TEST(IntegratorConvergence, Rk4AtTenthMillisecondAgreesWithEventLocatedOnPeakPlo
 TEST(IntegratorConvergence, Rk4IsFourthOrderOnTheShippedPlowWithoutSwitches) {
   coupling::RigidStudy study = coupling::read_rigid_study(shipped_plow());
   study.machine.contacts = rigid::ContactLaw::linear;  // a linear system, as above
-  rigid::Machine2D m(study.machine);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.size());
   rigid::IntegrationOptions o;
   o.end_time = 0.5;
   o.output_interval = 5e-4;
   o.absolute_tolerance = 1e-12;
   o.velocity_scale = 100.0;
-  const rigid::Jacobian& blade = m.model().points()[static_cast<std::size_t>(m.blade_point())].displacement;
+  const rigid::Jacobian& blade = m.multibody.points()[static_cast<std::size_t>(m.blade_point)].displacement;
   auto blade_z = [&](const rigid::Trajectory& t, std::size_t i) { return blade.row(2).dot(t.q[i]); };
 
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   o.relative_tolerance = 1e-11;
-  const rigid::Trajectory ref = rigid::integrate_event_located(m, zero, zero, o);
+  const rigid::Trajectory ref = rigid::integrate_event_located(m_dyn, zero, zero, o);
   ASSERT_TRUE(ref.events.empty()) << "the shipped plow now switches: RK4 is then first order (docs/validation_integration.md)";
-  m.reset(0.0, zero);
+  m_run = rigid::start_run(m, 0.0, zero);
   o.relative_tolerance = 1e-12;
-  const rigid::Trajectory tighter = rigid::integrate_event_located(m, zero, zero, o);
+  const rigid::Trajectory tighter = rigid::integrate_event_located(m_dyn, zero, zero, o);
   double reference_error = 0.0;  // the reference's own, estimated against rtol 1e-12
   for (std::size_t i = 0; i < ref.time.size(); ++i) reference_error = std::max(reference_error, std::abs(blade_z(tighter, i) - blade_z(ref, i)));
   double error[2] = {0.0, 0.0};
   const double steps[2] = {5e-4, 2.5e-4};
   for (int k = 0; k < 2; ++k) {
-    m.reset(0.0, zero);
-    const rigid::Trajectory t = rigid::integrate_rk4(m, zero, zero, steps[k], o);
+    m_run = rigid::start_run(m, 0.0, zero);
+    const rigid::Trajectory t = rigid::integrate_rk4(m_dyn, zero, zero, steps[k], o);
     ASSERT_EQ(t.time.size(), ref.time.size());
     for (std::size_t i = 0; i < t.time.size(); ++i) error[k] = std::max(error[k], std::abs(blade_z(t, i) - blade_z(ref, i)));
   }

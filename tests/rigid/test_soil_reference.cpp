@@ -6,12 +6,17 @@
 
 #include "coupling/rigid_study.h"
 #include "rigid/machine_2d.h"
+#include "rigid/vehicle_model.h"
+#include "rigid/vehicle_run.h"
 
 #include <cmath>
 #include <cstdio>
 
 namespace framedyn {
 namespace {
+
+// The (X, Z) components of a force in machine axes.
+Eigen::Vector2d xz(const Eigen::Vector3d& f) { return {f.x(), f.z()}; }
 
 // A blade standing still at a displaced position: measured from equilibrium
 // the springs push back with K5 times the displacement; measured from the
@@ -25,27 +30,29 @@ TEST(SoilReference, ContactReferenceUnloadsTheSpringsAtTheStartOfACut) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
   q(3) = 0.01;  // psi: the plow arm turned, the blade displaced
 
-  rigid::Machine2D from_equilibrium(p);
-  from_equilibrium.reset(0.0, q);
-  const rigid::Jacobian& j = from_equilibrium.model().points()[static_cast<std::size_t>(from_equilibrium.blade_point())].displacement;
+  const rigid::VehicleModel from_equilibrium = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState from_equilibrium_run = rigid::start_run(from_equilibrium, 0.0, q);
+  const rigid::Jacobian& j = from_equilibrium.multibody.points()[static_cast<std::size_t>(from_equilibrium.blade_point)].displacement;
   const Eigen::Vector3d d = j * q;
-  const Eigen::Vector2d f_eq = from_equilibrium.plow_force(0.0, q, v);
+  const Eigen::Vector2d f_eq = xz(rigid::plow_force(from_equilibrium, from_equilibrium_run, 0.0, q, v));
   EXPECT_NEAR(f_eq.x(), p.soil.stiffness * d(0), 1e-9 * p.soil.stiffness * d.norm());
   EXPECT_NEAR(f_eq.y(), p.soil.stiffness * d(2), 1e-9 * p.soil.stiffness * d.norm());
 
   p.soil.spring_from_contact = true;
-  rigid::Machine2D from_contact(p);
-  from_contact.reset(0.0, q);
-  const Eigen::Vector2d f_contact = from_contact.plow_force(0.0, q, v);
+  const rigid::VehicleModel from_contact = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState from_contact_run = rigid::start_run(from_contact, 0.0, q);
+  rigid::VehicleDynamics from_contact_dyn(from_contact, from_contact_run);
+  const Eigen::Vector2d f_contact = xz(rigid::plow_force(from_contact, from_contact_run, 0.0, q, v));
   EXPECT_NEAR(f_contact.norm(), 0.0, 1e-9 * p.soil.stiffness * d.norm());
   // And the equations of motion see the same: at rest there, the soil adds no force.
   Eigen::VectorXd a_contact, a_free;
-  from_contact.acceleration(0.0, q, v, a_contact);
+  from_contact_dyn.acceleration(0.0, q, v, a_contact);
   p.soil.stiffness = 0.0;
   p.soil.spring_from_contact = false;
-  rigid::Machine2D no_soil_spring(p);
-  no_soil_spring.reset(0.0, q);
-  no_soil_spring.acceleration(0.0, q, v, a_free);
+  const rigid::VehicleModel no_soil_spring = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState no_soil_spring_run = rigid::start_run(no_soil_spring, 0.0, q);
+  rigid::VehicleDynamics no_soil_spring_dyn(no_soil_spring, no_soil_spring_run);
+  no_soil_spring_dyn.acceleration(0.0, q, v, a_free);
   EXPECT_LT((a_contact - a_free).norm(), 1e-9 * a_free.norm() + 1e-12);
 }
 
@@ -67,30 +74,32 @@ TEST(SoilReference, SoilLineAnchorIsCarriedRearwardWithTheSoilFromTheStartOfTheC
   q(3) = 0.01;
   const double t = 0.02, damper = -p.soil.damping * p.forward_speed;
 
-  rigid::Machine2D fixed_contact(p);
-  fixed_contact.reset(0.0, q);
-  const Eigen::Vector2d f_fixed = fixed_contact.plow_force(t, q, v);
+  const rigid::VehicleModel fixed_contact = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState fixed_contact_run = rigid::start_run(fixed_contact, 0.0, q);
+  rigid::VehicleDynamics fixed_contact_dyn(fixed_contact, fixed_contact_run);
+  const Eigen::Vector2d f_fixed = xz(rigid::plow_force(fixed_contact, fixed_contact_run, t, q, v));
   EXPECT_NEAR(f_fixed.x(), damper, 1e-9 * std::abs(damper));
   EXPECT_NEAR(f_fixed.y(), 0.0, 1e-9 * std::abs(damper));
 
   p.soil.contact_moves_with_soil = true;
-  rigid::Machine2D soil_line(p);
-  soil_line.reset(0.0, q);
-  const Eigen::Vector2d f_soil = soil_line.plow_force(t, q, v);
+  const rigid::VehicleModel soil_line = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState soil_line_run = rigid::start_run(soil_line, 0.0, q);
+  rigid::VehicleDynamics soil_line_dyn(soil_line, soil_line_run);
+  const Eigen::Vector2d f_soil = xz(rigid::plow_force(soil_line, soil_line_run, t, q, v));
   const double spring = -p.soil.stiffness * p.forward_speed * t;
   EXPECT_NEAR(f_soil.x(), spring + damper, 1e-9 * std::abs(spring));
   EXPECT_NEAR(f_soil.y(), 0.0, 1e-9 * std::abs(spring));
   // The soil elements' tensions, which the frame loads use, say the same.
-  const std::vector<int>& soil = soil_line.soil_elements();
-  EXPECT_NEAR(soil_line.element_tension(soil[0], t, q, v), f_soil.x(), 1e-9 * std::abs(spring));
-  EXPECT_NEAR(soil_line.element_tension(soil[1], t, q, v), f_soil.y(), 1e-9 * std::abs(spring));
+  const std::vector<int>& soil = soil_line.soil_elements;
+  EXPECT_NEAR(rigid::element_tension(soil_line, soil_line_run, soil[0], t, q, v), f_soil.x(), 1e-9 * std::abs(spring));
+  EXPECT_NEAR(rigid::element_tension(soil_line, soil_line_run, soil[1], t, q, v), f_soil.y(), 1e-9 * std::abs(spring));
   // And the equations of motion: the two readings' accelerations differ by
   // M^-1 G_x^T (K5 VS t), the anchor's motion, alone.
   Eigen::VectorXd a_fixed, a_soil;
-  fixed_contact.acceleration(t, q, v, a_fixed);
-  soil_line.acceleration(t, q, v, a_soil);
+  fixed_contact_dyn.acceleration(t, q, v, a_fixed);
+  soil_line_dyn.acceleration(t, q, v, a_soil);
   const Eigen::VectorXd expected =
-      soil_line.mass_matrix().ldlt().solve(soil_line.model().elongation_map(soil[0]).transpose() * (p.soil.stiffness * p.forward_speed * t));
+      soil_line.m.ldlt().solve(soil_line.multibody.elongation_map(soil[0]).transpose() * (p.soil.stiffness * p.forward_speed * t));
   EXPECT_LT((a_soil - a_fixed - expected).norm(), 1e-9 * expected.norm());
 }
 
@@ -105,27 +114,30 @@ TEST(SoilReference, CutFaceSpringsCarryNothingWhileTheBladeCuts) {
   q(3) = 0.01;  // psi: the blade displaced
   v(3) = 0.3;   // and moving
   v(0) = -0.02;
-  rigid::Machine2D cut_face(p);
-  cut_face.reset(0.0, Eigen::VectorXd::Zero(6));  // the cut began at equilibrium: the printed reading would load the spring
-  ASSERT_TRUE(cut_face.cutting());
-  const rigid::Jacobian& j = cut_face.model().points()[static_cast<std::size_t>(cut_face.blade_point())].displacement;
+  const rigid::VehicleModel cut_face = rigid::build_vehicle_model(p);
+  // The cut began at equilibrium: the printed reading would load the spring.
+  rigid::VehicleRunState cut_face_run = rigid::start_run(cut_face, 0.0, Eigen::VectorXd::Zero(6));
+  rigid::VehicleDynamics cut_face_dyn(cut_face, cut_face_run);
+  ASSERT_TRUE(cut_face_run.soil.cutting());
+  const rigid::Jacobian& j = cut_face.multibody.points()[static_cast<std::size_t>(cut_face.blade_point)].displacement;
   const Eigen::Vector3d d = j * q, vel = j * v;
   ASSERT_GT(d.norm(), 1e-4);
   const double t = 0.01, vs = p.forward_speed * std::cos(p.ground_slope);
-  const Eigen::Vector2d f = cut_face.plow_force(t, q, v);
+  const Eigen::Vector2d f = xz(rigid::plow_force(cut_face, cut_face_run, t, q, v));
   const Eigen::Vector2d damper(p.soil.damping * (vel(0) - vs), p.soil.damping * (vel(2) + p.forward_speed * std::sin(p.ground_slope)));
   EXPECT_LT((f - damper).norm(), 1e-12 * damper.norm());
-  const std::vector<int>& soil = cut_face.soil_elements();
-  EXPECT_NEAR(cut_face.element_tension(soil[0], t, q, v), f.x(), 1e-12 * damper.norm());
-  EXPECT_NEAR(cut_face.element_tension(soil[1], t, q, v), f.y(), 1e-12 * damper.norm());
+  const std::vector<int>& soil = cut_face.soil_elements;
+  EXPECT_NEAR(rigid::element_tension(cut_face, cut_face_run, soil[0], t, q, v), f.x(), 1e-12 * damper.norm());
+  EXPECT_NEAR(rigid::element_tension(cut_face, cut_face_run, soil[1], t, q, v), f.y(), 1e-12 * damper.norm());
 
   Eigen::VectorXd a_cut_face, a_no_spring;
-  cut_face.acceleration(t, q, v, a_cut_face);
+  cut_face_dyn.acceleration(t, q, v, a_cut_face);
   p.soil.stiffness = 0.0;
   p.soil.cut_face = p.soil.spring_from_contact = p.soil.contact_moves_with_soil = false;
-  rigid::Machine2D no_spring(p);
-  no_spring.reset(0.0, Eigen::VectorXd::Zero(6));
-  no_spring.acceleration(t, q, v, a_no_spring);
+  const rigid::VehicleModel no_spring = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState no_spring_run = rigid::start_run(no_spring, 0.0, Eigen::VectorXd::Zero(6));
+  rigid::VehicleDynamics no_spring_dyn(no_spring, no_spring_run);
+  no_spring_dyn.acceleration(t, q, v, a_no_spring);
   EXPECT_LT((a_cut_face - a_no_spring).norm(), 1e-12 * a_no_spring.norm());
 }
 
@@ -137,22 +149,23 @@ TEST(SoilReference, CutFaceSpringsActFromTheCutFaceCarriedWithTheSoilWhileBackin
   rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine;
   p.ground_slope = 0.0;
   p.soil.stiffness_reduction = 0.5;
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
   q(3) = 0.01;
-  m.reset(0.0, Eigen::VectorXd::Zero(6));
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, Eigen::VectorXd::Zero(6));
+  rigid::VehicleDynamics m_dyn(m, m_run);
   const double tb = 0.03, t = 0.05, vs = p.forward_speed;
   // The located back-off (event 0 crossing upwards) with the blade at q.
-  const std::string what = m.on_event(tb, q, v, {0}, {+1});
+  const std::string what = m_dyn.on_event(tb, q, v, {0}, {+1});
   ASSERT_NE(what.find("backs off"), std::string::npos) << what;
-  ASSERT_FALSE(m.cutting());
-  const Eigen::Vector2d f = m.plow_force(t, q, v);
+  ASSERT_FALSE(m_run.soil.cutting());
+  const Eigen::Vector2d f = xz(rigid::plow_force(m, m_run, t, q, v));
   const double rk = p.soil.stiffness * p.soil.stiffness_reduction, rc = p.soil.damping * p.soil.damping_reduction;
   const double expected_x = -rk * vs * (t - tb) - rc * vs;  // spring toward the receding cut face, damper against the soil's flow
   EXPECT_NEAR(f.x(), expected_x, 1e-9 * std::abs(expected_x));
   EXPECT_NEAR(f.y(), 0.0, 1e-9 * std::abs(expected_x));
-  const std::vector<int>& soil = m.soil_elements();
-  EXPECT_NEAR(m.element_tension(soil[0], t, q, v), f.x(), 1e-9 * std::abs(expected_x));
+  const std::vector<int>& soil = m.soil_elements;
+  EXPECT_NEAR(rigid::element_tension(m, m_run, soil[0], t, q, v), f.x(), 1e-9 * std::abs(expected_x));
 }
 
 // With REK = 0 the cut-face springs never act in the response, so K5 drops

@@ -50,6 +50,9 @@ namespace {
 
 namespace rigid = framedyn::rigid;
 namespace coupling = framedyn::coupling;
+
+// The (X, Z) components of a force in machine axes.
+Eigen::Vector2d xz(const Eigen::Vector3d& f) { return {f.x(), f.z()}; }
 using Eigen::MatrixXd;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
@@ -120,7 +123,7 @@ rigid::Machine2DParameters chain_machine() {
   return coupling::read_rigid_study(dir.write("chain.yaml", chain_variant_text()).string()).machine;
 }
 
-int coordinate(const rigid::Machine2D& m, const std::string& name) {
+int coordinate(const rigid::VehicleModel& m, const std::string& name) {
   const int i = m.coordinate(name);
   if (i < 0) throw std::logic_error("no coordinate " + name);
   return i;
@@ -213,7 +216,7 @@ HandFrame appendix_c(const rigid::Frame2D& f, const rigid::Cab2D& cab) {
 // from the exact loop closure of the four-bar linkage.
 class ExactGeometry {
  public:
-  ExactGeometry(const rigid::Machine2DParameters& p, const rigid::Machine2D& m)
+  ExactGeometry(const rigid::Machine2DParameters& p, const rigid::VehicleModel& m)
       : p_(p), hand_(appendix_c(p.frame, p.cab)), n_(m.size()),
         ix_(m.coordinate("x")), iz_(m.coordinate("z")), ity_(m.coordinate("theta_y")), ipsi_(m.coordinate("psi")),
         iw_(m.coordinate("w")), itv_(m.coordinate("theta_v")) {}
@@ -420,8 +423,8 @@ std::vector<Variant> shipped_and_chain() { return {{"shipped plow machine", ship
 TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesFromTheJacobians) {
   for (const Variant& var : shipped_and_chain()) {
     SCOPED_TRACE(var.label);
-    const rigid::Machine2D m(var.p);
-    const rigid::Multibody& mb = m.model();
+    const rigid::VehicleModel m = rigid::build_vehicle_model(var.p);
+    const rigid::Multibody& mb = m.multibody;
     const int n = m.size();
     // The energies are exact quadratic forms, so the central differences have
     // no truncation error: only round-off, ~ eps * (largest term) / entry
@@ -429,8 +432,8 @@ TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesFromTheJacobian
     const MatrixXd mh = fd_hessian([&](const VectorXd& qd) { return model_kinetic_energy(mb, qd); }, n, 1.0);
     const MatrixXd kh = fd_hessian([&](const VectorXd& q) { return model_element_energy(mb, q, false); }, n, 1.0);
     const MatrixXd ch = fd_hessian([&](const VectorXd& qd) { return model_element_energy(mb, qd, true); }, n, 1.0);
-    const double em = scaled_difference(mh, m.mass_matrix()), ek = scaled_difference(kh, m.stiffness_matrix()),
-                 ec = scaled_difference(ch, m.damping_matrix());
+    const double em = scaled_difference(mh, m.m), ek = scaled_difference(kh, m.k_full),
+                 ec = scaled_difference(ch, m.c_full);
     std::printf("[%s] Hessians of the Jacobian energies: M %.2e, K %.2e, C %.2e\n", var.label.c_str(), em, ek, ec);
     EXPECT_LT(em, 1e-9);
     EXPECT_LT(ek, 1e-9);
@@ -441,10 +444,10 @@ TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesFromTheJacobian
 TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesOfTheExactGeometry) {
   for (const Variant& var : shipped_and_chain()) {
     SCOPED_TRACE(var.label);
-    const rigid::Machine2D m(var.p);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(var.p);
     const ExactGeometry g(var.p, m);
     const auto springs = g.springs();
-    ASSERT_EQ(springs.size(), m.model().elements().size());
+    ASSERT_EQ(springs.size(), m.multibody.elements().size());
     const int n = m.size();
     // Kinetic energy and dissipation: quadratic in q' up to the O(eps^2) of
     // their inner velocity differences, so h = 1 is exact but for ~1e-10.
@@ -455,8 +458,8 @@ TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesOfTheExactGeome
     const MatrixXd mh = fd_hessian([&](const VectorXd& qd) { return exact_kinetic_energy(g, qd); }, n, 1.0);
     const MatrixXd kh = fd_hessian([&](const VectorXd& q) { return exact_potential_energy(springs, q); }, n, 1e-5);
     const MatrixXd ch = fd_hessian([&](const VectorXd& qd) { return exact_dissipation(springs, qd); }, n, 1.0);
-    const double em = scaled_difference(mh, m.mass_matrix()), ek = scaled_difference(kh, m.stiffness_matrix()),
-                 ec = scaled_difference(ch, m.damping_matrix());
+    const double em = scaled_difference(mh, m.m), ek = scaled_difference(kh, m.k_full),
+                 ec = scaled_difference(ch, m.c_full);
     std::printf("[%s] Hessians of the exact-geometry energies: M %.2e, K %.2e, C %.2e\n", var.label.c_str(), em, ek, ec);
     EXPECT_LT(em, 1e-7);
     EXPECT_LT(ek, 1e-7);
@@ -467,8 +470,8 @@ TEST(Vehicle2DAssembly, MassStiffnessDampingAreHessiansOfEnergiesOfTheExactGeome
 TEST(Vehicle2DAssembly, MassIsPositiveDefiniteStiffnessAndDampingPositiveSemiDefinite) {
   for (const Variant& var : shipped_and_chain()) {
     SCOPED_TRACE(var.label);
-    const rigid::Machine2D m(var.p);
-    for (const auto& [name, a] : {std::pair<std::string, MatrixXd>{"M", m.mass_matrix()}, {"K", m.stiffness_matrix()}, {"C", m.damping_matrix()}}) {
+    const rigid::VehicleModel m = rigid::build_vehicle_model(var.p);
+    for (const auto& [name, a] : {std::pair<std::string, MatrixXd>{"M", m.m}, {"K", m.k_full}, {"C", m.c_full}}) {
       SCOPED_TRACE(name);
       // Symmetric by construction (sums of G^T G): exactly, up to round-off.
       EXPECT_LE((a - a.transpose()).cwiseAbs().maxCoeff(), 1e-14 * a.cwiseAbs().maxCoeff());
@@ -482,7 +485,7 @@ TEST(Vehicle2DAssembly, MassIsPositiveDefiniteStiffnessAndDampingPositiveSemiDef
       }
     }
     // Every coordinate is restrained by a spring of the shipped data: K is definite too.
-    EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatrixXd>(m.stiffness_matrix()).eigenvalues().minCoeff(), 0.0);
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatrixXd>(m.k_full).eigenvalues().minCoeff(), 0.0);
   }
 }
 
@@ -513,7 +516,7 @@ rigid::Machine2DParameters tiny_machine() {
 
 TEST(FrameAndCab, FrameMassCgAndInertiaFollowAppendixC) {
   const rigid::Machine2DParameters p = tiny_machine();
-  const rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   // Hand values, Eqs. C.2-C.5 with rho FLT:
   //   M1 = 200 + 150 + 100*3 = 650 kg
   //   XCG = (200*0.2 + 150*2.0 + 300*(1.5 - 0.5)) / 650 = 640/650
@@ -523,7 +526,7 @@ TEST(FrameAndCab, FrameMassCgAndInertiaFollowAppendixC) {
   ASSERT_DOUBLE_EQ(h.m1, m1);
   ASSERT_DOUBLE_EQ(h.reference.x(), xcg);
   ASSERT_DOUBLE_EQ(h.reference.y(), zcg);
-  const rigid::FrameMassProperties& f = m.frame_mass();
+  const rigid::FrameMassProperties f = rigid::frame_mass_properties(p.frame, p.cab);
   // Sums of a few products: round-off only, 1e-14 relative.
   EXPECT_NEAR(f.mass, m1, 1e-14 * m1);
   EXPECT_NEAR(f.cg.x(), xcg, 1e-14);
@@ -534,7 +537,7 @@ TEST(FrameAndCab, FrameMassCgAndInertiaFollowAppendixC) {
   // With the reference point of Eq. C.3 (the cab included in ZCG) the pitch
   // does not couple with x, and the pitch inertia is I1 of Eq. C.5 (frame
   // about the reference plus M3 d20^2 from the cab's X motion).
-  const MatrixXd mm = m.mass_matrix();
+  const MatrixXd mm = m.m;
   const int ix = coordinate(m, "x"), iz = coordinate(m, "z"), ity = coordinate(m, "theta_y"), iw = coordinate(m, "w"),
             itv = coordinate(m, "theta_v");
   std::printf("I1 (Eq. C.5) = %.6f kg m^2, M(theta_y, theta_y) = %.6f; inertia about the frame c.g. %.6f (code %.6f)\n", h.i1,
@@ -553,8 +556,8 @@ TEST(FrameAndCab, FrameMassCgAndInertiaFollowAppendixC) {
 
 TEST(FrameAndCab, FramePointMovesAsARigidBodyAboutTheReferencePoint) {
   const rigid::Machine2DParameters p = tiny_machine();
-  const rigid::Machine2D m(p);
-  const rigid::Multibody& mb = m.model();
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  const rigid::Multibody& mb = m.multibody;
   const Vector2d ref(640.0 / 650.0, 395.0 / 950.0);
   const int ix = coordinate(m, "x"), iz = coordinate(m, "z"), ity = coordinate(m, "theta_y");
   for (const auto& [name, r] : {std::pair<std::string, Vector2d>{"front_tire_contact", p.front_tire.contact},
@@ -581,7 +584,7 @@ TEST(FrameAndCab, FramePointMovesAsARigidBodyAboutTheReferencePoint) {
 // differences of Rodrigues' rotation), not from the model's Jacobians.
 TEST(FrameAndCab, FramePointPitchMotionIsEqA1NotThePrintedEq27) {
   const rigid::Machine2DParameters p = tiny_machine();
-  const rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const int ity = coordinate(m, "theta_y");
   const Vector2d ref(640.0 / 650.0, 395.0 / 950.0);
   for (const Vector2d& r : {p.front_tire.contact, p.rear_tire.contact, Vector2d(1.7, 0.9)}) {
@@ -589,7 +592,7 @@ TEST(FrameAndCab, FramePointPitchMotionIsEqA1NotThePrintedEq27) {
     const double h = 1e-6;
     const Eigen::Vector3d fd =
         (Eigen::AngleAxisd(h, Eigen::Vector3d::UnitY()) * rel - Eigen::AngleAxisd(-h, Eigen::Vector3d::UnitY()) * rel) / (2 * h);
-    const rigid::Jacobian j = m.frame_point_jacobian(r);
+    const rigid::Jacobian j = rigid::frame_point_jacobian(m, Eigen::Vector3d(r.x(), 0.0, r.y()));
     const double a = rel.x(), d = rel.z();
     EXPECT_NEAR(fd.x(), d, 1e-9);
     EXPECT_NEAR(fd.z(), -a, 1e-9);
@@ -602,8 +605,8 @@ TEST(FrameAndCab, FramePointPitchMotionIsEqA1NotThePrintedEq27) {
 
 TEST(FrameAndCab, CabXIsTiedToTheFrameAtItsCgAndItsPointsTurnWithThetaV) {
   const rigid::Machine2DParameters p = tiny_machine();
-  const rigid::Machine2D m(p);
-  const rigid::Multibody& mb = m.model();
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  const rigid::Multibody& mb = m.multibody;
   const Vector2d ref(640.0 / 650.0, 395.0 / 950.0), cab = p.cab.cg;
   const int ix = coordinate(m, "x"), ity = coordinate(m, "theta_y"), iw = coordinate(m, "w"), itv = coordinate(m, "theta_v");
   // Eq. 2.8 in the +Y sense: a cab point r moves by
@@ -677,7 +680,7 @@ TEST(PlowLinkage, VelocityRatioIsTheDerivativeOfTheExactLoopClosure) {
 
 TEST(PlowLinkage, RigidRotationOfFrameAndArmTurnsTheShankByTheSameAngle) {
   const rigid::Machine2DParameters p = shipped_machine();
-  const rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const ExactGeometry g(p, m);
   const int ity = coordinate(m, "theta_y"), ipsi = coordinate(m, "psi");
   // Exactly, for a finite angle: frame and upper arm turned by 0.2 rad.
@@ -689,23 +692,23 @@ TEST(PlowLinkage, RigidRotationOfFrameAndArmTurnsTheShankByTheSameAngle) {
   // frame's reference point.
   q.setZero();
   q[ity] = q[ipsi] = 1.0;
-  const Vector2d ref = m.frame_mass().reference;
-  for (const rigid::Body& b : m.model().bodies()) {
+  const Vector2d ref = rigid::frame_mass_properties(p.frame, p.cab).reference;
+  for (const rigid::Body& b : m.multibody.bodies()) {
     if (b.name == "plow") {
       EXPECT_NEAR((b.rotation * q)(1), 1.0, 1e-14);
     }
   }
   const Vector2d blade = p.plow.blade_point;
-  const Vector3d d = m.model().points()[static_cast<std::size_t>(m.blade_point())].displacement * q;
+  const Vector3d d = m.multibody.points()[static_cast<std::size_t>(m.blade_point)].displacement * q;
   EXPECT_NEAR(d.x(), blade.y() - ref.y(), 1e-14);
   EXPECT_NEAR(d.z(), -(blade.x() - ref.x()), 1e-14);
 }
 
 TEST(PlowLinkage, ShankPointJacobiansAreDerivativesOfTheExactMotion) {
   const rigid::Machine2DParameters p = shipped_machine();
-  const rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const ExactGeometry g(p, m);
-  const rigid::Multibody& mb = m.model();
+  const rigid::Multibody& mb = m.multibody;
   for (const auto& [name, r] : {std::pair<std::string, Vector2d>{"blade", p.plow.blade_point}, {"shaker", p.plow.shaker_point},
                                 {"bounce_tire", p.plow.bounce_tire_point}}) {
     SCOPED_TRACE(name);
@@ -765,8 +768,8 @@ TEST(AppendixG, PsiFrequencyOfAParallelogramPlowIsSqrtOfK5PlusK8OverM2) {
   for (double l1 : {0.6, 0.9, 1.4}) {
     SCOPED_TRACE(l1);
     const rigid::Machine2DParameters p = case4_machine(l1);
-    const rigid::Machine2D m(p);
-    const auto modes = rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), fixed);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+    const auto modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names(), fixed);
     ASSERT_EQ(modes.size(), 1u);
     const double expected = std::sqrt((p.soil.stiffness + p.plow.bounce_tire.stiffness) / p.plow.mass) / (2 * kPi);
     const double rel = std::abs(modes[0].frequency_hz - expected) / expected;
@@ -789,8 +792,8 @@ TEST(AppendixG, ThesisCase4PsiFrequencyIs8321Hz) {
   EXPECT_NEAR(s.machine.plow.bounce_tire.stiffness, 1500 * lbf_per_in, 1e-9 * 1500 * lbf_per_in);
   const double m2 = 41500.0 / std::pow(2 * kPi * 8.321, 2);
   EXPECT_NEAR(s.machine.plow.mass, m2 * mass_unit, 1e-11 * m2 * mass_unit) << "the file's M2 has 14 digits";
-  const rigid::Machine2D m(s.machine);
-  const auto modes = rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), s.fixed_coordinates);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(s.machine);
+  const auto modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names(), s.fixed_coordinates);
   ASSERT_EQ(modes.size(), 1u);
   const double rel = std::abs(modes[0].frequency_hz - 8.321) / 8.321;
   std::printf("thesis case 4: psi %.9f Hz against 8.321 Hz, rel. %.1e (M2 = %.6f lbf s^2/in, %.1f lb)\n", modes[0].frequency_hz, rel, m2,
@@ -844,8 +847,8 @@ TEST(StaticEquilibrium, ElementForcesBalanceTheWeightInForceAndMomentAboutAnyPoi
     for (double slope : {0.0, 0.08}) {
       var.p.ground_slope = slope;
       SCOPED_TRACE(var.label + ", slope " + std::to_string(slope));
-      const rigid::Machine2D m(var.p);
-      const std::vector<double> f = m.static_element_forces();
+      const rigid::VehicleModel m = rigid::build_vehicle_model(var.p);
+      const std::vector<double> f = m.statics.element_forces;
       const auto geometry = element_geometry(var.p);
       ASSERT_EQ(f.size(), geometry.size());
       const double g = var.p.gravity;
@@ -861,8 +864,8 @@ TEST(StaticEquilibrium, ElementForcesBalanceTheWeightInForceAndMomentAboutAnyPoi
       }
       for (std::size_t e = 0; e < f.size(); ++e) {
         const auto& [name, eg] = geometry[e];
-        ASSERT_EQ(m.model().elements()[e].name, name);
-        const Vector3d n3 = m.model().elements()[e].direction;
+        ASSERT_EQ(m.multibody.elements()[e].name, name);
+        const Vector3d n3 = m.multibody.elements()[e].direction;
         ASSERT_NEAR((Vector2d(n3.x(), n3.z()) - eg.n).norm(), 0.0, 1e-15) << name << ": the model's direction";
         if (eg.grounded) {
           loads.push_back({eg.a, f[e] * eg.n});
@@ -894,9 +897,9 @@ TEST(StaticEquilibrium, ElementForcesBalanceTheWeightInForceAndMomentAboutAnyPoi
 
 TEST(StaticEquilibrium, CabMountsCarryTheCabAndTiresAreInCompression) {
   const rigid::Machine2DParameters p = shipped_machine();
-  const rigid::Machine2D m(p);
-  const std::vector<double> f = m.static_element_forces();
-  auto force = [&](const std::string& name) { return f.at(static_cast<std::size_t>(m.model().element_index(name))); };
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  const std::vector<double> f = m.statics.element_forces;
+  auto force = [&](const std::string& name) { return f.at(static_cast<std::size_t>(m.multibody.element_index(name))); };
   const double w3 = p.cab.mass * p.gravity;
   // The cab rests on its two vertical mounts only: they carry its weight and
   // its moment about the cab's c.g. (round-off of the static solve, 1e-9).
@@ -919,10 +922,10 @@ TEST(StaticEquilibrium, CabMountsCarryTheCabAndTiresAreInCompression) {
 // (Eq. 2.23, RC5 = C5 or REC C5) plus the shaker force along the shank
 // (Eq. 2.28). J5, J22 from the exact geometry; M, K, C (full) from the model,
 // verified by the Hessian tests above.
-VectorXd hand_acceleration(const rigid::Machine2D& m, const ExactGeometry& g, const rigid::Machine2DParameters& p, double t, const VectorXd& q,
+VectorXd hand_acceleration(const rigid::VehicleModel& m, const ExactGeometry& g, const rigid::Machine2DParameters& p, double t, const VectorXd& q,
                            const VectorXd& v, bool cutting) {
   const Jacobian2 j5 = g.jacobian([&](const VectorXd& dq) { return g.soil_point(dq); });
-  MatrixXd k = m.stiffness_matrix(), c = m.damping_matrix();
+  MatrixXd k = m.k_full, c = m.c_full;
   const MatrixXd soil = j5.transpose() * j5;  // X and Z springs together
   const double rk = cutting ? 1.0 : p.soil.stiffness_reduction, rc = cutting ? 1.0 : p.soil.damping_reduction;
   k -= (1.0 - rk) * p.soil.stiffness * soil;
@@ -933,7 +936,7 @@ VectorXd hand_acceleration(const rigid::Machine2D& m, const ExactGeometry& g, co
     const Vector2d along = (p.plow.linkage.upper_joint - p.plow.linkage.lower_joint).normalized();
     f += j22.transpose() * (p.plow.shaker_amplitude * std::sin(2 * kPi * p.plow.shaker_frequency * t + p.plow.shaker_phase) * along);
   }
-  return m.mass_matrix().ldlt().solve(f - k * q - c * v);
+  return m.m.ldlt().solve(f - k * q - c * v);
 }
 
 // Eq. 2.37 by hand.
@@ -969,7 +972,9 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   rigid::Machine2DParameters p = shipped_machine();
   p.ground_slope = 0.05;  // so that cos and sin both enter
   p.contacts = rigid::ContactLaw::linear;  // the soil's event alone (the contacts' come after it: ContactEvents tests)
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, Eigen::VectorXd::Zero(m.size()));
+  rigid::VehicleDynamics m_dyn(m, m_run);
   const ExactGeometry g(p, m);
   const double vs = p.forward_speed * std::cos(p.ground_slope);
   ASSERT_GT(vs, 0.0);
@@ -981,13 +986,13 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   auto event = [&](double t) {
     double e[1];
     path.state(t, q, v);
-    m.events(t, q, v, e);
+    m_dyn.events(t, q, v, e);
     return e[0];
   };
-  ASSERT_EQ(m.event_count(), 1);
+  ASSERT_EQ(m_dyn.event_count(), 1);
   path.state(0.0, q, v);
-  m.reset(0.0, q);
-  EXPECT_TRUE(m.cutting());
+  m_run = rigid::start_run(m, 0.0, q);
+  EXPECT_TRUE(m_run.soil.cutting());
   // Event function values are differences of O(0.5) m/s or O(1e-2) m terms:
   // round-off 1e-15; the exact crossing times below are known in closed form
   // or to 1e-15 s by bisection.
@@ -1007,28 +1012,28 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   EXPECT_GT(event(t1 + 1e-6), 0.0);
   // A falling crossing does not end cutting.
   path.state(t1, q, v);
-  EXPECT_TRUE(m.on_event(t1, q, v, {0}, {-1}).empty());
-  EXPECT_TRUE(m.cutting());
+  EXPECT_TRUE(m_dyn.on_event(t1, q, v, {0}, {-1}).empty());
+  EXPECT_TRUE(m_run.soil.cutting());
   // Before the switch: full K5, C5.
   {
     const double t = 0.5 * t1;
     path.state(t, q, v);
     VectorXd a;
-    m.acceleration(t, q, v, a);
+    m_dyn.acceleration(t, q, v, a);
     const VectorXd expected = hand_acceleration(m, g, p, t, q, v, true);
     const double err = relative_difference(a, expected);
     std::printf("cutting: acceleration against M^-1(f - K q - C v) by hand, rel. %.1e\n", err);
     EXPECT_LT(err, 1e-8);  // FD Jacobians of the exact geometry: ~1e-10
   }
   path.state(t1, q, v);
-  EXPECT_FALSE(m.on_event(t1, q, v, {0}, {+1}).empty());
-  EXPECT_FALSE(m.cutting());
+  EXPECT_FALSE(m_dyn.on_event(t1, q, v, {0}, {+1}).empty());
+  EXPECT_FALSE(m_run.soil.cutting());
   const double line1 = path.x5(t1);
 
   // Backing off: the soil line leaves the blade's position at t1 and moves
   // rearward at VS cos; g = X5 - X_s(t).
   for (double t : {t1, t1 + 0.003, t1 + 0.02}) {
-    EXPECT_NEAR(m.soil_line_at(t), line1 + vs * (t - t1), tol_x);
+    EXPECT_NEAR(m_run.soil.line_at(t), line1 + vs * (t - t1), tol_x);
     EXPECT_NEAR(event(t), path.x5(t) - (line1 + vs * (t - t1)) + hair, tol_x);
   }
   EXPECT_GT(event(t1 + 1e-4), 0.0);  // the blade runs ahead of the soil line
@@ -1045,7 +1050,7 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
     const double t = 0.5 * (t1 + t2);
     path.state(t, q, v);
     VectorXd a, a_full;
-    m.acceleration(t, q, v, a);
+    m_dyn.acceleration(t, q, v, a);
     const VectorXd expected = hand_acceleration(m, g, p, t, q, v, false);
     a_full = hand_acceleration(m, g, p, t, q, v, true);
     const double err = relative_difference(a, expected);
@@ -1056,33 +1061,33 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
   }
   // A rising crossing while backing off does not resume cutting.
   path.state(t2, q, v);
-  EXPECT_TRUE(m.on_event(t2, q, v, {0}, {+1}).empty());
-  EXPECT_FALSE(m.cutting());
-  EXPECT_FALSE(m.on_event(t2, q, v, {0}, {-1}).empty());
-  EXPECT_TRUE(m.cutting());
+  EXPECT_TRUE(m_dyn.on_event(t2, q, v, {0}, {+1}).empty());
+  EXPECT_FALSE(m_run.soil.cutting());
+  EXPECT_FALSE(m_dyn.on_event(t2, q, v, {0}, {-1}).empty());
+  EXPECT_TRUE(m_run.soil.cutting());
   {
     const double t = t2 + 0.002;
     path.state(t, q, v);
     EXPECT_NEAR(event(t), path.vx5(t) - vs - hair, tol_v);
     VectorXd a;
-    m.acceleration(t, q, v, a);
+    m_dyn.acceleration(t, q, v, a);
     EXPECT_LT(relative_difference(a, hand_acceleration(m, g, p, t, q, v, true)), 1e-8);
   }
 
   // The recorded history, and Eq. 2.37 at every time with the law then in force.
-  ASSERT_EQ(m.soil_history().size(), 3u);
-  EXPECT_TRUE(m.soil_history()[0].cutting);
-  EXPECT_FALSE(m.soil_history()[1].cutting);
-  EXPECT_DOUBLE_EQ(m.soil_history()[1].time, t1);
-  EXPECT_DOUBLE_EQ(m.soil_history()[1].line, line1);
-  EXPECT_TRUE(m.soil_history()[2].cutting);
-  EXPECT_DOUBLE_EQ(m.soil_history()[2].time, t2);
+  ASSERT_EQ(m_run.soil.history().size(), 3u);
+  EXPECT_TRUE(m_run.soil.history()[0].cutting);
+  EXPECT_FALSE(m_run.soil.history()[1].cutting);
+  EXPECT_DOUBLE_EQ(m_run.soil.history()[1].time, t1);
+  EXPECT_DOUBLE_EQ(m_run.soil.history()[1].line, line1);
+  EXPECT_TRUE(m_run.soil.history()[2].cutting);
+  EXPECT_DOUBLE_EQ(m_run.soil.history()[2].time, t2);
   for (const auto& [t, cutting] : {std::pair{0.3 * t1, true}, {t1, false}, {0.5 * (t1 + t2), false}, {t2, true}, {t2 + 0.01, true}}) {
     SCOPED_TRACE(t);
-    EXPECT_EQ(m.soil_state_at(t).cutting, cutting);
+    EXPECT_EQ(rigid::soil_state_at(m_run, t).cutting, cutting);
     path.state(t, q, v);
     const Vector2d expected = hand_plow_force(g, p, q, v, cutting);
-    const Vector2d got = m.plow_force(t, q, v);
+    const Vector2d got = xz(rigid::plow_force(m, m_run, t, q, v));
     EXPECT_LT((got - expected).norm(), 1e-8 * expected.norm());
   }
 }
@@ -1092,7 +1097,7 @@ TEST(SoilSwitching, CuttingEndsWhenTheBladeOutrunsTheSoilAndResumesAtTheMovingSo
 
 TEST(ChainForce, StepsBetweenFourLevelsWithTheToothPeriodAndTheSoilLaw) {
   const rigid::Machine2DParameters p = chain_machine();
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const rigid::Chain2D& c = p.chain;
   // Hand values: TS = 8 in, VCH = 100 in/s, LC = 36 in.
   const double tpch = 0.08, mtig = 4.0, atch = 0.5 * tpch;
@@ -1100,9 +1105,10 @@ TEST(ChainForce, StepsBetweenFourLevelsWithTheToothPeriodAndTheSoilLaw) {
   const double fth_cut = c.tooth_static_force + c.chain_speed * c.tooth_damping;
   const double fth_back = c.tooth_static_force * c.static_reduction + c.chain_speed * c.tooth_damping * c.damping_reduction;
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   // Products of three numbers: round-off 1e-15 relative.
-  auto expect_level = [&](double t, double level) { EXPECT_NEAR(m.chain_force(t), level, 1e-13 * level) << "t = " << t; };
+  auto expect_level = [&](double t, double level) { EXPECT_NEAR(rigid::chain_force(m, m_run, t), level, 1e-13 * level) << "t = " << t; };
   // Start-up: linear from zero over ramp_time; full teeth for tau < ATCH.
   expect_level(0.01, 0.01 / c.ramp_time * fth_cut * mtig);
   expect_level(0.045, 0.045 / c.ramp_time * fth_cut * (mtig - 1));
@@ -1114,7 +1120,7 @@ TEST(ChainForce, StepsBetweenFourLevelsWithTheToothPeriodAndTheSoilLaw) {
   const double tb = 0.5 * tpch + 0.3 * atch + 0.2;
   VectorXd v = zero;
   v[coordinate(m, "x")] = 2.0 * p.forward_speed;  // the boom outruns the soil
-  EXPECT_FALSE(m.on_event(tb, zero, v, {0}, {+1}).empty());
+  EXPECT_FALSE(m_dyn.on_event(tb, zero, v, {0}, {+1}).empty());
   for (int k = 4; k <= 6; ++k) {
     expect_level(k * tpch + 0.25 * atch, fth_back * mtig);
     expect_level(k * tpch + atch + 0.5 * (tpch - atch), fth_back * (mtig - 1));
@@ -1128,7 +1134,7 @@ TEST(ChainForce, StepsBetweenFourLevelsWithTheToothPeriodAndTheSoilLaw) {
 
 TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEnd) {
   const rigid::Machine2DParameters p = chain_machine();
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const rigid::Chain2D& c = p.chain;
   const double tpch = 0.08, atch = 0.04;
   std::vector<double> expected = {c.ramp_time};
@@ -1138,7 +1144,8 @@ TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEn
   }
   std::sort(expected.begin(), expected.end());
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   const HandFrame h = appendix_c(p.frame, p.cab);
   const int ix = coordinate(m, "x"), iz = coordinate(m, "z"), ity = coordinate(m, "theta_y");
   // The teeth digging just after a scheduled time: MTIG for tau < ATCH.
@@ -1149,11 +1156,11 @@ TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEn
   double t = 0.0;
   for (double next : expected) {
     if (next >= 0.5) break;
-    const double got = m.next_scheduled_change(t);
+    const double got = m_dyn.next_scheduled_change(t);
     // Sums of multiples of 0.08 s: round-off 1e-16 s. Bound 1e-12 s.
     ASSERT_NEAR(got, next, 1e-12) << "after t = " << t;
     t = got;
-    m.on_scheduled_change(t, zero, zero);
+    m_dyn.on_scheduled_change(t, zero, zero);
     // The forcing now in force (Eq. 2.33 by hand): RCH along (cos, -sin)
     // theta_ch at the chain pin, the moment -RCH l2, plus the soil's flow
     // term C5 J5^T (VS cos, -VS sin) at the boom (the teeth cut).
@@ -1170,11 +1177,11 @@ TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEn
     f[iz] += fz;
     f[ity] += d5 * fx - a5 * fz;
     VectorXd a;
-    m.acceleration(t, zero, zero, a);
-    const VectorXd expected_a = m.mass_matrix().ldlt().solve(f);
+    m_dyn.acceleration(t, zero, zero, a);
+    const VectorXd expected_a = m.m.ldlt().solve(f);
     EXPECT_LT(relative_difference(a, expected_a), 1e-12) << "t = " << t;
   }
-  EXPECT_NEAR(m.next_scheduled_change(0.0), std::min(c.ramp_time, atch), 1e-15);
+  EXPECT_NEAR(m_dyn.next_scheduled_change(0.0), std::min(c.ramp_time, atch), 1e-15);
 }
 
 // A sample a hair (an ulp) before a scheduled change of the tooth count sees
@@ -1186,25 +1193,26 @@ TEST(ChainForce, ScheduledChangesAreToothPeriodBoundariesAtchOffsetsAndTheRampEn
 // MTIG - 1 for t within 1e-12 TPCH before the end of ATCH.
 TEST(ChainForce, ASampleAnUlpBeforeAToothCountChangeSeesTheCountInForce) {
   const rigid::Machine2DParameters p = chain_machine();
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const rigid::Chain2D& c = p.chain;
   const double fth_cut = c.tooth_static_force + c.chain_speed * c.tooth_damping;
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   double teeth = 4.0;  // MTIG: the fifth tooth digs at t = 0, within ATCH
   double t = 0.0;
   int changes = 0;
   while (true) {
-    const double tc = m.next_scheduled_change(t);
+    const double tc = m_dyn.next_scheduled_change(t);
     if (tc > 0.5) break;
-    m.on_scheduled_change(tc, zero, zero);
+    m_dyn.on_scheduled_change(tc, zero, zero);
     const double before = std::nextafter(tc, 0.0);
     const double ramp_before = std::min(1.0, before / c.ramp_time), ramp_at = std::min(1.0, tc / c.ramp_time);
     // Products of three numbers: round-off 1e-15 relative.
-    EXPECT_NEAR(m.chain_force(before), ramp_before * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "an ulp before t = " << tc;
+    EXPECT_NEAR(rigid::chain_force(m, m_run, before), ramp_before * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "an ulp before t = " << tc;
     const double tau = tc - std::floor(tc / 0.08 + 1e-9) * 0.08;
     if (tc != c.ramp_time) teeth = tau < 0.04 - 1e-9 ? 4.0 : 3.0;  // the count from tc on (TPCH = 0.08 s, ATCH = 0.04 s)
-    EXPECT_NEAR(m.chain_force(tc), ramp_at * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "at t = " << tc;
+    EXPECT_NEAR(rigid::chain_force(m, m_run, tc), ramp_at * fth_cut * teeth, 1e-13 * fth_cut * 4.0) << "at t = " << tc;
     t = tc;
     ++changes;
   }
@@ -1219,17 +1227,18 @@ TEST(ChainForce, ASampleAnUlpBeforeAToothCountChangeSeesTheCountInForce) {
 // FrameLoads2D.FrameFreeBodyBalancesAtEveryInstant).
 TEST(ChainForce, FrameFreeBodyBalancesAtSamplesAHairBeforeToothCountChanges) {
   const rigid::Machine2DParameters p = chain_machine();
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const double tpch = p.chain.tooth_spacing / p.chain.chain_speed;  // as the machine computes it
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   rigid::IntegrationOptions o;
   o.output_interval = std::nextafter(tpch, 0.0);
   o.end_time = 5.5 * tpch;
-  const rigid::Trajectory tr = rigid::integrate_event_located(m, zero, zero, o);
+  const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, zero, zero, o);
   ASSERT_EQ(tr.time.size(), 7u);  // 0, TPCH - ulp, ..., 5 (TPCH - ulp) and the end time
-  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(m, tr);
-  const coupling::StressResultants sr = coupling::frame_stress_resultants(m, tr, loads, {10.0});  // behind everything
+  const std::vector<coupling::FrameLoad2D> loads = coupling::frame_loads_2d(m, p, m_run, tr);
+  const coupling::StressResultants sr = coupling::frame_stress_resultants(m, p.frame, tr, loads, {10.0});  // behind everything
   double scale = 0.0;
   for (const auto& l : loads)
     for (const auto& f : l.force) scale = std::max(scale, f.norm());
@@ -1240,9 +1249,9 @@ TEST(ChainForce, FrameFreeBodyBalancesAtSamplesAHairBeforeToothCountChanges) {
     ASSERT_LT(t, static_cast<double>(i) * tpch) << "sample " << i;  // a hair before the boundary
     ASSERT_GT(t, static_cast<double>(i) * tpch - 1e-12) << "sample " << i;
     // MTIG - 1 teeth until the boundary (past the ramp, the soil law aside).
-    const bool cutting = m.soil_state_at(t).cutting;
+    const bool cutting = rigid::soil_state_at(m_run, t).cutting;
     const double fth = c.tooth_static_force * (cutting ? 1.0 : c.static_reduction) + c.chain_speed * c.tooth_damping * (cutting ? 1.0 : c.damping_reduction);
-    EXPECT_NEAR(m.chain_force(t), 3.0 * fth, 1e-13 * fth) << "t = " << t;
+    EXPECT_NEAR(rigid::chain_force(m, m_run, t), 3.0 * fth, 1e-13 * fth) << "t = " << t;
     EXPECT_NEAR(sr.srx[i][0], 0.0, 1e-9 * scale) << "t = " << t;
     EXPECT_NEAR(sr.srz[i][0], 0.0, 1e-9 * scale) << "t = " << t;
     EXPECT_NEAR(sr.srmy[i][0], 0.0, 1e-9 * scale * 5.0) << "t = " << t;  // moment arms up to ~5 m
@@ -1315,9 +1324,10 @@ TEST(VehicleModelRuns, OneModelRunAtTwoShakerFrequenciesEqualsTwoFreshBuildsBitF
   EXPECT_TRUE(identical_runs(a2.trajectory, fresh2.trajectory));
   EXPECT_TRUE(identical_runs(a3.trajectory, fresh1.trajectory));  // the f2 run left nothing behind in the model
   // The same run through the compatibility wrapper (the integrated object) is the same run.
-  rigid::Machine2D machine(p2);
-  machine.reset(0.0, zero);
-  EXPECT_TRUE(identical_runs(rigid::integrate_event_located(machine, zero, zero, short_run()), fresh2.trajectory));
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(p2);
+  rigid::VehicleRunState machine_run = rigid::start_run(machine, 0.0, zero);
+  rigid::VehicleDynamics machine_dyn(machine, machine_run);
+  EXPECT_TRUE(identical_runs(rigid::integrate_event_located(machine_dyn, zero, zero, short_run()), fresh2.trajectory));
   // Force recovery works from (model, run state): RPF of the model's second run from its own
   // state equals that of the fresh run. And the two frequencies give different responses.
   for (std::size_t i = 0; i < a2.trajectory.time.size(); ++i) {
@@ -1359,7 +1369,7 @@ TEST(VehicleModelRuns, DampingChangedInPlaceEqualsAFreshBuildAndSoilDampingNeeds
 
 TEST(FreeVibration, UndampedUnforcedMachineConservesEnergy) {
   const rigid::Machine2DParameters p = linear_machine(0.0);
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const int n = m.size();
   VectorXd q0 = VectorXd::Zero(n), v0 = VectorXd::Zero(n);
   q0[coordinate(m, "z")] = 2e-3;
@@ -1368,15 +1378,16 @@ TEST(FreeVibration, UndampedUnforcedMachineConservesEnergy) {
   q0[coordinate(m, "w")] = 3e-3;
   v0[coordinate(m, "x")] = 0.02;
   v0[coordinate(m, "theta_v")] = 0.05;
-  m.reset(0.0, q0);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, q0);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   rigid::IntegrationOptions o;
   o.end_time = 1.0;
   o.output_interval = 1e-3;
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-15;
   o.velocity_scale = 100.0;
-  const rigid::Trajectory tr = rigid::integrate_event_located(m, q0, v0, o);
-  const MatrixXd mm = m.mass_matrix(), kk = m.stiffness_matrix();
+  const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, q0, v0, o);
+  const MatrixXd mm = m.m, kk = m.k_full;
   auto energy = [&](const VectorXd& q, const VectorXd& v) { return 0.5 * v.dot(mm * v) + 0.5 * q.dot(kk * q); };
   const double e0 = energy(q0, v0);
   double worst = 0.0;
@@ -1396,9 +1407,9 @@ TEST(ForcedResponse, GroundSineAtTheFrontTireReachesTheFrequencyResponse) {
   p.front_tire.normal_input.kind = rigid::GroundInput::Kind::sine;
   p.front_tire.normal_input.amplitude = amplitude;
   p.front_tire.normal_input.frequency = hz;
-  rigid::Machine2D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const int n = m.size();
-  const MatrixXd mm = m.mass_matrix(), kk = m.stiffness_matrix(), cc = m.damping_matrix();
+  const MatrixXd mm = m.m, kk = m.k_full, cc = m.c_full;
   // The ground under the front tire rises by xr = A sin(w t) along the ground
   // normal: the tire pushes the frame point at the contact up by
   // k (xr - n.d) + c (vr - n.d'). Generalised force F = J^T n (k xr + c vr),
@@ -1430,8 +1441,9 @@ TEST(ForcedResponse, GroundSineAtTheFrontTireReachesTheFrequencyResponse) {
   o.absolute_tolerance = 1e-14;
   o.velocity_scale = 100.0;
   const VectorXd zero = VectorXd::Zero(n);
-  m.reset(0.0, zero);
-  const rigid::Trajectory tr = rigid::integrate_event_located(m, zero, zero, o);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
+  const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, zero, zero, o);
   VectorXd peak = VectorXd::Zero(n), worst = VectorXd::Zero(n);
   for (std::size_t i = 0; i < tr.time.size(); ++i) {
     const double t = tr.time[i];
@@ -1446,15 +1458,15 @@ TEST(ForcedResponse, GroundSineAtTheFrontTireReachesTheFrequencyResponse) {
   std::printf("slowest decay %.2f 1/s, compared from t = %.2f s (%ld steps)\n", sigma, t0, tr.steps);
   for (int j = 0; j < n; ++j) {
     const double amp = std::abs(response[j]);
-    std::printf("  %-8s |X| = %.6e, sampled peak %.6e, max |q - Im(X e^iwt)| / |X| = %.1e\n", m.model().coordinate_names()[j].c_str(), amp,
+    std::printf("  %-8s |X| = %.6e, sampled peak %.6e, max |q - Im(X e^iwt)| / |X| = %.1e\n", m.multibody.coordinate_names()[j].c_str(), amp,
                 peak[j], worst[j] / amp);
     // Residual transient e^-18 times its O(1) start, integrator error
     // N sqrt(2n) rtol ~ 1e-5 at most on a damped system: bound 1e-5 of the
     // amplitude, on the whole signal (phase included, which fixes the sign of
     // the ground input's load).
-    EXPECT_LT(worst[j], 1e-5 * amp) << m.model().coordinate_names()[j];
+    EXPECT_LT(worst[j], 1e-5 * amp) << m.multibody.coordinate_names()[j];
     // Peak of samples 2.5e-4 s apart: low by at most (w dt)^2 / 2 = 1.1e-5.
-    EXPECT_NEAR(peak[j], amp, 3e-5 * amp) << m.model().coordinate_names()[j];
+    EXPECT_NEAR(peak[j], amp, 3e-5 * amp) << m.multibody.coordinate_names()[j];
   }
 }
 

@@ -51,7 +51,7 @@ constexpr double kDamp = kLbf / kInch;       // lbf s/in in N s/m
 Vector3d in3(double x, double y, double z) { return Vector3d(x, y, z) * kInch; }
 double weight(double lb) { return lb * kLbm; }  // mass of a weight in lb
 
-int coordinate(const rigid::Machine3D& m, const std::string& name) {
+int coordinate(const rigid::VehicleModel& m, const std::string& name) {
   const int i = m.coordinate(name);
   if (i < 0) throw std::logic_error("no coordinate " + name);
   return i;
@@ -215,14 +215,14 @@ struct Pose {
 
 class ExactGeometry {
  public:
-  ExactGeometry(const rigid::Machine3DParameters& p, const rigid::Machine3D& m) : p_(p), m_(m), n_(m.size()) {}
+  ExactGeometry(const rigid::Machine3DParameters& p, const rigid::VehicleModel& m) : p_(p), m_(m), n_(m.size()) {}
 
   double c(const VectorXd& q, const char* name) const {
     const int i = m_.coordinate(name);
     return i < 0 ? 0.0 : q[i];
   }
   Pose frame(const VectorXd& q) const {
-    const Vector3d ref = m_.reference();
+    const Vector3d ref = m_.reference;
     return {ref + Vector3d(c(q, "x"), c(q, "y"), c(q, "z")), ref, rotvec({c(q, "theta_x"), c(q, "theta_y"), c(q, "theta_z")})};
   }
   Pose front_axle(const VectorXd& q) const {
@@ -368,7 +368,7 @@ class ExactGeometry {
 
  private:
   rigid::Machine3DParameters p_;
-  const rigid::Machine3D& m_;
+  const rigid::VehicleModel& m_;
   int n_;
 };
 
@@ -419,7 +419,7 @@ struct Energies {
   MatrixXd mass, stiffness, damping;
 };
 
-Energies exact_hessians(const rigid::Machine3DParameters& p, const rigid::Machine3D& m) {
+Energies exact_hessians(const rigid::Machine3DParameters& p, const rigid::VehicleModel& m) {
   const ExactGeometry g(p, m);
   const auto springs = g.springs();
   const int n = m.size();
@@ -444,11 +444,11 @@ Energies exact_hessians(const rigid::Machine3DParameters& p, const rigid::Machin
 // 1. M, K, C from the exact geometry
 
 void check_against_exact(const rigid::Machine3DParameters& p, const char* label) {
-  rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const Energies e = exact_hessians(p, m);
-  const double dm = scaled_difference(m.mass_matrix(), e.mass);
-  const double dk = scaled_difference(m.stiffness_matrix(), e.stiffness);
-  const double dc = scaled_difference(m.damping_matrix(), e.damping);
+  const double dm = scaled_difference(m.m, e.mass);
+  const double dk = scaled_difference(m.k_full, e.stiffness);
+  const double dc = scaled_difference(m.c_full, e.damping);
   std::printf("%s: scaled differences M %.2e, K %.2e, C %.2e\n", label, dm, dk, dc);
   // Finite-difference error: T and D through velocity differences (1e-10
   // relative truncation, round-off eps/1e-5 ~ 1e-11 amplified by the Hessian
@@ -464,10 +464,10 @@ TEST(Vehicle3DAssembly, MassStiffnessDampingAreHessiansOfTheExactOffsetChainGeom
 
 TEST(Vehicle3DAssembly, MassIsPositiveDefiniteAndStiffnessDampingSymmetric) {
   for (const auto& p : {offset_plow(), offset_chain()}) {
-    rigid::Machine3D m(p);
-    EXPECT_LT((m.mass_matrix() - m.mass_matrix().transpose()).norm(), 1e-12 * m.mass_matrix().norm());
-    EXPECT_LT((m.stiffness_matrix() - m.stiffness_matrix().transpose()).norm(), 1e-14 * m.stiffness_matrix().norm());  // round-off of the outer products
-    Eigen::SelfAdjointEigenSolver<MatrixXd> es(m.mass_matrix());
+    const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+    EXPECT_LT((m.m - m.m.transpose()).norm(), 1e-12 * m.m.norm());
+    EXPECT_LT((m.k_full - m.k_full.transpose()).norm(), 1e-14 * m.k_full.norm());  // round-off of the outer products
+    Eigen::SelfAdjointEigenSolver<MatrixXd> es(m.m);
     EXPECT_GT(es.eigenvalues().minCoeff(), 0.0);
   }
 }
@@ -488,9 +488,9 @@ TEST(ProductsOfInertia, TwoPointMassesCombineWithTheParallelAxisProducts) {
 TEST(ProductsOfInertia, CabRotationalMassBlockIsTheInertiaTensorWithItsProducts) {
   rigid::Machine3DParameters p = offset_plow();
   p.cab.body.inertia = rigid::inertia_tensor(90, 110, 95, 3, 6, -2);
-  rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const int tu = coordinate(m, "theta_u");
-  const MatrixXd block = m.mass_matrix().block(tu, tu, 3, 3);
+  const MatrixXd block = m.m.block(tu, tu, 3, 3);
   EXPECT_LT((block - p.cab.body.inertia).norm(), 1e-12 * p.cab.body.inertia.norm());
   EXPECT_NEAR(block(0, 2), -6.0, 1e-12);  // -P_xz couples roll and yaw, as the thesis's IXZ terms of Eq. 3.10
 }
@@ -500,8 +500,8 @@ TEST(SteeringRotation, TireSpringDirectionsAreTheWheelAxesTurnedExactlyByDelta) 
   const double d = 22 * kPi / 180;
   p.front_tires.steering_angle = d;
   p.rear_tires.steering_angle = -0.5;  // large, to the left
-  rigid::Machine3D m(p);
-  auto dir = [&](const std::string& name) { return m.model().elements()[static_cast<std::size_t>(m.model().element_index(name))].direction; };
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  auto dir = [&](const std::string& name) { return m.multibody.elements()[static_cast<std::size_t>(m.multibody.element_index(name))].direction; };
   EXPECT_LT((dir("front_right_tire_longitudinal") - Vector3d(std::cos(d), -std::sin(d), 0)).norm(), 1e-15);
   EXPECT_LT((dir("front_right_tire_lateral") - Vector3d(std::sin(d), std::cos(d), 0)).norm(), 1e-15);
   EXPECT_LT((dir("rear_left_tire_longitudinal") - Vector3d(std::cos(0.5), std::sin(0.5), 0)).norm(), 1e-15);
@@ -509,7 +509,7 @@ TEST(SteeringRotation, TireSpringDirectionsAreTheWheelAxesTurnedExactlyByDelta) 
   VectorXd q = VectorXd::Zero(m.size());
   q[coordinate(m, "x")] = -std::cos(d);
   q[coordinate(m, "y")] = std::sin(d);
-  const auto g = [&](const std::string& name) { return m.model().elongation_map(m.model().element_index(name)).dot(q); };
+  const auto g = [&](const std::string& name) { return m.multibody.elongation_map(m.multibody.element_index(name)).dot(q); };
   EXPECT_NEAR(g("front_left_tire_longitudinal"), -1.0, 1e-14);
   EXPECT_NEAR(g("front_left_tire_lateral"), 0.0, 1e-14);
   EXPECT_NEAR(g("front_left_tire_vertical"), 0.0, 1e-14);
@@ -521,7 +521,7 @@ TEST(FrontAxle, PinnedAxleLockedToTheFrameAddsAppendixFMassAndInertia) {
   // mass matrix about the reference point of a body of these properties.
   rigid::Machine3DParameters p = offset_plow();
   p.attachment = rigid::Attachment::none;
-  rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   std::vector<rigid::RigidPart3D> all = p.frame.parts;
   all.push_back(p.frame.reel_and_carrier);
   all.push_back(p.frame.rear_axle);
@@ -531,9 +531,9 @@ TEST(FrontAxle, PinnedAxleLockedToTheFrameAddsAppendixFMassAndInertia) {
   MatrixXd lock = MatrixXd::Zero(m.size(), 6);
   for (int i = 0; i < 6; ++i) lock(i, i) = 1.0;
   lock(coordinate(m, "eta"), 3) = 1.0;
-  const MatrixXd m6 = lock.transpose() * m.mass_matrix() * lock;
+  const MatrixXd m6 = lock.transpose() * m.m * lock;
   // Rigid body about the reference: [[m 1, -m [r]x], [m [r]x, I + m([r]x)^T [r]x]] with r = cg - ref.
-  const Vector3d r = f.cg - m.reference();
+  const Vector3d r = f.cg - m.reference;
   const Matrix3d s = rigid::skew(r);
   MatrixXd expected(6, 6);
   expected << f.mass * Matrix3d::Identity(), -f.mass * s, f.mass * s, f.inertia + f.mass * s.transpose() * s;
@@ -543,11 +543,11 @@ TEST(FrontAxle, PinnedAxleLockedToTheFrameAddsAppendixFMassAndInertia) {
 // ===========================================================================
 // 3. Appendix G: isolated single-freedom modes
 
-double isolated_frequency(const rigid::Machine3D& m, const std::string& keep) {
+double isolated_frequency(const rigid::VehicleModel& m, const std::string& keep) {
   std::vector<std::string> fixed;
-  for (const auto& name : m.model().coordinate_names())
+  for (const auto& name : m.multibody.coordinate_names())
     if (name != keep) fixed.push_back(name);
-  const auto modes = rigid::rigid_modes(m.mass_matrix(), m.stiffness_matrix(), m.model().coordinate_names(), fixed);
+  const auto modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names(), fixed);
   return modes.at(0).frequency_hz;
 }
 
@@ -564,12 +564,12 @@ TEST(AppendixE, ArmEndCrossMotionUnderRollIsMinusD19PlusTA2CosAlpha) {
   rigid::Machine3DParameters p = offset_plow();
   const double alpha = 25 * kPi / 180;
   p.plow.boom_angle = alpha;
-  const rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const ExactGeometry exact(p, m);
-  const auto& pp = m.plow_placement();
+  const auto& pp = m.plow_placement;
   const int itx = coordinate(m, "theta_x");
   // The model's Jacobian of pin 9 (a point of the shank and of the arm).
-  const rigid::Body& plow = m.model().bodies()[static_cast<std::size_t>(m.plow_body())];
+  const rigid::Body& plow = m.multibody.bodies()[static_cast<std::size_t>(m.plow_body)];
   const rigid::Jacobian j9 = plow.translation - rigid::skew(pp.pin9 - pp.cg) * plow.rotation;
   // Central differences of the exact geometry.
   const double h = 1e-6;
@@ -578,7 +578,7 @@ TEST(AppendixE, ArmEndCrossMotionUnderRollIsMinusD19PlusTA2CosAlpha) {
   qm[itx] = -h;
   const Vector3d fd = (exact.arm(qp).map(pp.pin9) - exact.arm(qm).map(pp.pin9)) / (2 * h);
   // Appendix E's dimensions.
-  const double d19 = pp.pin6.z() - m.reference().z();
+  const double d19 = pp.pin6.z() - m.reference.z();
   const double rise = pp.pin9.z() - pp.pin6.z();                      // l1 sin psi'
   const double ta2 = rise * std::cos(alpha);                          // TA2 = l1 sin psi' cos alpha'
   const double corrected = -(d19 + ta2 * std::cos(alpha)), printed = -(d19 - ta2 * std::cos(alpha));
@@ -593,7 +593,7 @@ TEST(AppendixG, FrontAxleRollMatchesAppendixG) {
   // K2 lateral and K3 vertical per tire, contacts at +-bp201 and dp201 below the pin,
   // the axle's c.g. dp200 below the pin.
   rigid::Machine3DParameters p = from_2d(shipped_2d(), 1e6);
-  const rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const double dp200 = p.front_axle.pin.z() - p.front_axle.axle.cg.z();
   const double dp201 = p.front_axle.pin.z() - p.front_tires.left.contact.z();
   const double bp201 = p.front_tires.right.contact.y();
@@ -610,8 +610,8 @@ TEST(AppendixG, BoomSwingMatchesAppendixG) {
   // d from the swing pin to the blade point (where the lateral soil spring K15 acts).
   rigid::Machine3DParameters p = from_2d(shipped_2d(), 1e6);
   p.plow.inertia_boom_axes = rigid::inertia_tensor(40, 70, 55, 0, 4, 0);
-  const rigid::Machine3D m(p);
-  const double a = m.plow_placement().cg.x() - p.plow.swing_pin.x(), d = m.plow_placement().blade.x() - p.plow.swing_pin.x();
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  const double a = m.plow_placement.cg.x() - p.plow.swing_pin.x(), d = m.plow_placement.blade.x() - p.plow.swing_pin.x();
   const double hand = std::sqrt((p.soil_lateral.stiffness * d * d + p.plow.swing_spring.stiffness) / (55 + p.plow.mass * a * a)) / (2 * kPi);
   const double model = isolated_frequency(m, "alpha");
   std::printf("alpha: model %.9f Hz, Appendix G %.9f Hz\n", model, hand);
@@ -627,7 +627,7 @@ TEST(AppendixG, ParallelogramPlowPsiIsSqrtOfK5PlusK8OverM2In3D) {
   p.plow.linkage.lower_joint = Vector2d(112, -10) * kInch;
   p.plow.lift_cylinder = {0.0, 0.0};
   p.plow.blade_angle = 0.3;  // the blade plane's angle changes nothing for a translating shank
-  const rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const double hand = std::sqrt((p.soil.stiffness + p.plow.bounce_tire.stiffness) / p.plow.mass) / (2 * kPi);
   const double model = isolated_frequency(m, "psi");
   std::printf("psi: model %.9f Hz, Appendix G %.9f Hz\n", model, hand);
@@ -639,10 +639,10 @@ TEST(AppendixG, ParallelogramPlowPsiIsSqrtOfK5PlusK8OverM2In3D) {
 
 TEST(PlanarAgreement, SymmetricModelWithStiffCabXGivesThe2DFrequencies) {
   const rigid::Machine2DParameters p2 = shipped_2d();
-  const rigid::Machine2D m2(p2);
-  const auto modes2 = rigid::rigid_modes(m2.mass_matrix(), m2.stiffness_matrix(), m2.model().coordinate_names());
+  const rigid::VehicleModel m2 = rigid::build_vehicle_model(p2);
+  const auto modes2 = rigid::rigid_modes(m2.m, m2.k_full, m2.multibody.coordinate_names());
   // Cab X stiffness 1e13 N/m: the constraint's error (w / w_penalty)^2 ~ 1e-10 relative.
-  const rigid::Machine3D m3(from_2d(p2, 1e13));
+  const rigid::VehicleModel m3 = rigid::build_vehicle_model(from_2d(p2, 1e13));
   const std::vector<std::string> out_of_plane{"y", "theta_x", "theta_z", "v", "theta_u", "theta_w", "eta", "alpha"};
   // The symmetric model decouples exactly: no M or K entry between X-Z and out-of-plane coordinates.
   const std::vector<std::string> in_plane{"x", "z", "theta_y", "u", "w", "theta_v", "psi"};
@@ -650,11 +650,11 @@ TEST(PlanarAgreement, SymmetricModelWithStiffCabXGivesThe2DFrequencies) {
   for (const auto& a : in_plane)
     for (const auto& b : out_of_plane) {
       const int i = coordinate(m3, a), j = coordinate(m3, b);
-      coupling_term = std::max({coupling_term, std::abs(m3.mass_matrix()(i, j)) / std::sqrt(m3.mass_matrix()(i, i) * m3.mass_matrix()(j, j)),
-                                std::abs(m3.stiffness_matrix()(i, j)) / std::sqrt(m3.stiffness_matrix()(i, i) * m3.stiffness_matrix()(j, j))});
+      coupling_term = std::max({coupling_term, std::abs(m3.m(i, j)) / std::sqrt(m3.m(i, i) * m3.m(j, j)),
+                                std::abs(m3.k_full(i, j)) / std::sqrt(m3.k_full(i, i) * m3.k_full(j, j))});
     }
   EXPECT_LT(coupling_term, 1e-14);
-  const auto modes3 = rigid::rigid_modes(m3.mass_matrix(), m3.stiffness_matrix(), m3.model().coordinate_names(), out_of_plane);
+  const auto modes3 = rigid::rigid_modes(m3.m, m3.k_full, m3.multibody.coordinate_names(), out_of_plane);
   ASSERT_EQ(modes3.size(), modes2.size() + 1);  // u's penalty mode on top
   for (std::size_t i = 0; i < modes2.size(); ++i) {
     std::printf("X-Z mode %zu: 2-D %.9f Hz (%s), 3-D %.9f Hz (%s)\n", i, modes2[i].frequency_hz, modes2[i].dominant.c_str(),
@@ -683,21 +683,23 @@ PlanarRun planar_run(bool law_active, double duration, double forward_speed,
     p2.soil.stiffness_reduction = p2.soil.damping_reduction = 1.0;
     p2.soil.cut_face = p2.soil.spring_from_contact = p2.soil.contact_moves_with_soil = false;
   }
-  rigid::Machine2D m2(p2);
+  const rigid::VehicleModel m2 = rigid::build_vehicle_model(p2);
   // Cab X stiffness 1e13 N/m: the constraint's relative error (w_shaker / w_penalty)^2 = (115 / 1.8e5)^2 ~ 4e-7.
-  rigid::Machine3D m3(from_2d(p2, 1e13));
+  const rigid::VehicleModel m3 = rigid::build_vehicle_model(from_2d(p2, 1e13));
   VectorXd q2 = VectorXd::Zero(m2.size()), q3 = VectorXd::Zero(m3.size());
-  m2.reset(0.0, q2);
-  m3.reset(0.0, q3);
+  rigid::VehicleRunState m2_run = rigid::start_run(m2, 0.0, q2);
+  rigid::VehicleDynamics m2_dyn(m2, m2_run);
+  rigid::VehicleRunState m3_run = rigid::start_run(m3, 0.0, q3);
+  rigid::VehicleDynamics m3_dyn(m3, m3_run);
   rigid::IntegrationOptions o;
   o.end_time = duration;
   o.output_interval = 1e-3;
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-13;
   o.velocity_scale = 100.0;
-  const rigid::Trajectory t2 = rigid::integrate_event_located(m2, q2, q2, o);
+  const rigid::Trajectory t2 = rigid::integrate_event_located(m2_dyn, q2, q2, o);
   o.method = rigid::MultistepMethod::bdf;  // the stiff cab X penalty
-  const rigid::Trajectory t3 = rigid::integrate_event_located(m3, q3, q3, o);
+  const rigid::Trajectory t3 = rigid::integrate_event_located(m3_dyn, q3, q3, o);
   PlanarRun r;
   r.events_2d = t2.events.size();
   r.events_3d = t3.events.size();
@@ -830,20 +832,22 @@ TEST(GroundInput3D, SineUnderOneTireLoadsTheModelThroughThatTireOnly) {
   p.front_tires.left.vertical_input.kind = rigid::GroundInput::Kind::sine;
   p.front_tires.left.vertical_input.amplitude = 0.01;
   p.front_tires.left.vertical_input.frequency = 3.0;
-  rigid::Machine3D m(p);
-  m.reset(0.0, VectorXd::Zero(m.size()));
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, VectorXd::Zero(m.size()));
+  rigid::VehicleDynamics m_dyn(m, m_run);
   const double t = 0.07;
   VectorXd a(m.size());
-  m.acceleration(t, VectorXd::Zero(m.size()), VectorXd::Zero(m.size()), a);
-  const int e = m.model().element_index("front_left_tire_vertical");
-  const rigid::SpringDamper& el = m.model().elements()[static_cast<std::size_t>(e)];
-  const VectorXd expected = m.model().elongation_map(e).transpose() *
+  m_dyn.acceleration(t, VectorXd::Zero(m.size()), VectorXd::Zero(m.size()), a);
+  const int e = m.multibody.element_index("front_left_tire_vertical");
+  const rigid::SpringDamper& el = m.multibody.elements()[static_cast<std::size_t>(e)];
+  const VectorXd expected = m.multibody.elongation_map(e).transpose() *
                             (el.stiffness * p.front_tires.left.vertical_input.displacement(t) + el.damping * p.front_tires.left.vertical_input.velocity(t));
-  EXPECT_LT((m.mass_matrix() * a - expected).norm(), 1e-10 * expected.norm());
-  // A copy of the machine keeps its inputs (they are looked up, not pointed to).
-  const rigid::Machine3D copy = m;
+  EXPECT_LT((m.m * a - expected).norm(), 1e-10 * expected.norm());
+  // A copy of the model keeps its inputs (they are looked up, not pointed to).
+  const rigid::VehicleModel copy = m;
+  rigid::VehicleRunState copy_run = rigid::start_run(copy, 0.0, VectorXd::Zero(copy.size()));
   VectorXd b(m.size());
-  copy.acceleration(t, VectorXd::Zero(m.size()), VectorXd::Zero(m.size()), b);
+  rigid::VehicleDynamics(copy, copy_run).acceleration(t, VectorXd::Zero(m.size()), VectorXd::Zero(m.size()), b);
   EXPECT_EQ((a - b).norm(), 0.0);
 }
 
@@ -851,35 +855,36 @@ TEST(GroundInput3D, SineUnderOneTireLoadsTheModelThroughThatTireOnly) {
 // 5. The chain variant
 
 TEST(ChainVariant, HasThirteenCoordinatesWithoutPsiAndAlpha) {
-  const rigid::Machine3D m(offset_chain());
+  const rigid::VehicleModel m = rigid::build_vehicle_model(offset_chain());
   EXPECT_EQ(m.size(), 13);
   EXPECT_LT(m.coordinate("psi"), 0);
   EXPECT_LT(m.coordinate("alpha"), 0);
-  EXPECT_EQ(m.model().coordinate_names().back(), "eta");
+  EXPECT_EQ(m.multibody.coordinate_names().back(), "eta");
 }
 
 TEST(ChainVariant, ChainForceAtPoint19IsRchAlongTheChainAndRmchAboutY) {
   rigid::Machine3DParameters p = offset_chain();
   p.chain.ramp_time = 0.0;
   p.forward_speed = 0.0;
-  rigid::Machine3D m(p);
-  m.reset(0.0, VectorXd::Zero(m.size()));
-  const double rch = m.chain_force(0.0);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, VectorXd::Zero(m.size()));
+  rigid::VehicleDynamics m_dyn(m, m_run);
+  const double rch = rigid::chain_force(m, m_run, 0.0);
   const double mtig = std::floor(36.0 / 8.0);  // 4 teeth, the fifth at t=0 within ATCH
   EXPECT_NEAR(rch, (900 * kLbf + 100 * kInch * 2 * kDamp) * mtig, 1e-9 * rch);
   // Virtual work: Q . dq = F . d19 + M . dtheta for any dq.
   VectorXd a(m.size());
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.acceleration(0.0, zero, zero, a);
-  const VectorXd q_force = m.mass_matrix() * a;
-  const Vector3d f = m.chain_force_vector(0.0), mom = m.chain_moment(0.0);
-  VectorXd expected = m.model().generalized_force(m.chain_point(), f);
-  expected += m.model().bodies()[static_cast<std::size_t>(m.frame_body())].rotation.transpose() * mom;
+  m_dyn.acceleration(0.0, zero, zero, a);
+  const VectorXd q_force = m.m * a;
+  const Vector3d f = rch * m.chain_direction, mom(0.0, -rch * m.chain_moment_arm, 0.0);  // RCH along the chain, RMCH about +Y
+  VectorXd expected = m.multibody.generalized_force(m.chain_point, f);
+  expected += m.multibody.bodies()[static_cast<std::size_t>(m.frame_body)].rotation.transpose() * mom;
   // The soil dampers see the soil flow (VS = 0 here): no other force at rest.
   EXPECT_LT((q_force - expected).norm(), 1e-9 * expected.norm());
   // The offset pin: RCH's X component at Y = 35 in yaws the frame (moment about Z = -Y_rel * F_x).
   const double yaw = expected[coordinate(m, "theta_z")];
-  EXPECT_NEAR(yaw, -(p.chain.chain_pin.y() - m.reference().y()) * f.x() + (p.chain.chain_pin.x() - m.reference().x()) * f.y(), 1e-9 * std::abs(yaw));
+  EXPECT_NEAR(yaw, -(p.chain.chain_pin.y() - m.reference.y()) * f.x() + (p.chain.chain_pin.x() - m.reference.x()) * f.y(), 1e-9 * std::abs(yaw));
 }
 
 // ===========================================================================
@@ -887,19 +892,20 @@ TEST(ChainVariant, ChainForceAtPoint19IsRchAlongTheChainAndRmchAboutY) {
 
 void check_frame_balance(rigid::Machine3DParameters p, const char* label) {
   p.forward_speed = 6 * kInch;
-  rigid::Machine3D m(p);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(p);
   const VectorXd zero = VectorXd::Zero(m.size());
-  m.reset(0.0, zero);
+  rigid::VehicleRunState m_run = rigid::start_run(m, 0.0, zero);
+  rigid::VehicleDynamics m_dyn(m, m_run);
   rigid::IntegrationOptions o;
   o.end_time = 0.15;
   o.output_interval = 1e-3;
   o.relative_tolerance = 1e-8;
   o.absolute_tolerance = 1e-12;
   o.velocity_scale = 100.0;
-  const rigid::Trajectory tr = rigid::integrate_event_located(m, zero, zero, o);
-  const coupling::FrameLoads3D loads = coupling::frame_loads_3d(m, tr);
+  const rigid::Trajectory tr = rigid::integrate_event_located(m_dyn, zero, zero, o);
+  const coupling::FrameLoads3D loads = coupling::frame_loads_3d(m, p, m_run, tr);
   ASSERT_EQ(loads.points.points.size(), 8u);
-  const rigid::Body& frame = m.model().bodies()[static_cast<std::size_t>(m.frame_body())];
+  const rigid::Body& frame = m.multibody.bodies()[static_cast<std::size_t>(m.frame_body)];
   const Vector3d cg = rigid::combine(p.frame.parts, "frame").cg;
   double worst_force = 0.0, worst_moment = 0.0, scale_force = 0.0, scale_moment = 0.0, front_tx = 0.0, rear_tx = 0.0;
   for (std::size_t i = 0; i < tr.time.size(); ++i) {
