@@ -11,7 +11,7 @@
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
-#include "apps/run_outputs.h"
+#include "report/run_outputs.h"
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "fem/transient_step.h"
@@ -71,7 +71,7 @@ int run_transient(const TransientCommandOptions& opt) {
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
   nlohmann::ordered_json summary = report::write_transient_step_results(deck, r, {opt.mesh.path, output_nodes}, folder);
-  add_warnings(summary, warnings);  // also on stderr
+  report::add_warnings(summary, warnings, print_warning);  // also on stderr
   folder.write_text("summary.json", summary.dump(2) + "\n");
   folder.commit();
   progress.done();

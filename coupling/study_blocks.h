@@ -158,8 +158,8 @@ rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const Cali
   };
   rigid::ModeFamily family;
   if (c.symmetric_modes) {
-    const Machine nominal(parameters);
-    family = calibration_mode_family(c, nominal.model().coordinate_names());
+    const rigid::VehicleModel nominal = rigid::build_vehicle_model(parameters);
+    family = calibration_mode_family(c, nominal.multibody.coordinate_names());
     std::size_t n = 0;
     const auto modes_now = modes(nominal);
     for (const rigid::RigidMode& m : modes_now) n += family(m) ? 1 : 0;
