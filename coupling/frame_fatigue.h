@@ -51,7 +51,7 @@ struct FatigueDetail {
   std::string element_set;     // as the study spells it (mesh sets are matched case-insensitively)
   double class_mpa = 71.0;     // FAT class / detail category: the normal stress range at 2e6 cycles, MPa
   std::optional<double> shear_class_mpa;  // the shear range at 2e6 cycles, MPa; nullopt: the request's shear default
-  core::InputLocation where;   // for messages about the set
+  core::InputLocation where = {};  // for messages about the set
 };
 
 struct FatigueRequest {

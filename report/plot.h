@@ -22,7 +22,7 @@ struct PlotSeries {
   // Points taken in pairs, one line segment per pair (a mesh's elements):
   // an even number of points, no line from one pair to the next.
   bool segments = false;
-  std::string colour;     // "#rrggbb"; empty: the plot's palette by position
+  std::string colour = {};  // "#rrggbb"; empty: the plot's palette by position
 };
 
 struct LinePlot {

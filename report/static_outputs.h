@@ -22,7 +22,7 @@ struct StaticRun {
   int stations = 3;  // section-force stations per element, ends included (as recovered)
   // Appended to every file name ("_step2": displacements_step2.csv, ...) for
   // one step of a deck with several static steps; empty otherwise.
-  std::string file_suffix;
+  std::string file_suffix = {};
   int step = 0;  // that step's number (summary.json's "step"), 0: none
 };
 

@@ -56,7 +56,9 @@ inline void expect_fit_properties(const std::string& what, const coupling::Calib
   for (std::size_t t = 0; t < req.targets.size(); ++t) {
     ASSERT_GE(match[t], 0);
     const rigid::RigidMode& m = modes[static_cast<std::size_t>(match[t])];
-    if (family) EXPECT_TRUE(family(m)) << "target " << t << " paired outside its family";
+    if (family) {
+      EXPECT_TRUE(family(m)) << "target " << t << " paired outside its family";
+    }
     const double e = std::abs(m.frequency_hz - req.targets[t].frequency_hz) / req.targets[t].frequency_hz;
     worst = std::max(worst, e);
     EXPECT_EQ(static_cast<bool>(c.label_matches[t]), m.dominant == req.targets[t].dominant) << req.targets[t].frequency_hz << " Hz";
