@@ -5,7 +5,8 @@
 #                suite's; -O1 keeps ASan's reports exact, -g1 keeps file:line in them)
 #                with AddressSanitizer and UndefinedBehaviorSanitizer
 #                (-DFRAMEDYN_SANITIZE=address,undefined) and libFuzzer's coverage
-#                instrumentation (-DFRAMEDYN_FUZZ=ON): every test again, where any
+#                instrumentation of the readers' libraries (-DFRAMEDYN_FUZZ=ON; not of
+#                the tests, whose compile it made up to 8x slower): every test again, where any
 #                report (memory error, leak, undefined behaviour) stops the program and
 #                fails its test, and the short fuzz runs of the readers, whose harnesses
 #                link the same sanitized libraries (one sanitized compile serves both).
