@@ -48,22 +48,29 @@ std::unique_ptr<core::ResultsFolder> results_folder(const StudyRunOptions& optio
 
 // Thesis Figure 25: the envelope of the bending moment along the left and
 // right rails over the run (largest resultant |M| at each station).
-void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
+// A plot of bending-moment envelopes along X (the lines added by the caller).
+report::LinePlot rail_envelope_plot(const std::string& title, const core::UnitSystem& u) {
   report::LinePlot plot;
-  plot.title = "Bending moment along the rails (envelope over the run; thesis Figure 25)";
+  plot.title = title;
   plot.x_label = "X along the frame";
   plot.x_unit = u.label(Quantity::length);
   plot.y_label = "peak bending moment";
   plot.y_unit = u.label(Quantity::moment);
-  for (const coupling::RailRecovery& rail : f.rails) {
-    report::PlotSeries series;
-    series.name = rail.spec.name;
-    for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
-      series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
-      series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
-    }
-    plot.series.push_back(series);
+  return plot;
+}
+// One rail's envelope of the resultant |M| at each station, as a line named `name`.
+report::PlotSeries rail_envelope_series(const coupling::RailRecovery& rail, const std::string& name, const core::UnitSystem& u) {
+  report::PlotSeries series;
+  series.name = name;
+  for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
+    series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
+    series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
   }
+  return series;
+}
+void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  report::LinePlot plot = rail_envelope_plot("Bending moment along the rails (envelope over the run; thesis Figure 25)", u);
+  for (const coupling::RailRecovery& rail : f.rails) plot.series.push_back(rail_envelope_series(rail, rail.spec.name, u));
   report::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
 }
 // The bending-moment envelope along each rail under the run's support and
@@ -71,24 +78,11 @@ void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::
 void write_support_comparison_figure(const coupling::FrameStudyResults& f, const coupling::FrameStudyRequest& q,
                                      const std::vector<coupling::FrameStudyResults>& compared, const core::UnitSystem& u,
                                      const core::ResultsFolder& folder) {
-  report::LinePlot plot;
-  plot.title = "Bending moment along the rails under each support (envelope over the run)";
-  plot.x_label = "X along the frame";
-  plot.x_unit = u.label(Quantity::length);
-  plot.y_label = "peak bending moment";
-  plot.y_unit = u.label(Quantity::moment);
+  report::LinePlot plot = rail_envelope_plot("Bending moment along the rails under each support (envelope over the run)", u);
   std::vector<std::pair<const coupling::FrameStudyResults*, coupling::FrameSupports>> runs = {{&f, q.supports}};
   for (std::size_t k = 0; k < compared.size(); ++k) runs.push_back({&compared[k], q.compare_supports[k]});
   for (const auto& [run, supports] : runs)
-    for (const coupling::RailRecovery& rail : run->rails) {
-      report::PlotSeries series;
-      series.name = rail.spec.name + ", " + coupling::supports_name(supports);
-      for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
-        series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
-        series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
-      }
-      plot.series.push_back(series);
-    }
+    for (const coupling::RailRecovery& rail : run->rails) plot.series.push_back(rail_envelope_series(rail, rail.spec.name + ", " + coupling::supports_name(supports), u));
   report::write_png(plot, folder.path_of("frame_supports_envelopes.png"));
 }
 
