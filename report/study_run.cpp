@@ -160,9 +160,8 @@ VehicleStudyFields vehicle_fields(const coupling::RigidStudy& s) {
   return {"rigid_2d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration,
           [&s](const std::string& name) { return coupling::parameter_quantity(s.machine, name); }};
 }
-// The 3-D modes are in the state the response starts in: the blade cutting (Eq. 11.7).
 VehicleStudyFields vehicle_fields(const coupling::RigidStudy3D& s) {
-  return {"rigid_3d", s.name, s.units, s.fixed_coordinates, rigid::ModalSoil::cutting, s.response, s.calibration, coupling::parameter_quantity_3d};
+  return {"rigid_3d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration, coupling::parameter_quantity_3d};
 }
 
 // The stage message of the run.
