@@ -162,11 +162,9 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
   p.attachment = read_attachment(root);
   p.contacts = read_contact_law(root);
 
-  if (auto g = root.optional_map("ground")) {
-    g->allow_only({"slope_deg", "forward_speed"});
-    p.ground_slope = g->number_or("slope_deg", Quantity::dimensionless, 0.0) * kDegree;
-    p.forward_speed = g->number_or("forward_speed", Quantity::velocity, 0.0);
-  }
+  const GroundBlock ground = read_ground(root, /*with_travel_angle=*/false);
+  p.ground_slope = ground.slope;
+  p.forward_speed = ground.forward_speed;
 
   const YamlMap frame = root.map("frame");
   frame.allow_only({"uniform_section", "added_masses"});
@@ -236,17 +234,11 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
   if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
     read_chain(*chain, p.chain);
 
-  if (auto analysis = root.optional_map("analysis")) {
-    analysis->allow_only({"modes", "fixed_coordinates", "modal_soil", "response"});
-    s.modes = analysis->boolean_or("modes", true);
-    s.fixed_coordinates = analysis->strings("fixed_coordinates");
-    const std::string modal_soil = analysis->text_or("modal_soil", "cutting");
-    if (modal_soil == "cutting") s.modal_soil = rigid::ModalSoil::cutting;
-    else if (modal_soil == "backing") s.modal_soil = rigid::ModalSoil::backing;
-    else if (modal_soil == "none") s.modal_soil = rigid::ModalSoil::none;
-    else throw analysis->error("modal_soil", "cutting (K5), backing (REK K5) or none", "'" + modal_soil + "'");
-    if (auto r = analysis->optional_map("response")) s.response = read_response_request(*r);
-  }
+  AnalysisBlock analysis = read_analysis(root);
+  s.modes = analysis.modes;
+  s.fixed_coordinates = std::move(analysis.fixed_coordinates);
+  s.modal_soil = analysis.modal_soil;
+  s.response = analysis.response;
   if (auto fo = root.optional_map("frame_output")) {
     fo->allow_only({"points", "height", "rail"});
     FrameOutputRequest req;
@@ -299,17 +291,9 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
 
   // Element forces: spring + damper + static (Eq. 2.42), compression positive.
   const rigid::Multibody& mb = model.multibody;
-  const std::vector<double>& statics = model.statics.element_forces;
-  for (std::size_t e = 0; e < mb.elements().size(); ++e) {
-    const rigid::SpringDamper& el = mb.elements()[e];
-    if (el.name.rfind("soil", 0) == 0) continue;  // the soil's force is the plow/boom force below
-    Series s{el.name + "_force", Quantity::force, {}};
-    for (std::size_t i = 0; i < ns; ++i) {
-      // Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF, compression positive; zero for a contact lost (Eq. 4a.4).
-      s.values.push_back(statics[e] - rigid::element_tension(model, state, static_cast<int>(e), tr.time[i], tr.q[i], tr.v[i]));
-    }
-    r.series.push_back(std::move(s));
-  }
+  for (std::size_t e = 0; e < mb.elements().size(); ++e)
+    if (mb.elements()[e].name.rfind("soil", 0) != 0)  // the soil's force is the plow/boom force below
+      r.series.push_back(element_force_series(model, state, tr, static_cast<int>(e)));
   if (model.blade_point >= 0) {
     const rigid::Jacobian& j = mb.points()[static_cast<std::size_t>(model.blade_point)].displacement;
     Series bx{"blade_x", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};

@@ -304,12 +304,10 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   p.rear_tires = axle(tires.map("rear"));
   derive_road_delays(p, tires);
   p.travel_angle = p.rear_tires.steering_angle;  // crab steering: the machine travels along its wheels
-  if (auto g = root.optional_map("ground")) {
-    g->allow_only({"slope_deg", "forward_speed", "travel_angle_deg"});
-    p.ground_slope = g->number_or("slope_deg", Quantity::dimensionless, 0.0) * kDegree;
-    p.forward_speed = g->number_or("forward_speed", Quantity::velocity, 0.0);
-    if (g->has("travel_angle_deg")) p.travel_angle = g->number("travel_angle_deg", Quantity::dimensionless) * kDegree;
-  }
+  const GroundBlock ground = read_ground(root, /*with_travel_angle=*/true);
+  p.ground_slope = ground.slope;
+  p.forward_speed = ground.forward_speed;
+  if (ground.travel_angle) p.travel_angle = *ground.travel_angle;
 
   const YamlMap frame = root.map("frame");
   frame.allow_only({"reference", "parts", "reel_and_carrier", "rear_axle"});
@@ -424,12 +422,11 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
     read_chain(*chain, p.chain);
 
-  if (auto analysis = root.optional_map("analysis")) {
-    analysis->allow_only({"modes", "fixed_coordinates", "response"});
-    s.modes = analysis->boolean_or("modes", true);
-    s.fixed_coordinates = analysis->strings("fixed_coordinates");
-    if (auto r = analysis->optional_map("response")) s.response = read_response_request(*r);
-  }
+  AnalysisBlock analysis = read_analysis(root);
+  s.modes = analysis.modes;
+  s.fixed_coordinates = std::move(analysis.fixed_coordinates);
+  s.modal_soil = analysis.modal_soil;
+  s.response = analysis.response;
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
                                             calibratable_parameters_3d(), true);
@@ -470,14 +467,13 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   RigidResults3D r;
   if (study.calibration)
     r.calibration = calibrate_parameters(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::VehicleModel& m) {
-      return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, rigid::ModalSoil::cutting), m.multibody.coordinate_names(), study.fixed_coordinates);
+      return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
   r.machine = study.machine;
   const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
-  // The modes in the state the response starts in: the blade cutting (Eq. 11.7).
   const std::optional<rigid::VehicleRunState> run =
-      run_vehicle_study(model, study.modes, study.fixed_coordinates, rigid::ModalSoil::cutting, study.response, study.units, r);
+      run_vehicle_study(model, study.modes, study.fixed_coordinates, study.modal_soil, study.response, study.units, r);
   if (!run) return r;
   const ResponseRequest& req = *study.response;
   const rigid::VehicleRunState& state = *run;
@@ -510,6 +506,12 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   r.frame_loads = frame_loads_3d(model, study.machine, state, tr);
   r.static_frame_loads = static_frame_loads_3d(model, study.machine);
   assess_response(study, model, r);  // steady operation, validity warnings (issue 15)
+  // The tires' forces, vertical, longitudinal and lateral, as the 2-D model's tire normal and
+  // tractive forces (Eq. 2.42, compression positive): response.csv's last columns (issue 20).
+  // After assess_response, so that rigid.steady's peaks stay those of the blade, soil and chain.
+  for (const char* tire : {"front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire"})
+    for (const char* direction : {"_vertical", "_longitudinal", "_lateral"})
+      r.series.push_back(element_force_series(model, state, tr, model.multibody.element_index(std::string(tire) + direction)));
   return r;
 }
 

@@ -36,6 +36,9 @@ struct RigidStudy3D {
   rigid::Machine3DParameters machine;
   bool modes = true;
   std::vector<std::string> fixed_coordinates;
+  // The soil's contact state the modes and a calibration see (analysis.modal_soil, as in 2-D):
+  // cutting, the default, is the state the response starts in (Eq. 11.7).
+  rigid::ModalSoil modal_soil = rigid::ModalSoil::cutting;
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;  // parameter names of calibratable_parameters_3d()
   // The pipeline (issue 5): the `frame_response:` block sends this run's

@@ -22,6 +22,11 @@ struct History {
   std::vector<double> values;  // SI
 };
 
+// analysis.modal_soil's value for a contact state.
+const char* modal_soil_key(rigid::ModalSoil soil) {
+  return soil == rigid::ModalSoil::cutting ? "cutting" : soil == rigid::ModalSoil::backing ? "backing" : "none";
+}
+
 bool is_blade_motion(const std::string& name) { return name == "blade_x" || name == "blade_y" || name == "blade_z"; }
 
 // The detector over the blade motion and the frame loads, and the peaks of
@@ -88,9 +93,7 @@ void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, 
       r.steady.peaks.push_back({fmt::format("rail_top_stress_point_{}", k + 1), Quantity::stress,
                                 rigid::split_peaks(r.trajectory.time, s, r.steady.operation.reached_at)});
     }
-  const char* soil = study.modal_soil == rigid::ModalSoil::cutting ? "cutting"
-                     : study.modal_soil == rigid::ModalSoil::backing ? "backing" : "none";
-  add_validity_warnings(study, model.multibody, shaker_hz, fmt::format("with analysis.modal_soil: {}", soil), r);
+  add_validity_warnings(study, model.multibody, shaker_hz, fmt::format("with analysis.modal_soil: {}", modal_soil_key(study.modal_soil)), r);
 }
 
 void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model, RigidResults3D& r) {
@@ -105,7 +108,11 @@ void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model
         frame.push_back(std::move(h));
       }
   r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
-  add_validity_warnings(study, model.multibody, shaker_hz, "of the 3-D model", r);
+  // The default state is the one the response starts in; another one is named (its key's value).
+  add_validity_warnings(study, model.multibody, shaker_hz,
+                        study.modal_soil == rigid::ModalSoil::cutting ? std::string("of the 3-D model")
+                                                                       : fmt::format("of the 3-D model with analysis.modal_soil: {}", modal_soil_key(study.modal_soil)),
+                        r);
 }
 
 }  // namespace framedyn::coupling

@@ -255,6 +255,35 @@ ResponseRequest read_response_request(const YamlMap& r) {
   return req;
 }
 
+AnalysisBlock read_analysis(const YamlMap& root) {
+  AnalysisBlock a;
+  const std::optional<YamlMap> analysis = root.optional_map("analysis");
+  if (!analysis) return a;
+  analysis->allow_only({"modes", "fixed_coordinates", "modal_soil", "response"});
+  a.modes = analysis->boolean_or("modes", true);
+  a.fixed_coordinates = analysis->strings("fixed_coordinates");
+  const std::string modal_soil = analysis->text_or("modal_soil", "cutting");
+  if (modal_soil == "cutting") a.modal_soil = rigid::ModalSoil::cutting;
+  else if (modal_soil == "backing") a.modal_soil = rigid::ModalSoil::backing;
+  else if (modal_soil == "none") a.modal_soil = rigid::ModalSoil::none;
+  else throw analysis->error("modal_soil", "cutting (K5), backing (REK K5) or none", "'" + modal_soil + "'");
+  if (auto r = analysis->optional_map("response")) a.response = read_response_request(*r);
+  return a;
+}
+
+GroundBlock read_ground(const YamlMap& root, bool with_travel_angle) {
+  constexpr double kDegree = M_PI / 180.0;
+  GroundBlock g;
+  const std::optional<YamlMap> ground = root.optional_map("ground");
+  if (!ground) return g;
+  if (with_travel_angle) ground->allow_only({"slope_deg", "forward_speed", "travel_angle_deg"});
+  else ground->allow_only({"slope_deg", "forward_speed"});
+  g.slope = ground->number_or("slope_deg", core::Quantity::dimensionless, 0.0) * kDegree;
+  g.forward_speed = ground->number_or("forward_speed", core::Quantity::velocity, 0.0);
+  if (with_travel_angle && ground->has("travel_angle_deg")) g.travel_angle = ground->number("travel_angle_deg", core::Quantity::dimensionless) * kDegree;
+  return g;
+}
+
 ParameterBound calibration_default_bounds(double nominal, core::Quantity q, double factor) {
   if (q == Quantity::rotary_inertia || q == Quantity::dimensionless) {
     // The radius of gyration within kRadiusFactor of its nominal value.
@@ -564,6 +593,14 @@ void set_plow_force_peaks(const std::vector<double>& time, const std::vector<dou
   r.plow_vertical_peak_to_peak = average_peak_to_peak(time, blade_z, period, duration);
   r.average_peak_cutting_force = average_cycle_peak(time, cutting_magnitude, period, duration);
   r.average_peak_backing_force = average_cycle_peak(time, backing_magnitude, period, duration);
+}
+
+Series element_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr, int element) {
+  const double statics = model.statics.element_forces.at(static_cast<std::size_t>(element));
+  Series s{model.multibody.elements().at(static_cast<std::size_t>(element)).name + "_force", core::Quantity::force, {}};
+  s.values.reserve(tr.time.size());
+  for (std::size_t i = 0; i < tr.time.size(); ++i) s.values.push_back(statics - rigid::element_tension(model, run, element, tr.time[i], tr.q[i], tr.v[i]));
+  return s;
 }
 
 Series chain_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr) {

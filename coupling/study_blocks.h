@@ -88,6 +88,26 @@ void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::s
 // analysis.response.
 ResponseRequest read_response_request(const YamlMap& r);
 
+// The `analysis` block, the same in 2-D and 3-D: modes (default true),
+// fixed_coordinates, modal_soil (cutting, the default; backing; none: the soil
+// state the modes and a calibration see) and response. Without the block: the
+// defaults and no response.
+struct AnalysisBlock {
+  bool modes = true;
+  std::vector<std::string> fixed_coordinates;
+  rigid::ModalSoil modal_soil = rigid::ModalSoil::cutting;
+  std::optional<ResponseRequest> response;
+};
+AnalysisBlock read_analysis(const YamlMap& root);
+
+// The `ground` block: slope_deg, forward_speed, and with `with_travel_angle`
+// (3-D: a travel direction needs the Y axis) travel_angle_deg; SI (rad, m/s).
+struct GroundBlock {
+  double slope = 0.0, forward_speed = 0.0;
+  std::optional<double> travel_angle;  // given
+};
+GroundBlock read_ground(const YamlMap& root, bool with_travel_angle);
+
 // The calibration block; `value` gives a parameter's starting value and
 // throws std::invalid_argument for a name not in `known`; `quantity` its
 // physical quantity (for the units of its bounds). Every parameter gets
@@ -206,6 +226,11 @@ std::optional<rigid::VehicleRunState> run_vehicle_study(const rigid::VehicleMode
 // average_peak_to_peak of `blade_z`.
 void set_plow_force_peaks(const std::vector<double>& time, const std::vector<double>& blade_z, const std::vector<double>& magnitude,
                           const std::vector<bool>& cutting, double shaker_hz, double duration, VehicleResults& r);
+
+// The force in element `element` at every sample of a run, named "<element>_force":
+// spring + damper + static (Eq. 2.42: TF = k (XK - XR) + c (VC - VR) + SF),
+// compression positive, zero for a contact lost (Eq. 4a.4); the same in 2-D and 3-D.
+Series element_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr, int element);
 
 // The chain force RCH at every sample of a run.
 Series chain_force_series(const rigid::VehicleModel& model, const rigid::VehicleRunState& run, const rigid::Trajectory& tr);

@@ -38,6 +38,7 @@ namespace framedyn::report {
 namespace {
 
 using core::Quantity;
+using Stage = std::function<void(const std::string&)>;  // a run's progress: a stage begins
 
 // The run's results folder, or one in memory without `out`.
 std::unique_ptr<core::ResultsFolder> results_folder(const StudyRunOptions& options, std::vector<std::filesystem::path> inputs) {
@@ -47,22 +48,29 @@ std::unique_ptr<core::ResultsFolder> results_folder(const StudyRunOptions& optio
 
 // Thesis Figure 25: the envelope of the bending moment along the left and
 // right rails over the run (largest resultant |M| at each station).
-void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
+// A plot of bending-moment envelopes along X (the lines added by the caller).
+report::LinePlot rail_envelope_plot(const std::string& title, const core::UnitSystem& u) {
   report::LinePlot plot;
-  plot.title = "Bending moment along the rails (envelope over the run; thesis Figure 25)";
+  plot.title = title;
   plot.x_label = "X along the frame";
   plot.x_unit = u.label(Quantity::length);
   plot.y_label = "peak bending moment";
   plot.y_unit = u.label(Quantity::moment);
-  for (const coupling::RailRecovery& rail : f.rails) {
-    report::PlotSeries series;
-    series.name = rail.spec.name;
-    for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
-      series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
-      series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
-    }
-    plot.series.push_back(series);
+  return plot;
+}
+// One rail's envelope of the resultant |M| at each station, as a line named `name`.
+report::PlotSeries rail_envelope_series(const coupling::RailRecovery& rail, const std::string& name, const core::UnitSystem& u) {
+  report::PlotSeries series;
+  series.name = name;
+  for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
+    series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
+    series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
   }
+  return series;
+}
+void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::UnitSystem& u, const core::ResultsFolder& folder) {
+  report::LinePlot plot = rail_envelope_plot("Bending moment along the rails (envelope over the run; thesis Figure 25)", u);
+  for (const coupling::RailRecovery& rail : f.rails) plot.series.push_back(rail_envelope_series(rail, rail.spec.name, u));
   report::write_png(plot, folder.path_of("fig25_rail_bending_moment.png"));
 }
 // The bending-moment envelope along each rail under the run's support and
@@ -70,24 +78,11 @@ void write_rail_moment_figure(const coupling::FrameStudyResults& f, const core::
 void write_support_comparison_figure(const coupling::FrameStudyResults& f, const coupling::FrameStudyRequest& q,
                                      const std::vector<coupling::FrameStudyResults>& compared, const core::UnitSystem& u,
                                      const core::ResultsFolder& folder) {
-  report::LinePlot plot;
-  plot.title = "Bending moment along the rails under each support (envelope over the run)";
-  plot.x_label = "X along the frame";
-  plot.x_unit = u.label(Quantity::length);
-  plot.y_label = "peak bending moment";
-  plot.y_unit = u.label(Quantity::moment);
+  report::LinePlot plot = rail_envelope_plot("Bending moment along the rails under each support (envelope over the run)", u);
   std::vector<std::pair<const coupling::FrameStudyResults*, coupling::FrameSupports>> runs = {{&f, q.supports}};
   for (std::size_t k = 0; k < compared.size(); ++k) runs.push_back({&compared[k], q.compare_supports[k]});
   for (const auto& [run, supports] : runs)
-    for (const coupling::RailRecovery& rail : run->rails) {
-      report::PlotSeries series;
-      series.name = rail.spec.name + ", " + coupling::supports_name(supports);
-      for (std::size_t i = 0; i < rail.station_points.size(); ++i) {
-        series.x.push_back(u.from_si(rail.station_points[i].x(), Quantity::length));
-        series.y.push_back(u.from_si(rail.envelope_bending_moment(static_cast<Eigen::Index>(i)), Quantity::moment));
-      }
-      plot.series.push_back(series);
-    }
+    for (const coupling::RailRecovery& rail : run->rails) plot.series.push_back(rail_envelope_series(rail, rail.spec.name + ", " + coupling::supports_name(supports), u));
   report::write_png(plot, folder.path_of("frame_supports_envelopes.png"));
 }
 
@@ -143,324 +138,316 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
   return written;
 }
 
-// model: rigid_2d: modes with their dominant coordinates and a forced response
-// with recovered forces: summary, rigid_modes.csv, response.csv, events.csv (and
-// frame_loads.csv, frame_resultants.csv with a frame_output block).
-StudyRun run_rigid_2d(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options,
-                      const std::function<void(const std::string&)>& stage) {
-  const std::string file_s = file.string();
-  StudyRun run;
-  run.model = "rigid_2d";
-  stage("reading " + file_s);
-  const coupling::RigidStudy study = coupling::read_rigid_study(doc, file_s);
-  const core::UnitSystem& u = study.units;
-  stage(study.response ? "modes and forced response" : "modes");
-  const coupling::RigidResults r = coupling::run_rigid_study(study);
+// ---- The vehicle studies (rigid_2d, rigid_3d): one set of writers --------------------------------
+// The summary parts, the files and the stages that are the same in 2-D and 3-D are written once, from
+// coupling::VehicleResults and the study's common fields (docs/theory/coupling.md section 15); each
+// model adds only its extras (2-D: the frame_output block's loads and resultants, the response
+// figures; 3-D: the road inputs, the frame loads at the load points and the frame pipeline).
 
-  stage("writing results");
-  const std::unique_ptr<core::ResultsFolder> folder_owner = results_folder(options, {file});
-  core::ResultsFolder& folder = *folder_owner;
+// The fields of a vehicle study the common writers read, the same in 2-D and 3-D.
+struct VehicleStudyFields {
+  const char* model;  // rigid_2d or rigid_3d
+  const std::string& name;
+  const core::UnitSystem& units;
+  const std::vector<std::string>& fixed_coordinates;
+  rigid::ModalSoil modes_state;  // the contact state rigid.modes is in
+  const std::optional<coupling::ResponseRequest>& response;
+  const std::optional<coupling::CalibrationRequest>& calibration;
+  std::function<Quantity(const std::string&)> parameter_quantity;  // of a calibrated parameter
+};
 
-  nlohmann::ordered_json j;
-  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
-  j["input"] = {{"study", file_s}, {"name", study.name}, {"units", u.name()}};
-  nlohmann::ordered_json rigid;
-  rigid["model"] = "rigid_2d";
-  rigid["dofs"] = r.coordinates.size();
-  rigid["coordinates"] = r.coordinates;
-  rigid["fixed_coordinates"] = study.fixed_coordinates;
-  rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
-  rigid["modes_state"] = coupling::contact_state_name(study.modal_soil);  // the contact state rigid.modes is in
-  rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
-  rigid["static"] = static_json(r.static_contacts, u);
-
-  if (r.calibration && study.calibration)
-    rigid["calibration"] = report::write_calibration(*study.calibration, *r.calibration, u,
-                                             [&](const std::string& name) { return coupling::parameter_quantity(study.machine, name); }, folder);
-
-  if (study.response) {
-    const rigid::Trajectory& tr = r.trajectory;
-    nlohmann::ordered_json resp;
-    resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
-    resp["events"] = tr.events.size();
-    resp["steps"] = tr.steps;
-    const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
-    if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
-    if (r.peak_cutting_force) resp["peak_cutting_force"] = {{"value", *r.peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.peak_backing_force) resp["peak_backing_force"] = {{"value", *r.peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.average_peak_cutting_force)
-      resp["average_peak_cutting_force"] = {{"value", *r.average_peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.average_peak_backing_force)
-      resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
-    rigid["response"] = resp;
-    rigid["contacts"] = contacts_json(r.contacts, u);
-    rigid["steady"] = steady_json(r.steady, u);
-
-    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(report::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
-    for (const coupling::Series& s : r.series)
-      h.push_back(s.quantity == Quantity::dimensionless ? s.name : report::column(s.name, u.label(s.quantity)));
-    const bool tables = !folder.in_memory();  // the time histories are formatted only to be written
-    if (tables) {
-    report::CsvTable csv(h);
-    for (std::size_t i = 0; i < tr.time.size(); ++i) {
-      csv.row().add(tr.time[i]);
-      for (std::size_t c = 0; c < r.coordinates.size(); ++c)
-        csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
-      for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
-    }
-    folder.write_text("response.csv", csv.str());
-    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
-    folder.write_text("events.csv", ev.str());
-    }
-
-    if (r.resultants) {
-      // Frame loads (forces on the frame) and the stress resultants of Eq. 2.47.
-      const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment), L = u.label(Quantity::length);
-      const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
-      std::vector<std::string> lh = {report::column("time", u.label(Quantity::time))};
-      for (const coupling::FrameLoad2D& l : r.frame_loads)
-        for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
-      report::CsvTable lcsv(lh);
-      for (std::size_t i = 0; tables && i < tr.time.size(); ++i) {
-        lcsv.row().add(tr.time[i]);
-        for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
-      }
-      if (tables) folder.write_text("frame_loads.csv", lcsv.str());
-      const coupling::StressResultants& sr = *r.resultants;
-      const bool stress = !r.rail_top_stress.empty();
-      std::vector<std::string> rh = {report::column("time", u.label(Quantity::time)), report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
-      if (stress) rh.push_back(report::column("rail_top_stress", u.label(Quantity::stress)));
-      report::CsvTable rcsv(rh);
-      nlohmann::ordered_json points = nlohmann::ordered_json::array();
-      for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
-        double px = 0, pz = 0, pm = 0, ps = 0, ps_time = 0;
-        for (std::size_t i = 0; i < tr.time.size(); ++i) {
-          px = std::max(px, std::abs(sr.srx[i][k]));
-          pz = std::max(pz, std::abs(sr.srz[i][k]));
-          pm = std::max(pm, std::abs(sr.srmy[i][k]));
-          if (stress && std::abs(r.rail_top_stress[i][k]) > ps) {
-            ps = std::abs(r.rail_top_stress[i][k]);
-            ps_time = tr.time[i];
-          }
-        }
-        // Each number with its unit ({value, unit}), as in the rest of the summary.
-        const std::string S = u.label(Quantity::stress);
-        nlohmann::ordered_json jp = {{"x", {{"value", sr.output_x[k] * lf}, {"unit", L}}},
-                                     {"peak_srx", {{"value", px * ff}, {"unit", F}}},
-                                     {"peak_srz", {{"value", pz * ff}, {"unit", F}}},
-                                     {"peak_srmy", {{"value", pm * mf}, {"unit", M}}}};
-        if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"unit", S}, {"time", report::quantity(ps_time, u.label(Quantity::time))}};
-        points.push_back(jp);
-      }
-      for (std::size_t i = 0; tables && i < tr.time.size(); ++i)
-        for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
-          rcsv.row().add(tr.time[i]).add(sr.output_x[k] * lf).add(sr.srx[i][k] * ff).add(sr.srz[i][k] * ff).add(sr.srmy[i][k] * mf);
-          if (stress) rcsv.add(r.rail_top_stress[i][k] * sf);
-        }
-      if (tables) folder.write_text("frame_resultants.csv", rcsv.str());
-      rigid["frame"] = {{"units", {{"x", L}, {"force", F}, {"moment", M}, {"stress", u.label(Quantity::stress)}}},
-                        {"loads", [&] {
-                           std::vector<std::string> names;
-                           for (const auto& l : r.frame_loads) names.push_back(l.name);
-                           return names;
-                         }()},
-                        {"output_points", points}};
-    }
-  }
-  j["rigid"] = rigid;
-  add_warnings(j, r.warnings, options.warning);
-  if (options.figures) {
-    stage("figures");
-    run.figures = report::write_response_figures(study, r, folder);
-  }
-  run.summary = std::move(j);
-  if (!folder.in_memory()) folder.write_text("summary.json", run.summary.dump(2) + "\n");
-  folder.commit();
-  auto details = std::make_shared<StudyRunDetails>();
-  details->study_2d = study;
-  details->results_2d = r;
-  run.details = std::move(details);
-  return run;
+VehicleStudyFields vehicle_fields(const coupling::RigidStudy& s) {
+  return {"rigid_2d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration,
+          [&s](const std::string& name) { return coupling::parameter_quantity(s.machine, name); }};
+}
+VehicleStudyFields vehicle_fields(const coupling::RigidStudy3D& s) {
+  return {"rigid_3d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration, coupling::parameter_quantity_3d};
 }
 
-// model: rigid_3d (thesis CMW3D, Chapter III): modes with dominant coordinates,
-// a forced response, and the frame loads as a load-history file (frame_loads.csv):
-// the eight load points 24-31 and the attachment's loads at point 19, every load on
-// the frame. With frame_response, the pipeline: those loads into the beam model of
-// the frame. With figures, the Chapter V load-point figures (Figures 22-24), Figure 25
-// and the frame's figures.
-StudyRun run_rigid_3d(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options,
-                      const std::function<void(const std::string&)>& stage) {
-  const std::string file_s = file.string();
-  StudyRun run;
-  run.model = "rigid_3d";
-  stage("reading " + file_s);
-  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(doc, file_s);
-  const core::UnitSystem& u = study.units;
-  stage(study.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)");
-  const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
-  stage("writing results");
-  const std::unique_ptr<core::ResultsFolder> folder_owner = results_folder(options, {file});
-  core::ResultsFolder& folder = *folder_owner;
-  const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
+// The stage message of the run.
+std::string running_stage(const coupling::RigidStudy& s) { return s.response ? "modes and forced response" : "modes"; }
+std::string running_stage(const coupling::RigidStudy3D& s) {
+  return s.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)";
+}
 
-  nlohmann::ordered_json j;
-  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
-  j["input"] = {{"study", file_s}, {"name", study.name}, {"units", u.name()}};
-  nlohmann::ordered_json rigid;
-  rigid["model"] = "rigid_3d";
-  rigid["dofs"] = r.coordinates.size();
-  rigid["coordinates"] = r.coordinates;
-  rigid["fixed_coordinates"] = study.fixed_coordinates;
-  // The road inputs' delays behind the front axle (docs/theory/fatigue.md section 11).
+// The model's keys after rigid.fixed_coordinates: 3-D, the road inputs' delays behind the front axle
+// (docs/theory/fatigue.md section 11); 2-D, none.
+void add_model_keys(nlohmann::ordered_json&, const coupling::RigidStudy&) {}
+void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy3D& study) {
+  const core::UnitSystem& u = study.units;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length);
   nlohmann::ordered_json road = nlohmann::ordered_json::array();
   for (const coupling::RoadDelay& d : coupling::road_delays(study.machine))
     road.push_back({{"tire", d.tire}, {"behind", report::quantity(d.behind * lf, u.label(Quantity::length))},
                     {"delay", report::quantity(d.delay, "s")}, {"source", d.given ? "behind (given)" : "derived from the tire positions"}});
   if (!road.empty()) rigid["road_inputs"] = road;
+}
+
+// The summary's rigid block up to the response: model, dofs, coordinates, fixed coordinates, the
+// model's keys, modes (rigid_modes.csv), modes by contact state, the static contacts, the calibration.
+template <class Study>
+nlohmann::ordered_json rigid_block(const Study& study, const VehicleStudyFields& s, const coupling::VehicleResults& r,
+                                   const core::ResultsFolder& folder) {
+  nlohmann::ordered_json rigid;
+  rigid["model"] = s.model;
+  rigid["dofs"] = r.coordinates.size();
+  rigid["coordinates"] = r.coordinates;
+  rigid["fixed_coordinates"] = s.fixed_coordinates;
+  add_model_keys(rigid, study);
   rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
-  rigid["modes_state"] = coupling::contact_state_name(rigid::ModalSoil::cutting);  // the contact state rigid.modes is in
+  rigid["modes_state"] = coupling::contact_state_name(s.modes_state);
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
-  rigid["static"] = static_json(r.static_contacts, u);
+  rigid["static"] = static_json(r.static_contacts, s.units);
+  if (r.calibration && s.calibration)
+    rigid["calibration"] = report::write_calibration(*s.calibration, *r.calibration, s.units, s.parameter_quantity, folder);
+  return rigid;
+}
 
-  if (r.calibration && study.calibration)
-    rigid["calibration"] = report::write_calibration(*study.calibration, *r.calibration, u, coupling::parameter_quantity_3d, folder);
+// With a response: rigid.response (method, steps, the blade's peaks), rigid.contacts, rigid.steady, and
+// (to a folder) response.csv (time, coordinates, recovered series) and events.csv.
+void add_response(const VehicleStudyFields& s, const coupling::VehicleResults& r, const core::ResultsFolder& folder, nlohmann::ordered_json& rigid) {
+  const core::UnitSystem& u = s.units;
+  const rigid::Trajectory& tr = r.trajectory;
+  nlohmann::ordered_json resp;
+  resp["method"] = s.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
+  resp["duration"] = {{"value", s.response->duration}, {"unit", u.label(Quantity::time)}};
+  resp["events"] = tr.events.size();
+  resp["steps"] = tr.steps;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
+  const auto force = [&](const char* key, const std::optional<double>& v) {
+    if (v) resp[key] = {{"value", *v * ff}, {"unit", u.label(Quantity::force)}};
+  };
+  if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
+  force("peak_cutting_force", r.peak_cutting_force);
+  force("peak_backing_force", r.peak_backing_force);
+  force("average_peak_cutting_force", r.average_peak_cutting_force);
+  force("average_peak_backing_force", r.average_peak_backing_force);
+  rigid["response"] = resp;
+  rigid["contacts"] = contacts_json(r.contacts, u);
+  rigid["steady"] = steady_json(r.steady, u);
+  if (folder.in_memory()) return;  // the time histories are formatted only to be written
 
-  if (study.response) {
-    const rigid::Trajectory& tr = r.trajectory;
-    nlohmann::ordered_json resp;
-    resp["method"] = study.response->method == coupling::ResponseRequest::Method::event_located ? "event_located (CVODE)" : "rk4";
-    resp["duration"] = {{"value", study.response->duration}, {"unit", u.label(Quantity::time)}};
-    resp["events"] = tr.events.size();
-    resp["steps"] = tr.steps;
-    if (r.plow_vertical_peak_to_peak) resp["plow_vertical_pp"] = {{"value", *r.plow_vertical_peak_to_peak * lf}, {"unit", u.label(Quantity::length)}};
-    if (r.peak_cutting_force) resp["peak_cutting_force"] = {{"value", *r.peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.peak_backing_force) resp["peak_backing_force"] = {{"value", *r.peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.average_peak_cutting_force)
-      resp["average_peak_cutting_force"] = {{"value", *r.average_peak_cutting_force * ff}, {"unit", u.label(Quantity::force)}};
-    if (r.average_peak_backing_force)
-      resp["average_peak_backing_force"] = {{"value", *r.average_peak_backing_force * ff}, {"unit", u.label(Quantity::force)}};
-    rigid["response"] = resp;
-    rigid["contacts"] = contacts_json(r.contacts, u);
-    rigid["steady"] = steady_json(r.steady, u);
+  std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
+  for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(report::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
+  // A dimensionless series (the plow force's angle, in degrees) is named without a unit.
+  for (const coupling::Series& series : r.series)
+    h.push_back(series.quantity == Quantity::dimensionless ? series.name : report::column(series.name, u.label(series.quantity)));
+  report::CsvTable csv(h);
+  for (std::size_t i = 0; i < tr.time.size(); ++i) {
+    csv.row().add(tr.time[i]);
+    for (std::size_t c = 0; c < r.coordinates.size(); ++c) csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
+    for (const coupling::Series& series : r.series) csv.add(u.from_si(series.values[i], series.quantity));
+  }
+  folder.write_text("response.csv", csv.str());
+  report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
+  for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
+  folder.write_text("events.csv", ev.str());
+}
 
-    std::vector<std::string> h = {report::column("time", u.label(Quantity::time))};
-    for (std::size_t c = 0; c < r.coordinates.size(); ++c) h.push_back(report::column(r.coordinates[c], u.label(r.coordinate_quantities[c])));
-    for (const coupling::Series& s : r.series) h.push_back(report::column(s.name, u.label(s.quantity)));
-    const bool tables = !folder.in_memory();  // the time histories are formatted only to be written
-    if (tables) {
-    report::CsvTable csv(h);
+// The 2-D response's extras: with frame_output, the frame loads (frame_loads.csv) and the stress
+// resultants of Eq. 2.47 with the rail's top-fiber stress (frame_resultants.csv, rigid.frame).
+void add_response_extras(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions&, const core::ResultsFolder& folder,
+                         nlohmann::ordered_json& rigid, StudyRun&) {
+  if (!r.resultants) return;
+  const core::UnitSystem& u = study.units;
+  const rigid::Trajectory& tr = r.trajectory;
+  const bool tables = !folder.in_memory();
+  const std::string F = u.label(Quantity::force), M = u.label(Quantity::moment), L = u.label(Quantity::length);
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
+  const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
+  std::vector<std::string> lh = {report::column("time", u.label(Quantity::time))};
+  for (const coupling::FrameLoad2D& l : r.frame_loads)
+    for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
+  report::CsvTable lcsv(lh);
+  for (std::size_t i = 0; tables && i < tr.time.size(); ++i) {
+    lcsv.row().add(tr.time[i]);
+    for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
+  }
+  if (tables) folder.write_text("frame_loads.csv", lcsv.str());
+  const coupling::StressResultants& sr = *r.resultants;
+  const bool stress = !r.rail_top_stress.empty();
+  std::vector<std::string> rh = {report::column("time", u.label(Quantity::time)), report::column("X", L), report::column("SRX", F), report::column("SRZ", F), report::column("SRMY", M)};
+  if (stress) rh.push_back(report::column("rail_top_stress", u.label(Quantity::stress)));
+  report::CsvTable rcsv(rh);
+  nlohmann::ordered_json points = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
+    double px = 0, pz = 0, pm = 0, ps = 0, ps_time = 0;
     for (std::size_t i = 0; i < tr.time.size(); ++i) {
-      csv.row().add(tr.time[i]);
-      for (std::size_t c = 0; c < r.coordinates.size(); ++c) csv.add(u.from_si(tr.q[i](static_cast<Eigen::Index>(c)), r.coordinate_quantities[c]));
-      for (const coupling::Series& s : r.series) csv.add(u.from_si(s.values[i], s.quantity));
+      px = std::max(px, std::abs(sr.srx[i][k]));
+      pz = std::max(pz, std::abs(sr.srz[i][k]));
+      pm = std::max(pm, std::abs(sr.srmy[i][k]));
+      if (stress && std::abs(r.rail_top_stress[i][k]) > ps) {
+        ps = std::abs(r.rail_top_stress[i][k]);
+        ps_time = tr.time[i];
+      }
     }
-    folder.write_text("response.csv", csv.str());
-    report::CsvTable ev({report::column("time", u.label(Quantity::time)), "event"});
-    for (const auto& e : tr.events) ev.row().add(e.time).add(report::event_text(e, u));
-    folder.write_text("events.csv", ev.str());
+    // Each number with its unit ({value, unit}), as in the rest of the summary.
+    const std::string S = u.label(Quantity::stress);
+    nlohmann::ordered_json jp = {{"x", {{"value", sr.output_x[k] * lf}, {"unit", L}}},
+                                 {"peak_srx", {{"value", px * ff}, {"unit", F}}},
+                                 {"peak_srz", {{"value", pz * ff}, {"unit", F}}},
+                                 {"peak_srmy", {{"value", pm * mf}, {"unit", M}}}};
+    if (stress) jp["peak_rail_top_stress"] = {{"value", ps * sf}, {"unit", S}, {"time", report::quantity(ps_time, u.label(Quantity::time))}};
+    points.push_back(jp);
+  }
+  for (std::size_t i = 0; tables && i < tr.time.size(); ++i)
+    for (std::size_t k = 0; k < sr.output_x.size(); ++k) {
+      rcsv.row().add(tr.time[i]).add(sr.output_x[k] * lf).add(sr.srx[i][k] * ff).add(sr.srz[i][k] * ff).add(sr.srmy[i][k] * mf);
+      if (stress) rcsv.add(r.rail_top_stress[i][k] * sf);
     }
+  if (tables) folder.write_text("frame_resultants.csv", rcsv.str());
+  rigid["frame"] = {{"units", {{"x", L}, {"force", F}, {"moment", M}, {"stress", u.label(Quantity::stress)}}},
+                    {"loads", [&] {
+                       std::vector<std::string> names;
+                       for (const auto& l : r.frame_loads) names.push_back(l.name);
+                       return names;
+                     }()},
+                    {"output_points", points}};
+}
 
-    if (r.frame_loads) {
-      if (tables) folder.write_text("frame_loads.csv", coupling::format_load_history(coupling::all_frame_loads(*r.frame_loads), u));
-      if (options.figures) {
-        const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads->points, study.machine.attachment, study.name, u, folder);
-        run.figures.insert(run.figures.end(), drawn.begin(), drawn.end());
-      }
-      nlohmann::ordered_json loads;
-      for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads).points) {
-        nlohmann::ordered_json jp;
-        jp["location"] = {{"value", {p.location.x() * lf, p.location.y() * lf, p.location.z() * lf}}, {"unit", u.label(Quantity::length)}};
-        for (int c = 0; c < 6; ++c) {
-          double peak = 0.0;  // the value of largest magnitude, with its sign
-          for (Eigen::Index i = 0; i < p.values.rows(); ++i)
-            if (std::abs(p.values(i, c)) > std::abs(peak)) peak = p.values(i, c);
-          jp[coupling::kLoadComponents[c]] = {{"peak", report::quantity(peak * (c < 3 ? ff : mf), u.label(c < 3 ? Quantity::force : Quantity::moment))}};
-        }
-        loads[p.name] = jp;
-      }
-      rigid["frame_loads"] = loads;
+// The 3-D response's extras: the frame loads at the load points 24-31 and the attachment's at point 19
+// (frame_loads.csv, rigid.frame_loads' peaks) and, with figures, the load-point figures (Figures 22-24).
+void add_response_extras(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options,
+                         const core::ResultsFolder& folder, nlohmann::ordered_json& rigid, StudyRun& run) {
+  if (!r.frame_loads) return;
+  const core::UnitSystem& u = study.units;
+  const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
+  if (!folder.in_memory()) folder.write_text("frame_loads.csv", coupling::format_load_history(coupling::all_frame_loads(*r.frame_loads), u));
+  if (options.figures) {
+    const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads->points, study.machine.attachment, study.name, u, folder);
+    run.figures.insert(run.figures.end(), drawn.begin(), drawn.end());
+  }
+  nlohmann::ordered_json loads;
+  for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads).points) {
+    nlohmann::ordered_json jp;
+    jp["location"] = {{"value", {p.location.x() * lf, p.location.y() * lf, p.location.z() * lf}}, {"unit", u.label(Quantity::length)}};
+    for (int c = 0; c < 6; ++c) {
+      double peak = 0.0;  // the value of largest magnitude, with its sign
+      for (Eigen::Index i = 0; i < p.values.rows(); ++i)
+        if (std::abs(p.values(i, c)) > std::abs(peak)) peak = p.values(i, c);
+      jp[coupling::kLoadComponents[c]] = {{"peak", report::quantity(peak * (c < 3 ? ff : mf), u.label(c < 3 ? Quantity::force : Quantity::moment))}};
     }
+    loads[p.name] = jp;
+  }
+  rigid["frame_loads"] = loads;
+}
+
+// After the rigid block and its warnings, 2-D: the response figures.
+void finish_model(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions& options, const Stage& stage,
+                  core::ResultsFolder& folder, nlohmann::ordered_json&, StudyRun& run, StudyRunDetails& details) {
+  if (options.figures) {
+    stage("figures");
+    run.figures = report::write_response_figures(study, r, folder);
+  }
+  details.study_2d = study;
+  details.results_2d = r;
+}
+
+// After the rigid block and its warnings, 3-D: the pipeline, this run's frame loads into the beam model
+// of the frame (summary frame and fatigue blocks, the frame's files and figures).
+void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options, const Stage& stage,
+                  core::ResultsFolder& folder, nlohmann::ordered_json& j, StudyRun& run, StudyRunDetails& details) {
+  details.study_3d = study;
+  details.results_3d = r;
+  if (!study.frame_response) return;
+  const core::UnitSystem& u = study.units;
+  // Every load on the frame (points 24-31 and the attachment's at point 19).
+  const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+  stage("frame transient (pipeline)");
+  const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
+  details.frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at);
+  const coupling::FrameStudyResults& frame = *details.frame;
+  stage("writing results (frame)");
+  if (!folder.in_memory()) report::write_frame_outputs(frame, *study.frame_response, folder, options.step);
+  j["frame"] = report::frame_summary(frame, *study.frame_response);
+  j["frame"]["steady"] = frame_steady_json(frame, r.steady.operation.reached_at, u);
+  if (frame.life) j["fatigue"] = report::fatigue_summary(frame, *study.frame_response);
+  add_warnings(j, coupling::frame_warnings(frame, *study.frame_response), options.warning);
+  // The same loads on the supports compared (frame_response.compare_supports), each run on its own (one
+  // assembly and factorisation per support): their peaks in the summary, their envelopes in one figure.
+  std::vector<coupling::FrameStudyResults> compared;
+  for (const coupling::FrameSupports s : study.frame_response->compare_supports) {
+    stage(fmt::format("frame transient (pipeline, supports: {})", coupling::supports_name(s)));
+    coupling::FrameStudyRequest cq = *study.frame_response;
+    cq.supports = s;
+    cq.compare_supports.clear();
+    cq.paraview = coupling::ParaviewOutput::none;
+    cq.fatigue.reset();  // the life map is the run's own support's
+    cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
+    compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
+    const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
+    nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};
+    for (const char* key : {"peak_bending_moment", "peak_von_mises", "static"})
+      if (full.contains(key)) c[key] = full[key];
+    j["frame"]["compared_supports"].push_back(c);
+  }
+  // The shaker near an elastic mode of the frame model (Eq. 8.3's band, on the beam model's modes).
+  if (study.machine.attachment == rigid::Attachment::plow) {
+    const std::vector<double> frame_hz(frame.frequencies_hz.data(), frame.frequencies_hz.data() + frame.frequencies_hz.size());
+    add_warnings(j, coupling::frame_resonance_warnings(study.machine.plow.shaker_frequency, frame_hz, study.frame_response->mesh.filename().string()),
+                 options.warning);
+  }
+  if (!options.figures) return;
+  write_rail_moment_figure(frame, u, folder);
+  run.figures.push_back("fig25_rail_bending_moment.png");
+  if (!compared.empty()) {
+    write_support_comparison_figure(frame, *study.frame_response, compared, u, folder);
+    run.figures.push_back("frame_supports_envelopes.png");
+  }
+  if (!frame.hot_spots.by_von_mises.empty()) {
+    report::write_png(report::hot_spot_stress_figure(frame, u), folder.path_of("frame_hot_spots.png"));
+    run.figures.push_back("frame_hot_spots.png");
+  }
+  if (frame.life) {
+    const report::LinePlot life = report::life_along_rails_figure(frame, u);
+    if (!life.series.empty()) {  // no station with damage: nothing to draw on a log axis
+      report::write_png(life, folder.path_of("frame_life.png"));
+      run.figures.push_back("frame_life.png");
+    }
+  }
+  if (frame.mode_shapes.cols() > 0) {
+    const std::vector<double> hz(frame.frequencies_hz.data(), frame.frequencies_hz.data() + std::min<Eigen::Index>(frame.frequencies_hz.size(), frame.mode_shapes.cols()));
+    report::write_png(report::mode_shape_figure(frame.model, frame.mode_shapes, hz,
+                                                fmt::format("Frame model's lowest elastic modes ({}, supports: {})", study.frame_response->mesh.filename().string(),
+                                                            coupling::supports_name(study.frame_response->supports))),
+                      folder.path_of("frame_mode_shapes.png"));
+    run.figures.push_back("frame_mode_shapes.png");
+  }
+}
+
+// model: rigid_2d or rigid_3d, one runner for both: read, run (modes with their dominant coordinates, a
+// forced response with recovered forces), then the summary, rigid_modes.csv, response.csv and
+// events.csv written once for both models, and each model's extras (above).
+template <class Study, class Results>
+StudyRun run_vehicle(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options, const Stage& stage,
+                     Study (*read)(const YAML::Node&, const std::string&), Results (*run_model)(const Study&)) {
+  const std::string file_s = file.string();
+  stage("reading " + file_s);
+  const Study study = read(doc, file_s);
+  const VehicleStudyFields s = vehicle_fields(study);
+  StudyRun run;
+  run.model = s.model;
+  stage(running_stage(study));
+  const Results r = run_model(study);
+  stage("writing results");
+  const std::unique_ptr<core::ResultsFolder> folder_owner = results_folder(options, {file});
+  core::ResultsFolder& folder = *folder_owner;
+
+  nlohmann::ordered_json j;
+  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
+  j["input"] = {{"study", file_s}, {"name", s.name}, {"units", s.units.name()}};
+  nlohmann::ordered_json rigid = rigid_block(study, s, r, folder);
+  if (s.response) {
+    add_response(s, r, folder, rigid);
+    add_response_extras(study, r, options, folder, rigid, run);
   }
   j["rigid"] = rigid;
   add_warnings(j, r.warnings, options.warning);
-
-  // The pipeline: this run's frame loads into the beam model of the frame.
-  std::optional<coupling::FrameStudyResults> frame;
-  if (study.frame_response) {
-    // Every load on the frame (points 24-31 and the attachment's at point 19).
-    const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
-    stage("frame transient (pipeline)");
-    const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
-    frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at);
-    stage("writing results (frame)");
-    if (!folder.in_memory()) report::write_frame_outputs(*frame, *study.frame_response, folder, options.step);
-    j["frame"] = report::frame_summary(*frame, *study.frame_response);
-    j["frame"]["steady"] = frame_steady_json(*frame, r.steady.operation.reached_at, u);
-    if (frame->life) j["fatigue"] = report::fatigue_summary(*frame, *study.frame_response);
-    add_warnings(j, coupling::frame_warnings(*frame, *study.frame_response), options.warning);
-    // The same loads on the supports compared (frame_response.compare_supports), each run on its own (one
-    // assembly and factorisation per support): their peaks in the summary, their envelopes in one figure.
-    std::vector<coupling::FrameStudyResults> compared;
-    for (const coupling::FrameSupports s : study.frame_response->compare_supports) {
-      stage(fmt::format("frame transient (pipeline, supports: {})", coupling::supports_name(s)));
-      coupling::FrameStudyRequest cq = *study.frame_response;
-      cq.supports = s;
-      cq.compare_supports.clear();
-      cq.paraview = coupling::ParaviewOutput::none;
-      cq.fatigue.reset();  // the life map is the run's own support's
-      cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
-      compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
-      const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
-      nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};
-      for (const char* key : {"peak_bending_moment", "peak_von_mises", "static"})
-        if (full.contains(key)) c[key] = full[key];
-      j["frame"]["compared_supports"].push_back(c);
-    }
-    // The shaker near an elastic mode of the frame model (Eq. 8.3's band, on the beam model's modes).
-    if (study.machine.attachment == rigid::Attachment::plow) {
-      const std::vector<double> frame_hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + frame->frequencies_hz.size());
-      add_warnings(j, coupling::frame_resonance_warnings(study.machine.plow.shaker_frequency, frame_hz,
-                                                         study.frame_response->mesh.filename().string()), options.warning);
-    }
-    if (options.figures) {
-      write_rail_moment_figure(*frame, u, folder);
-      run.figures.push_back("fig25_rail_bending_moment.png");
-      if (!compared.empty()) {
-        write_support_comparison_figure(*frame, *study.frame_response, compared, u, folder);
-        run.figures.push_back("frame_supports_envelopes.png");
-      }
-      if (!frame->hot_spots.by_von_mises.empty()) {
-        report::write_png(report::hot_spot_stress_figure(*frame, u), folder.path_of("frame_hot_spots.png"));
-        run.figures.push_back("frame_hot_spots.png");
-      }
-      if (frame->life) {
-        const report::LinePlot life = report::life_along_rails_figure(*frame, u);
-        if (!life.series.empty()) {  // no station with damage: nothing to draw on a log axis
-          report::write_png(life, folder.path_of("frame_life.png"));
-          run.figures.push_back("frame_life.png");
-        }
-      }
-      if (frame->mode_shapes.cols() > 0) {
-        const std::vector<double> hz(frame->frequencies_hz.data(), frame->frequencies_hz.data() + std::min<Eigen::Index>(frame->frequencies_hz.size(), frame->mode_shapes.cols()));
-        report::write_png(report::mode_shape_figure(frame->model, frame->mode_shapes, hz,
-                                                    fmt::format("Frame model's lowest elastic modes ({}, supports: {})", study.frame_response->mesh.filename().string(),
-                                                                coupling::supports_name(study.frame_response->supports))),
-                          folder.path_of("frame_mode_shapes.png"));
-        run.figures.push_back("frame_mode_shapes.png");
-      }
-    }
-  }
+  auto details = std::make_shared<StudyRunDetails>();
+  finish_model(study, r, options, stage, folder, j, run, *details);
   run.summary = std::move(j);
   if (!folder.in_memory()) folder.write_text("summary.json", run.summary.dump(2) + "\n");
   folder.commit();
-  auto details = std::make_shared<StudyRunDetails>();
-  details->study_3d = study;
-  details->results_3d = r;
-  details->frame = std::move(frame);
   run.details = std::move(details);
   return run;
 }
@@ -499,9 +486,10 @@ StudyRun run_study_document(const YAML::Node& doc, const std::filesystem::path& 
   if (options.out) core::check_results_target(*options.out, {file});  // before the run: a refusal costs no time
   const std::function<void(const std::string&)> stage = options.stage ? options.stage : [](const std::string&) {};
   const std::string model = coupling::study_model(doc, file.string());
-  if (model == "rigid_3d") return run_rigid_3d(doc, file, options, stage);  // issue 4
+  if (model == "rigid_3d") return run_vehicle(doc, file, options, stage, &coupling::read_rigid_study_3d, &coupling::run_rigid_study_3d);  // issue 4
   if (model == "duty_cycle") return run_duty_cycle(doc, file, options, stage);  // issue 18
-  return run_rigid_2d(doc, file, options, stage);  // read_rigid_study refuses any other model
+  // read_rigid_study refuses any other model
+  return run_vehicle(doc, file, options, stage, &coupling::read_rigid_study, &coupling::run_rigid_study);
 }
 
 StudyRun run_study_file(const std::filesystem::path& file, const StudyRunOptions& options) {

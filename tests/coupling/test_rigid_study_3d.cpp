@@ -8,7 +8,9 @@
 //      format and summary.json's rigid.frame_loads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <vector>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -127,6 +129,33 @@ TEST(StudyReader3D, CutFaceReadingIsTakenWithoutSpringsWhileBacking) {
   EXPECT_TRUE(study.machine.soil.cut_face);
   EXPECT_DOUBLE_EQ(study.machine.soil.stiffness_factor(true), 0.0);
   EXPECT_DOUBLE_EQ(study.machine.soil.damping_factor(true), 1.0);
+}
+
+// analysis.modal_soil, read by the one analysis reader of 2-D and 3-D: with `none` the 3-D modes
+// are those of the same machine whose soil springs (K5 along and vertical, K15 across) are
+// removed by hand, and they differ from the default `cutting` modes under Eq. 2.37 as printed.
+TEST(StudyReader3D, ModalSoilNoneGivesTheModesOfTheMachineWithItsSoilSpringsRemoved) {
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const auto modes_hz = [&](const std::string& modal_soil, bool remove_soil_springs) {
+    std::string text = edited("  spring_reference: cut_face", "  spring_reference: equilibrium");
+    const std::size_t at = text.find("\nanalysis:\n  modes: true\n");
+    if (at == std::string::npos) throw std::logic_error("no analysis block");
+    text = text.substr(0, at) + "\nanalysis:\n  modes: true\n  modal_soil: " + modal_soil + "\n";  // modes only, no response
+    coupling::RigidStudy3D study = coupling::read_rigid_study_3d(dir.write("study.yaml", text).string());
+    if (remove_soil_springs) study.machine.soil.stiffness = study.machine.soil_lateral.stiffness = 0.0;
+    std::vector<double> hz;
+    for (const auto& m : coupling::run_rigid_study_3d(study).modes) hz.push_back(m.frequency_hz);
+    return hz;
+  };
+  const std::vector<double> none = modes_hz("none", false), removed = modes_hz("cutting", true), cutting = modes_hz("cutting", false);
+  ASSERT_EQ(none.size(), 15u);
+  ASSERT_EQ(removed.size(), none.size());
+  double largest_change = 0.0;
+  for (std::size_t i = 0; i < none.size(); ++i) {
+    EXPECT_NEAR(none[i], removed[i], 1e-9 * removed[i]) << "mode " << i + 1;
+    largest_change = std::max(largest_change, std::abs(cutting[i] - none[i]) / none[i]);
+  }
+  EXPECT_GT(largest_change, 0.05);  // the soil springs matter in the cutting state
 }
 
 TEST(RunCommand3D, WritesFrameLoadsInTheLoadHistoryFormatAndPeaksInTheSummary) {

@@ -337,3 +337,34 @@ def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
             case(study)
         assert str(caught.value) == rows[error_id], error_id
         assert caught.value.file == "study.yaml" and caught.value.key
+
+
+# ------------------------------------------------------------------ 3-D tire forces (issue 20)
+
+PLOW_3D = os.path.join(SOURCE_DIR, "examples", "r100_plow_offset.yaml")
+TIRES_3D = ("front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire")
+
+
+def test_3d_tire_forces_are_series_equal_to_the_command_lines_response_csv(tmp_path):
+    text = open(PLOW_3D).read()
+    assert "response: {duration: 0.5," in text
+    path = tmp_path / "offset.yaml"
+    path.write_text(text.replace("response: {duration: 0.5,", "response: {duration: 0.1,"))
+    r = framedyn.load_study(str(path)).run()
+    run = run_cli("run", str(path), "-o", str(tmp_path / "cli"), "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    header, rows = read_csv(tmp_path / "cli" / "response.csv")
+    for tire in TIRES_3D:
+        for direction in ("vertical", "longitudinal", "lateral"):
+            name = "%s_%s_force" % (tire, direction)
+            assert len(r.recovered[name]) == len(r.time) and r.units[name] == "lbf"
+            close_to_printed(r.recovered[name], [row[header.index(name + " [lbf]")] for row in rows])
+    # An independent path to the same numbers: the contact summary (coupling/contact_report, the
+    # contact's transmitted force) gives each tire's least and largest vertical force, and the
+    # response starts from the static equilibrium, whose contact forces the summary states.
+    for tire in TIRES_3D:
+        vertical = r.recovered[tire + "_vertical_force"]
+        contact = r.summary["rigid"]["contacts"][tire]
+        assert min(vertical) == pytest.approx(contact["min_force"]["value"], rel=1e-12)
+        assert max(vertical) == pytest.approx(contact["max_force"]["value"], rel=1e-12)
+        assert vertical[0] == pytest.approx(r.summary["rigid"]["static"]["contact_forces"][tire]["value"], rel=1e-9)
