@@ -267,13 +267,13 @@ ParameterBound calibration_default_bounds(double nominal, core::Quantity q, doub
 
 namespace {
 
-// Radius-of-gyration limits about one axis of a body in a box with sides a and
-// b across that axis: at most the half-diagonal (all the mass at the corners);
-// a body declared distributed at least the uniform solid's sqrt((a^2+b^2)/12).
-ParameterBound inertia_bounds_from_dimensions(double mass, double a, double b, bool distributed, double nominal_k) {
-  const double k_max = 0.5 * std::hypot(a, b);
-  const double k_min = distributed ? std::hypot(a, b) / std::sqrt(12.0) : std::min(nominal_k / 1.5, k_max);
-  return {mass * k_min * k_min, mass * k_max * k_max,
+// Radius-of-gyration bounds about one axis from the range its declared box
+// allows (rigid/calibration_limits.h): at most the half-diagonal (all the mass
+// at the corners); a body declared distributed at least the uniform solid's
+// sqrt((a^2+b^2)/12), else at least 1/1.5 of the nominal k.
+ParameterBound inertia_bounds_from_dimensions(double mass, const rigid::GyrationRange& g, bool distributed, double nominal_k) {
+  const double k_min = distributed ? g.smallest : std::min(nominal_k / 1.5, g.largest);
+  return {mass * k_min * k_min, mass * g.largest * g.largest,
           distributed ? "dimensions: between the uniform solid of the declared box and all mass at its corners"
                       : "dimensions: at most all mass at the declared box's corners; at least 1/1.5 of the nominal radius of gyration"};
 }
@@ -404,9 +404,10 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
       } catch (const std::invalid_argument&) {
         throw b.error("dimensions", "an inertia whose body has a mass parameter '" + mass_name + "'", "'" + name + "'");
       }
-      const double a = axis == 'x' ? d[1] : d[0], c = axis == 'z' ? d[1] : d[2];
       const bool distributed = b.boolean_or("distributed", false);
-      bound = inertia_bounds_from_dimensions(mass, a, c, distributed, std::sqrt(nominal[i] / mass));
+      const rigid::BodyBox box{{d[0], d[1], d[2]}, distributed};
+      bound = inertia_bounds_from_dimensions(mass, rigid::gyration_range(box, axis == 'x' ? 0 : axis == 'y' ? 1 : 2), distributed,
+                                             std::sqrt(nominal[i] / mass));
       bound.body_mass = mass;
       bound.physical_upper = bound.upper;  // Eq. 14.3: no distribution inside the box reaches further
       if (distributed) bound.physical_lower = bound.lower;  // Eq. 14.4
@@ -490,6 +491,90 @@ std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, con
                       {{"fitted", units.from_si(v, Quantity::rotary_inertia), I},
                        {"radius_of_gyration", units.from_si(k, Quantity::length), L},
                        {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration", units.from_si(limit, Quantity::length), L}});
+  }
+  return out;
+}
+
+void read_body_size(const YamlMap& m, const std::string& body, const std::string& prefix, std::vector<int> axes,
+                    std::vector<DeclaredBodySize>& sizes) {
+  const auto dims = m.optional_map("dimensions");
+  if (!dims) {
+    if (m.has("distributed")) throw m.error("distributed", "distributed only with dimensions", "no dimensions");
+    return;
+  }
+  dims->allow_only({"length", "width", "height"});
+  DeclaredBodySize b;
+  b.body = body;
+  b.parameter_prefix = prefix;
+  b.where = m.location("dimensions");
+  static const char* const kSides[] = {"length", "width", "height"};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (dims->has(kSides[i])) b.box.side[i] = dims->positive(kSides[i], Quantity::length);
+  if (!b.box.side[0] && !b.box.side[1] && !b.box.side[2])
+    throw m.error("dimensions", "at least one of length, width, height (the body's box along X, Y, Z)", "none");
+  b.box.distributed = m.boolean_or("distributed", false);
+  b.axes = std::move(axes);
+  sizes.push_back(std::move(b));
+}
+
+namespace {
+const char* axis_name(int axis) { return axis == 0 ? "X" : axis == 1 ? "Y" : "Z"; }
+}  // namespace
+
+void check_stated_inertia(const DeclaredBodySize& b, const BodyInertia& m, const core::UnitSystem& units) {
+  if (!(m.mass > 0)) return;
+  const std::string L = units.label(Quantity::length);
+  for (int axis : b.axes) {
+    const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+    const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+    if (rigid::judge_gyration(k, g) != rigid::GyrationVerdict::beyond_corners) continue;
+    throw core::InputError(
+        b.where,
+        fmt::format("a radius of gyration about {} of at most {:.4g} {} for {} (half the diagonal of its box across {}: all the mass at the "
+                    "corners; docs/theory/rigid.md, section 15)",
+                    axis_name(axis), units.from_si(g.largest, Quantity::length), L, b.body, axis_name(axis)),
+        fmt::format("{:.4g} {} (an inertia of {:.4g} {} on a mass of {:.4g} {})", units.from_si(k, Quantity::length), L, units.from_si(m.inertia(axis), Quantity::rotary_inertia),
+                    units.label(Quantity::rotary_inertia), units.from_si(m.mass, Quantity::mass), units.label(Quantity::mass)));
+  }
+}
+
+std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize>& sizes,
+                                              const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of,
+                                              const std::optional<CalibrationRequest>& calibration, const core::UnitSystem& units) {
+  std::vector<core::Warning> out;
+  const std::string L = units.label(Quantity::length), I = units.label(Quantity::rotary_inertia);
+  for (const DeclaredBodySize& b : sizes) {
+    bool fitted = false;
+    if (calibration)
+      for (const std::string& name : calibration->parameters) fitted = fitted || name.rfind(b.parameter_prefix, 0) == 0;
+    const BodyInertia m = inertia_of(b);
+    if (!(m.mass > 0)) continue;
+    for (int axis : b.axes) {
+      const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+      const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+      const rigid::GyrationVerdict v = rigid::judge_gyration(k, g);
+      if (v == rigid::GyrationVerdict::inside) continue;
+      const bool high = v == rigid::GyrationVerdict::beyond_corners;
+      const double limit = high ? g.largest : g.smallest;
+      const std::vector<core::WarningFigure> figures{{fitted ? "fitted" : "inertia", units.from_si(m.inertia(axis), Quantity::rotary_inertia), I},
+                                                     {"radius_of_gyration", units.from_si(k, Quantity::length), L},
+                                                     {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration",
+                                                      units.from_si(limit, Quantity::length), L}};
+      const std::string what = fmt::format("{}'s radius of gyration about {} is {:.4g} {}, {} the {:.4g} {} {}", b.body, axis_name(axis),
+                                           units.from_si(k, Quantity::length), L, high ? "above" : "below", units.from_si(limit, Quantity::length), L,
+                                           high ? "of all its mass at its declared box's corners" : "of its declared box as a uniform solid");
+      if (!fitted && high) continue;  // a stated value there was refused when read (check_stated_inertia)
+      if (fitted)
+        core::add_warning(out, "calibration_outside_physical_range",
+                          fmt::format("calibration: after the fit {} (docs/theory/rigid.md, section 15): the fitted machine is not a physical one", what),
+                          figures);
+      else
+        core::add_warning(out, "inertia_below_uniform_body",
+                          fmt::format("{} (docs/theory/rigid.md, section 15): its mass lies nearer its c.g. than a body spread through its box "
+                                      "allows; check the inertia, the dimensions or `distributed`",
+                                      what),
+                          figures);
+    }
   }
   return out;
 }
