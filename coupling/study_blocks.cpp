@@ -474,6 +474,32 @@ rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std
 
 std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units) {
   std::vector<core::Warning> out;
+  if (r.iteration_limit_reached) {
+    // The target missed most (the first of those within 1e-9 of the largest
+    // miss, so that round-off cannot pick another) and the parameters the
+    // bounds hold: what keeps the model from its targets.
+    std::size_t worst = 0;
+    std::vector<double> miss;
+    for (std::size_t t = 0; t < c.targets.size() && t < r.achieved_hz.size(); ++t)
+      miss.push_back(std::abs(r.achieved_hz[t] - c.targets[t].frequency_hz) / c.targets[t].frequency_hz);
+    for (std::size_t t = 0; t < miss.size(); ++t)
+      if (miss[t] > miss[worst] + 1e-9) worst = t;
+    std::string held;
+    for (std::size_t i = 0; i < r.at_bound.size() && i < c.parameters.size(); ++i)
+      if (r.at_bound[i]) held += (held.empty() ? "" : ", ") + c.parameters[i];
+    const std::string missed =
+        miss.empty() ? std::string()
+                     : fmt::format("; its largest miss is the {:g} Hz target{} on a {:.4g} Hz mode{}", c.targets[worst].frequency_hz,
+                                   c.targets[worst].dominant.empty() ? "" : " (" + c.targets[worst].dominant + ")", r.achieved_hz[worst],
+                                   r.achieved_dominant[worst].empty() ? "" : " (" + r.achieved_dominant[worst] + "-led)");
+    core::add_warning(out, "calibration_not_converged",
+                      fmt::format("calibration: the fit stopped at its iteration limit ({} iterations) with the residual still falling, its largest "
+                                  "frequency error {:.3g} %{}{}: the fitted values are not a converged fit, and the model does not reach its targets "
+                                  "within its bounds (docs/theory/rigid.md, section 9)",
+                                  r.iterations, 100 * r.max_relative_error, missed,
+                                  held.empty() ? std::string() : "; held at a bound: " + held),
+                      {{"residual_max", r.max_relative_error, "1"}, {"iterations", static_cast<double>(r.iterations), "1"}});
+  }
   constexpr double kSlack = 1e-6;  // relative: a value on the limit is inside it
   for (std::size_t i = 0; i < c.bounds.size() && i < r.fitted.size(); ++i) {
     const ParameterBound& b = c.bounds[i];
