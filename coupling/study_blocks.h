@@ -125,7 +125,10 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
 constexpr double kSymmetricShareLimit = 1e-6;
 rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std::vector<std::string>& coordinates);
 
-// A `calibration_outside_physical_range` warning for every fitted rotary
+// A `calibration_not_converged` warning for a fit stopped at its iteration
+// limit (its residual, the target missed most, the parameters held at a
+// bound; docs/theory/rigid.md, section 9), then a
+// `calibration_outside_physical_range` warning for every fitted rotary
 // inertia outside the range its body's declared box allows (bounds overridden
 // beyond it with a reason; docs/theory/rigid.md, section 14), with the fitted
 // value, its radius of gyration and the limit crossed, in `units`.
