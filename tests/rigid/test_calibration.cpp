@@ -594,7 +594,9 @@ TEST(ThesisCase4, PsiModeMatchesAppendixGFormula) {
   const rigid::Machine2DParameters& p = study.machine;
   const double expected = std::sqrt((p.soil.stiffness + p.plow.bounce_tire.stiffness) / p.plow.mass) / kTwoPi;
   EXPECT_NEAR(r.modes[0].frequency_hz / expected, 1.0, 1e-9);
-  EXPECT_NEAR(r.modes[0].frequency_hz / 8.321, 1.0, 1e-6);  // the thesis's hand value, which the file's M2 encodes
+  // A calibration check, not evidence: the file's M2 is computed from the
+  // thesis's 8.321 Hz (a 5,862 lb plow), so this only checks that it encodes it.
+  EXPECT_NEAR(r.modes[0].frequency_hz / 8.321, 1.0, 1e-6);
 }
 
 }  // namespace
