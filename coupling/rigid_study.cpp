@@ -281,6 +281,7 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
     s.calibration = read_calibration_request(
         *cal, [&](const std::string& name) { return get_parameter(p, name); },
         [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters(), false);
+  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_2d(p, b); });
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
   check_machine(p, s.fixed_coordinates, root, file);

@@ -452,6 +452,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
                                             calibratable_parameters_3d(), true);
+  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_3d(p, b); });
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
     if (block.has("loads"))

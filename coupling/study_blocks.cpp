@@ -547,6 +547,46 @@ namespace {
 const char* axis_name(int axis) { return axis == 0 ? "X" : axis == 1 ? "Y" : "Z"; }
 }  // namespace
 
+namespace {
+// The axis of the body's inertia that calibration parameter `name` is
+// ("<prefix>inertia" about a 2-D body's only axis, "<prefix>inertia.xx|yy|zz"), or -1.
+int body_inertia_axis(const DeclaredBodySize& b, const std::string& name) {
+  if (name.rfind(b.parameter_prefix, 0) != 0) return -1;
+  const std::string rest = name.substr(b.parameter_prefix.size());
+  if (rest == "inertia" && b.axes.size() == 1) return b.axes[0];
+  if (rest == "inertia.xx") return 0;
+  if (rest == "inertia.yy") return 1;
+  if (rest == "inertia.zz") return 2;
+  return -1;
+}
+}  // namespace
+
+void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
+                                  const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of) {
+  for (std::size_t i = 0; i < c.parameters.size() && i < c.bounds.size(); ++i) {
+    const std::string& name = c.parameters[i];
+    ParameterBound& bound = c.bounds[i];
+    if (bound.basis.rfind("default:", 0) != 0) continue;  // set by the study's bounds entry
+    for (const DeclaredBodySize& b : sizes) {
+      const int axis = body_inertia_axis(b, name);
+      if (axis < 0) continue;
+      const BodyInertia m = inertia_of(b);
+      const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+      if (!(m.mass > 0) || (!std::isfinite(g.largest) && !(g.smallest > 0))) continue;  // the box says nothing about this axis
+      constexpr double kRadiusFactor = 1.5;  // the default's, on a side the box leaves open
+      const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+      const double k_low = std::min(g.smallest > 0 ? g.smallest : k / kRadiusFactor, k);
+      const double k_high = std::max(std::isfinite(g.largest) ? g.largest : k * kRadiusFactor, k);
+      bound.lower = m.mass * k_low * k_low;
+      bound.upper = m.mass * k_high * k_high;
+      bound.basis = "dimensions of " + b.body + ": the radius of gyration within what its declared box allows (docs/theory/rigid.md, section 15)";
+      bound.body_mass = m.mass;
+      bound.physical_lower = m.mass * g.smallest * g.smallest;
+      bound.physical_upper = std::isfinite(g.largest) ? m.mass * g.largest * g.largest : std::numeric_limits<double>::infinity();
+    }
+  }
+}
+
 void check_stated_inertia(const DeclaredBodySize& b, const BodyInertia& m, const core::UnitSystem& units) {
   if (!(m.mass > 0)) return;
   const std::string L = units.label(Quantity::length);
@@ -576,6 +616,12 @@ std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize
     const BodyInertia m = inertia_of(b);
     if (!(m.mass > 0)) continue;
     for (int axis : b.axes) {
+      // An inertia calibrated with its box's range in its bounds is warned of by calibration_warnings.
+      bool bounded = false;
+      if (calibration)
+        for (std::size_t i = 0; i < calibration->parameters.size() && i < calibration->bounds.size(); ++i)
+          bounded = bounded || (body_inertia_axis(b, calibration->parameters[i]) == axis && calibration->bounds[i].body_mass > 0);
+      if (bounded) continue;
       const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
       const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
       const rigid::GyrationVerdict v = rigid::judge_gyration(k, g);

@@ -148,6 +148,17 @@ struct BodyInertia {
   Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
 };
 
+// The default bounds (those the study's calibration.bounds does not set) of
+// every calibrated inertia of a body with declared dimensions, from the range
+// its box allows about the inertia's axis (Eqs. 15.1-15.2, as a bounds entry's
+// own dimensions do): k at most the half-diagonal, at least the uniform
+// solid's if distributed; a side the box leaves open keeps the default's
+// factor 1.5 on k; never past the stated start. Names: "<prefix>inertia" (about
+// the body's only axis, 2-D) or "<prefix>inertia.xx|yy|zz"; the frame parts'
+// scales are totals, not a body's, and keep theirs.
+void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
+                                  const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of);
+
 // A stated radius of gyration beyond the corners of its body's declared box
 // (Eq. 14.3: no mass inside the box reaches it) is an InputError at the
 // body's dimensions key: the study's statements contradict each other.

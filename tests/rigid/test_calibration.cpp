@@ -291,14 +291,17 @@ TEST(Calibration, AgreementIsGuaranteedWithoutSurplusTargetsAndTestedWithThem) {
   EXPECT_FALSE(with_shape.agreement_guaranteed);
 }
 
-// Case 1's study with its calibration block replaced by `block`, read.
-coupling::RigidStudy case1_with_calibration(const std::string& block) {
+// Case 1's study with its calibration block replaced by `block` and, if given,
+// the added-mass line `added_mass` first among its added masses, read.
+coupling::RigidStudy case1_with_calibration(const std::string& block, const std::string& added_mass = "") {
   std::ifstream in(FRAMEDYN_SOURCE_DIR "/examples/thesis/case1.yaml");
   std::stringstream text;
   text << in.rdbuf();
   std::string s = text.str();
   const std::size_t a = s.find("\ncalibration:"), b = s.find("\nanalysis:");
   s = s.substr(0, a + 1) + block + s.substr(b);
+  const std::string key = "  added_masses:\n";
+  if (!added_mass.empty()) s.insert(s.find(key) + key.size(), added_mass);  // first among the added masses
   static framedyn::testing::TempDir dir("framedyn_calibration");
   const std::string file = (dir / "case1_variant.yaml").string();
   std::ofstream(file) << s;
@@ -474,23 +477,11 @@ TEST(BodySize, DistributedSlenderBodyHasAtLeastTheUniformRodsRadiusOfGyration) {
 }
 
 // Case 1 with a boom (an added mass of the frame, as the thesis's chain) of
-// `weight` lb and radius of gyration `k` in, declared with `dimensions`.
+// `weight` lb and radius of gyration `k` in, declared with `dimensions`, and
+// the calibration block `calibration` (none if empty).
 coupling::RigidStudy case1_with_boom(const std::string& weight, const std::string& k, const std::string& dimensions, const std::string& calibration = "") {
-  std::ifstream in(FRAMEDYN_SOURCE_DIR "/examples/thesis/case1.yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  const std::string key = "  added_masses:\n";
-  s.insert(s.find(key) + key.size(), "    - {name: boom, weight: " + weight + ", radius_of_gyration: " + k + ", position: [100, -22], attachment: [84, 0], " +
-                                         dimensions + "}\n");
-  if (!calibration.empty()) {
-    const std::size_t a = s.find("\ncalibration:"), b = s.find("\nanalysis:");
-    s = s.substr(0, a + 1) + calibration + s.substr(b);
-  }
-  static framedyn::testing::TempDir dir("framedyn_body_size");
-  const std::string file = (dir / "case1_boom.yaml").string();
-  std::ofstream(file) << s;
-  return coupling::read_rigid_study(file);
+  return case1_with_calibration(calibration, "    - {name: boom, weight: " + weight + ", radius_of_gyration: " + k +
+                                                 ", position: [100, -22], attachment: [84, 0], " + dimensions + "}\n");
 }
 
 // A stated inertia is checked against its body's declared box when read. A
@@ -534,6 +525,26 @@ TEST(BodySize, StatedRadiusOfGyrationBelowTheUniformRodIsWarnedOf) {
   EXPECT_EQ(w.figures[2].name, "smallest_radius_of_gyration");
   EXPECT_NEAR(w.figures[2].value, k_rod, 1e-9 * k_rod);
   EXPECT_EQ(w.figures[2].unit, "in");
+}
+
+// A calibrated inertia of a body with declared dimensions takes its default
+// bounds from that box (Eqs. 15.1-15.2): the boom declared 20 x 12 x 44 in and
+// distributed has k about Y between sqrt((20^2 + 44^2)/12) = 13.95 in and
+// sqrt(20^2 + 44^2)/2 = 24.17 in; a bounds entry of the study's own still
+// overrides it (with its reason).
+TEST(BodySize, CalibratedInertiaOfADeclaredBodyIsBoundedByItsBox) {
+  const std::string cal = "calibration:\n  parameters: [frame.added_masses.boom.inertia]\n  targets:\n    - {frequency_hz: 3.8, dominant: theta_y}\n";
+  const coupling::RigidStudy s = case1_with_boom("1100", "24", "dimensions: {length: 20, width: 12, height: 44}, distributed: true", cal);
+  ASSERT_TRUE(s.calibration.has_value());
+  const double m = s.machine.frame.added_masses[0].mass, in = 0.0254, d2 = (20.0 * 20 + 44 * 44) * in * in;
+  const coupling::ParameterBound& b = s.calibration->bounds[0];
+  EXPECT_NEAR(b.lower, m * d2 / 12, 1e-12 * m * d2);
+  EXPECT_NEAR(b.upper, m * d2 / 4, 1e-12 * m * d2);
+  EXPECT_EQ(b.basis.rfind("dimensions of frame.added_masses[boom]", 0), 0u) << b.basis;
+  const coupling::RigidStudy own = case1_with_boom("1100", "24", "dimensions: {length: 20, width: 12, height: 44}, distributed: true",
+                                                   cal + "  bounds:\n    - {parameter: frame.added_masses.boom.inertia, upper: 1.0e6, reason: test}\n");
+  EXPECT_EQ(own.calibration->bounds[0].basis, "test");
+  EXPECT_DOUBLE_EQ(own.calibration->bounds[0].upper, own.units.to_si(1.0e6, core::Quantity::rotary_inertia));
 }
 
 // A fitted mass moves the radius of gyration of a stated inertia: the boom's
