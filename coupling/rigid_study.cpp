@@ -27,6 +27,13 @@ double inertia_of(const YamlMap& m, double mass, const std::string& what) {
   return mass * k * k;
 }
 
+// The mass and pitch inertia (about Y) of a declared added mass (DeclaredBodySize::body) of the machine.
+BodyInertia body_inertia_2d(const rigid::Machine2DParameters& p, const DeclaredBodySize& b) {
+  for (const rigid::AddedMass& a : p.frame.added_masses)
+    if (b.body == "frame.added_masses[" + a.name + "]") return {a.mass, Eigen::Vector3d(0.0, a.inertia, 0.0)};
+  return {};
+}
+
 rigid::Tire2D tire(const YamlMap& m) {
   m.allow_only({"contact", "normal", "tractive", "normal_input", "tractive_input"});
   rigid::Tire2D t;
@@ -180,9 +187,10 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
   if (added.size() > 30) throw frame.error("added_masses", "at most 30 added masses (the thesis's limit)", fmt::format("{}", added.size()));
   require_distinct_names(added, "added mass", part_load_names_2d());
   for (const YamlMap& a : added) {
-    a.allow_only({"name", "mass", "weight", "inertia", "radius_of_gyration", "position", "attachment"});
+    a.allow_only({"name", "mass", "weight", "inertia", "radius_of_gyration", "position", "attachment", "dimensions", "distributed"});
     rigid::AddedMass m;
     m.name = a.text("name");
+    read_body_size(a, "frame.added_masses[" + m.name + "]", "frame.added_masses." + m.name + ".", {1}, s.body_sizes);
     m.mass = a.mass(kGravity);
     m.inertia = inertia_of(a, m.mass, "added mass " + m.name);
     m.position = a.point("position");
@@ -265,9 +273,11 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
     s.calibration = read_calibration_request(
         *cal, [&](const std::string& name) { return get_parameter(p, name); },
         [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters(), false);
+  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_2d(p, b); });
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
   check_machine(p, s.fixed_coordinates, root, file);
+  for (const DeclaredBodySize& b : s.body_sizes) check_stated_inertia(b, body_inertia_2d(p, b), s.units);
   return s;
 }
 }  // namespace
@@ -280,6 +290,9 @@ RigidResults run_rigid_study(const RigidStudy& study_in) {
       return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
+  for (core::Warning& w : body_size_warnings(study.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_2d(study.machine, b); },
+                                             study.calibration, study.units))
+    r.warnings.push_back(std::move(w));
   const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
   const std::optional<rigid::VehicleRunState> run =
       run_vehicle_study(model, study.modes, study.fixed_coordinates, study.modal_soil, study.response, study.units, r);

@@ -20,6 +20,7 @@ namespace YAML { class Node; }
 #include "coupling/frame_loads_2d.h"
 #include "coupling/steady_report.h"
 #include "rigid/calibration.h"
+#include "rigid/calibration_limits.h"
 #include "rigid/machine_2d.h"
 #include "rigid/rigid_modes.h"
 #include "rigid/time_integration.h"
@@ -77,6 +78,19 @@ struct CalibrationRequest {
   core::InputLocation pair_with_where;
 };
 
+// A body's declared size (`dimensions: {length, width, height}` and
+// `distributed` on the body's map): its stated or fitted radii of gyration are
+// checked against what a body of that size can have (docs/theory/rigid.md,
+// section 15; coupling/study_blocks.h, check_stated_inertias and
+// body_size_warnings).
+struct DeclaredBodySize {
+  std::string body;              // the body's key path, e.g. "frame.parts[boom]", "cab"
+  std::string parameter_prefix;  // calibration parameters of this body start with it ("cab.", "frame.added_masses.boom.")
+  core::InputLocation where;     // the dimensions key
+  rigid::BodyBox box;
+  std::vector<int> axes;         // the axes the model gives the body inertia about (3-D: 0, 1, 2; 2-D: 1)
+};
+
 // The machine parameters a calibration may adjust, by name (SI values).
 // Throw std::invalid_argument for an unknown name.
 std::vector<std::string> calibratable_parameters();
@@ -108,6 +122,7 @@ struct RigidStudy {
   std::optional<ResponseRequest> response;
   std::optional<CalibrationRequest> calibration;
   std::optional<FrameOutputRequest> frame_output;
+  std::vector<DeclaredBodySize> body_sizes;  // bodies with declared dimensions (section 15)
 };
 
 // Throws core::InputError naming the file, line and key path.

@@ -52,6 +52,19 @@ rigid::RigidPart3D part(const YamlMap& m, const std::string& name) {
   return r;
 }
 
+// The mass and the inertias about its own axes of a declared body (DeclaredBodySize::body) of the machine.
+BodyInertia body_inertia_3d(const rigid::Machine3DParameters& p, const DeclaredBodySize& b) {
+  const auto of = [](const rigid::RigidPart3D& r) { return BodyInertia{r.mass, r.inertia.diagonal()}; };
+  if (b.body == "cab") return of(p.cab.body);
+  if (b.body == "front_axle") return of(p.front_axle.axle);
+  if (b.body == "frame.reel_and_carrier") return of(p.frame.reel_and_carrier);
+  if (b.body == "frame.rear_axle") return of(p.frame.rear_axle);
+  if (b.body == "plow") return {p.plow.mass, p.plow.inertia_boom_axes.diagonal()};
+  for (const rigid::RigidPart3D& part : p.frame.parts)
+    if (b.body == "frame.parts[" + part.name + "]") return of(part);
+  return {};
+}
+
 rigid::Tire3D tire(const YamlMap& m) {
   m.allow_only({"contact", "vertical", "longitudinal", "lateral", "vertical_input", "longitudinal_input"});
   rigid::Tire3D t;
@@ -331,8 +344,9 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
       sp.has_values = a.has("mass") || a.has("weight");
     }
     if (sp.has_values) {
-      a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from", "mounts"});
+      a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from", "mounts", "dimensions", "distributed"});
       sp.part = part(a, a.text("name"));
+      read_body_size(a, "frame.parts[" + sp.part.name + "]", "frame.parts.", {0, 1, 2}, s.body_sizes);
       // The part the mesh models is the mesh's own tubes: it has no mounts to join.
       if (sp.from_mesh && a.has("mounts"))
         throw a.error("mounts", "no mounts on the part the frame mesh models (from: frame_mesh: it is the mesh's own tubes)", "mounts");
@@ -346,20 +360,23 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   }
   if (p.frame.parts.empty()) throw frame.error("parts", "a list of the frame's parts", "none");
   const YamlMap reel = frame.map("reel_and_carrier");
-  reel.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "attachment"});
+  reel.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "attachment", "dimensions", "distributed"});
   p.frame.reel_and_carrier = part(reel, "reel_and_carrier");
+  read_body_size(reel, "frame.reel_and_carrier", "frame.reel_and_carrier.", {0, 1, 2}, s.body_sizes);
   p.frame.reel_attachment = read_point3(reel, "attachment");
   const YamlMap rear = frame.map("rear_axle");
-  rear.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "leveling_cylinder"});
+  rear.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "leveling_cylinder", "dimensions", "distributed"});
   p.frame.rear_axle = part(rear, "rear_axle");
+  read_body_size(rear, "frame.rear_axle", "frame.rear_axle.", {0, 1, 2}, s.body_sizes);
   p.frame.rear_pin = read_point3(rear, "pin");
   p.frame.leveling_cylinder = read_point3(rear, "leveling_cylinder");
   if (p.frame.leveling_cylinder.y() == p.frame.rear_pin.y())
     throw rear.error("leveling_cylinder", "a point beside the pin in Y (the cylinder holds the axle's roll)", "the pin's Y");
 
   const YamlMap front = root.map("front_axle");
-  front.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin"});
+  front.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "dimensions", "distributed"});
   p.front_axle.axle = part(front, "front_axle");
+  read_body_size(front, "front_axle", "front_axle.", {0, 1, 2}, s.body_sizes);
   p.front_axle.pin = read_point3(front, "pin");
   // The axle rolls (eta) about the pin's X axis: it needs inertia about that axis, its own or its mass's off the axis.
   const Eigen::Vector3d off_pin = p.front_axle.axle.cg - p.front_axle.pin;
@@ -368,8 +385,9 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
                       "no roll inertia and the centre of mass on the axis");
 
   const YamlMap cab = root.map("cab");
-  cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts"});
+  cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts", "dimensions", "distributed"});
   p.cab.body = part(cab, "cab");
+  read_body_size(cab, "cab", "cab.", {0, 1, 2}, s.body_sizes);
   const std::vector<YamlMap> mounts = cab.list_of_maps("mounts");
   require_distinct_names(mounts, "cab mount");
   for (const YamlMap& m : mounts) {
@@ -394,7 +412,8 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   if (auto plow_block = attachment_block(root, "plow", p.attachment == rigid::Attachment::plow, "no plow data unless attachment is plow", "a plow map")) {
     const YamlMap& plow = *plow_block;
     plow.allow_only({"swing_pin", "boom_angle_deg", "blade_angle_deg", "boom_offset", "mass", "weight", "inertia", "radii_of_gyration", "products",
-                     "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder", "swing_spring"});
+                     "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder", "swing_spring", "dimensions", "distributed"});
+    read_body_size(plow, "plow", "plow.", {0, 1, 2}, s.body_sizes);  // its box along the boom's axes, as its inertia
     rigid::Plow3D& pl = p.plow;
     pl.swing_pin = read_point3(plow, "swing_pin");
     pl.boom_angle = plow.number_or("boom_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
@@ -430,6 +449,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
                                             calibratable_parameters_3d(), true);
+  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_3d(p, b); });
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
     if (block.has("loads"))
@@ -458,6 +478,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
         throw parts[i].error("from", "a frame_response block with the frame mesh (the part's mass, c.g. and inertia come from it)", "no frame_response");
   }
   check_machine(p, s.fixed_coordinates, root, file);
+  for (const DeclaredBodySize& b : s.body_sizes) check_stated_inertia(b, body_inertia_3d(p, b), s.units);
   return s;
 }
 }  // namespace
@@ -470,6 +491,9 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
       return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
+  for (core::Warning& w : body_size_warnings(study.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_3d(study.machine, b); },
+                                             study.calibration, study.units))
+    r.warnings.push_back(std::move(w));
   r.machine = study.machine;
   const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
   const std::optional<rigid::VehicleRunState> run =

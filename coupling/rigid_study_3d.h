@@ -45,6 +45,7 @@ struct RigidStudy3D {
   // frame loads at points 24-31 into the beam model of the frame
   // (coupling/frame_study.h). Needs analysis.response; takes no `loads` key.
   std::optional<FrameStudyRequest> frame_response;
+  std::vector<DeclaredBodySize> body_sizes;  // bodies with declared dimensions (docs/theory/rigid.md, section 15)
 };
 
 RigidStudy3D read_rigid_study_3d(const std::string& file);

@@ -296,13 +296,13 @@ ParameterBound calibration_default_bounds(double nominal, core::Quantity q, doub
 
 namespace {
 
-// Radius-of-gyration limits about one axis of a body in a box with sides a and
-// b across that axis: at most the half-diagonal (all the mass at the corners);
-// a body declared distributed at least the uniform solid's sqrt((a^2+b^2)/12).
-ParameterBound inertia_bounds_from_dimensions(double mass, double a, double b, bool distributed, double nominal_k) {
-  const double k_max = 0.5 * std::hypot(a, b);
-  const double k_min = distributed ? std::hypot(a, b) / std::sqrt(12.0) : std::min(nominal_k / 1.5, k_max);
-  return {mass * k_min * k_min, mass * k_max * k_max,
+// Radius-of-gyration bounds about one axis from the range its declared box
+// allows (rigid/calibration_limits.h): at most the half-diagonal (all the mass
+// at the corners); a body declared distributed at least the uniform solid's
+// sqrt((a^2+b^2)/12), else at least 1/1.5 of the nominal k.
+ParameterBound inertia_bounds_from_dimensions(double mass, const rigid::GyrationRange& g, bool distributed, double nominal_k) {
+  const double k_min = distributed ? g.smallest : std::min(nominal_k / 1.5, g.largest);
+  return {mass * k_min * k_min, mass * g.largest * g.largest,
           distributed ? "dimensions: between the uniform solid of the declared box and all mass at its corners"
                       : "dimensions: at most all mass at the declared box's corners; at least 1/1.5 of the nominal radius of gyration"};
 }
@@ -433,9 +433,10 @@ CalibrationRequest read_calibration_request(const YamlMap& cal, const std::funct
       } catch (const std::invalid_argument&) {
         throw b.error("dimensions", "an inertia whose body has a mass parameter '" + mass_name + "'", "'" + name + "'");
       }
-      const double a = axis == 'x' ? d[1] : d[0], c = axis == 'z' ? d[1] : d[2];
       const bool distributed = b.boolean_or("distributed", false);
-      bound = inertia_bounds_from_dimensions(mass, a, c, distributed, std::sqrt(nominal[i] / mass));
+      const rigid::BodyBox box{{d[0], d[1], d[2]}, distributed};
+      bound = inertia_bounds_from_dimensions(mass, rigid::gyration_range(box, axis == 'x' ? 0 : axis == 'y' ? 1 : 2), distributed,
+                                             std::sqrt(nominal[i] / mass));
       bound.body_mass = mass;
       bound.physical_upper = bound.upper;  // Eq. 14.3: no distribution inside the box reaches further
       if (distributed) bound.physical_lower = bound.lower;  // Eq. 14.4
@@ -502,6 +503,32 @@ rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std
 
 std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units) {
   std::vector<core::Warning> out;
+  if (r.iteration_limit_reached) {
+    // The target missed most (the first of those within 1e-9 of the largest
+    // miss, so that round-off cannot pick another) and the parameters the
+    // bounds hold: what keeps the model from its targets.
+    std::size_t worst = 0;
+    std::vector<double> miss;
+    for (std::size_t t = 0; t < c.targets.size() && t < r.achieved_hz.size(); ++t)
+      miss.push_back(std::abs(r.achieved_hz[t] - c.targets[t].frequency_hz) / c.targets[t].frequency_hz);
+    for (std::size_t t = 0; t < miss.size(); ++t)
+      if (miss[t] > miss[worst] + 1e-9) worst = t;
+    std::string held;
+    for (std::size_t i = 0; i < r.at_bound.size() && i < c.parameters.size(); ++i)
+      if (r.at_bound[i]) held += (held.empty() ? "" : ", ") + c.parameters[i];
+    const std::string missed =
+        miss.empty() ? std::string()
+                     : fmt::format("; its largest miss is the {:g} Hz target{} on a {:.4g} Hz mode{}", c.targets[worst].frequency_hz,
+                                   c.targets[worst].dominant.empty() ? "" : " (" + c.targets[worst].dominant + ")", r.achieved_hz[worst],
+                                   r.achieved_dominant[worst].empty() ? "" : " (" + r.achieved_dominant[worst] + "-led)");
+    core::add_warning(out, "calibration_not_converged",
+                      fmt::format("calibration: the fit stopped at its iteration limit ({} iterations) with the residual still falling, its largest "
+                                  "frequency error {:.3g} %{}{}: the fitted values are not a converged fit, and the model does not reach its targets "
+                                  "within its bounds (docs/theory/rigid.md, section 9)",
+                                  r.iterations, 100 * r.max_relative_error, missed,
+                                  held.empty() ? std::string() : "; held at a bound: " + held),
+                      {{"residual_max", r.max_relative_error, "1"}, {"iterations", static_cast<double>(r.iterations), "1"}});
+  }
   constexpr double kSlack = 1e-6;  // relative: a value on the limit is inside it
   for (std::size_t i = 0; i < c.bounds.size() && i < r.fitted.size(); ++i) {
     const ParameterBound& b = c.bounds[i];
@@ -519,6 +546,136 @@ std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, con
                       {{"fitted", units.from_si(v, Quantity::rotary_inertia), I},
                        {"radius_of_gyration", units.from_si(k, Quantity::length), L},
                        {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration", units.from_si(limit, Quantity::length), L}});
+  }
+  return out;
+}
+
+void read_body_size(const YamlMap& m, const std::string& body, const std::string& prefix, std::vector<int> axes,
+                    std::vector<DeclaredBodySize>& sizes) {
+  const auto dims = m.optional_map("dimensions");
+  if (!dims) {
+    if (m.has("distributed")) throw m.error("distributed", "distributed only with dimensions", "no dimensions");
+    return;
+  }
+  dims->allow_only({"length", "width", "height"});
+  DeclaredBodySize b;
+  b.body = body;
+  b.parameter_prefix = prefix;
+  b.where = m.location("dimensions");
+  static const char* const kSides[] = {"length", "width", "height"};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (dims->has(kSides[i])) b.box.side[i] = dims->positive(kSides[i], Quantity::length);
+  if (!b.box.side[0] && !b.box.side[1] && !b.box.side[2])
+    throw m.error("dimensions", "at least one of length, width, height (the body's box along X, Y, Z)", "none");
+  b.box.distributed = m.boolean_or("distributed", false);
+  b.axes = std::move(axes);
+  sizes.push_back(std::move(b));
+}
+
+namespace {
+const char* axis_name(int axis) { return axis == 0 ? "X" : axis == 1 ? "Y" : "Z"; }
+}  // namespace
+
+namespace {
+// The axis of the body's inertia that calibration parameter `name` is
+// ("<prefix>inertia" about a 2-D body's only axis, "<prefix>inertia.xx|yy|zz"), or -1.
+int body_inertia_axis(const DeclaredBodySize& b, const std::string& name) {
+  if (name.rfind(b.parameter_prefix, 0) != 0) return -1;
+  const std::string rest = name.substr(b.parameter_prefix.size());
+  if (rest == "inertia" && b.axes.size() == 1) return b.axes[0];
+  if (rest == "inertia.xx") return 0;
+  if (rest == "inertia.yy") return 1;
+  if (rest == "inertia.zz") return 2;
+  return -1;
+}
+}  // namespace
+
+void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
+                                  const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of) {
+  for (std::size_t i = 0; i < c.parameters.size() && i < c.bounds.size(); ++i) {
+    const std::string& name = c.parameters[i];
+    ParameterBound& bound = c.bounds[i];
+    if (bound.basis.rfind("default:", 0) != 0) continue;  // set by the study's bounds entry
+    for (const DeclaredBodySize& b : sizes) {
+      const int axis = body_inertia_axis(b, name);
+      if (axis < 0) continue;
+      const BodyInertia m = inertia_of(b);
+      const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+      if (!(m.mass > 0) || (!std::isfinite(g.largest) && !(g.smallest > 0))) continue;  // the box says nothing about this axis
+      constexpr double kRadiusFactor = 1.5;  // the default's, on a side the box leaves open
+      const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+      const double k_low = std::min(g.smallest > 0 ? g.smallest : k / kRadiusFactor, k);
+      const double k_high = std::max(std::isfinite(g.largest) ? g.largest : k * kRadiusFactor, k);
+      bound.lower = m.mass * k_low * k_low;
+      bound.upper = m.mass * k_high * k_high;
+      bound.basis = "dimensions of " + b.body + ": the radius of gyration within what its declared box allows (docs/theory/rigid.md, section 15)";
+      bound.body_mass = m.mass;
+      bound.physical_lower = m.mass * g.smallest * g.smallest;
+      bound.physical_upper = std::isfinite(g.largest) ? m.mass * g.largest * g.largest : std::numeric_limits<double>::infinity();
+    }
+  }
+}
+
+void check_stated_inertia(const DeclaredBodySize& b, const BodyInertia& m, const core::UnitSystem& units) {
+  if (!(m.mass > 0)) return;
+  const std::string L = units.label(Quantity::length);
+  for (int axis : b.axes) {
+    const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+    const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+    if (rigid::judge_gyration(k, g) != rigid::GyrationVerdict::beyond_corners) continue;
+    throw core::InputError(
+        b.where,
+        fmt::format("a radius of gyration about {} of at most {:.4g} {} for {} (half the diagonal of its box across {}: all the mass at the "
+                    "corners; docs/theory/rigid.md, section 15)",
+                    axis_name(axis), units.from_si(g.largest, Quantity::length), L, b.body, axis_name(axis)),
+        fmt::format("{:.4g} {} (an inertia of {:.4g} {} on a mass of {:.4g} {})", units.from_si(k, Quantity::length), L, units.from_si(m.inertia(axis), Quantity::rotary_inertia),
+                    units.label(Quantity::rotary_inertia), units.from_si(m.mass, Quantity::mass), units.label(Quantity::mass)));
+  }
+}
+
+std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize>& sizes,
+                                              const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of,
+                                              const std::optional<CalibrationRequest>& calibration, const core::UnitSystem& units) {
+  std::vector<core::Warning> out;
+  const std::string L = units.label(Quantity::length), I = units.label(Quantity::rotary_inertia);
+  for (const DeclaredBodySize& b : sizes) {
+    bool fitted = false;
+    if (calibration)
+      for (const std::string& name : calibration->parameters) fitted = fitted || name.rfind(b.parameter_prefix, 0) == 0;
+    const BodyInertia m = inertia_of(b);
+    if (!(m.mass > 0)) continue;
+    for (int axis : b.axes) {
+      // An inertia calibrated with its box's range in its bounds is warned of by calibration_warnings.
+      bool bounded = false;
+      if (calibration)
+        for (std::size_t i = 0; i < calibration->parameters.size() && i < calibration->bounds.size(); ++i)
+          bounded = bounded || (body_inertia_axis(b, calibration->parameters[i]) == axis && calibration->bounds[i].body_mass > 0);
+      if (bounded) continue;
+      const rigid::GyrationRange g = rigid::gyration_range(b.box, axis);
+      const double k = std::sqrt(std::max(m.inertia(axis), 0.0) / m.mass);
+      const rigid::GyrationVerdict v = rigid::judge_gyration(k, g);
+      if (v == rigid::GyrationVerdict::inside) continue;
+      const bool high = v == rigid::GyrationVerdict::beyond_corners;
+      const double limit = high ? g.largest : g.smallest;
+      const std::vector<core::WarningFigure> figures{{fitted ? "fitted" : "inertia", units.from_si(m.inertia(axis), Quantity::rotary_inertia), I},
+                                                     {"radius_of_gyration", units.from_si(k, Quantity::length), L},
+                                                     {high ? "largest_radius_of_gyration" : "smallest_radius_of_gyration",
+                                                      units.from_si(limit, Quantity::length), L}};
+      const std::string what = fmt::format("{}'s radius of gyration about {} is {:.4g} {}, {} the {:.4g} {} {}", b.body, axis_name(axis),
+                                           units.from_si(k, Quantity::length), L, high ? "above" : "below", units.from_si(limit, Quantity::length), L,
+                                           high ? "of all its mass at its declared box's corners" : "of its declared box as a uniform solid");
+      if (!fitted && high) continue;  // a stated value there was refused when read (check_stated_inertia)
+      if (fitted)
+        core::add_warning(out, "calibration_outside_physical_range",
+                          fmt::format("calibration: after the fit {} (docs/theory/rigid.md, section 15): the fitted machine is not a physical one", what),
+                          figures);
+      else
+        core::add_warning(out, "inertia_below_uniform_body",
+                          fmt::format("{} (docs/theory/rigid.md, section 15): its mass lies nearer its c.g. than a body spread through its box "
+                                      "allows; check the inertia, the dimensions or `distributed`",
+                                      what),
+                          figures);
+    }
   }
   return out;
 }

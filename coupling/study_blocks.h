@@ -145,11 +145,54 @@ rigid::CalibrationResult run_calibration(const CalibrationRequest& c, const std:
 constexpr double kSymmetricShareLimit = 1e-6;
 rigid::ModeFamily calibration_mode_family(const CalibrationRequest& c, const std::vector<std::string>& coordinates);
 
-// A `calibration_outside_physical_range` warning for every fitted rotary
+// A `calibration_not_converged` warning for a fit stopped at its iteration
+// limit (its residual, the target missed most, the parameters held at a
+// bound; docs/theory/rigid.md, section 9), then a
+// `calibration_outside_physical_range` warning for every fitted rotary
 // inertia outside the range its body's declared box allows (bounds overridden
 // beyond it with a reason; docs/theory/rigid.md, section 14), with the fitted
 // value, its radius of gyration and the limit crossed, in `units`.
 std::vector<core::Warning> calibration_warnings(const CalibrationRequest& c, const rigid::CalibrationResult& r, const core::UnitSystem& units);
+
+// A body map's `dimensions: {length, width, height}` (its bounding box along
+// X, Y, Z; lengths > 0, at least one given) and `distributed` (only with
+// dimensions; default false) appended to `sizes` as body `body` with
+// calibration parameters starting with `prefix` and inertia about `axes`;
+// nothing without them (docs/theory/rigid.md, section 15).
+void read_body_size(const YamlMap& m, const std::string& body, const std::string& prefix, std::vector<int> axes,
+                    std::vector<DeclaredBodySize>& sizes);
+
+// A body's mass and its inertias about its own X, Y, Z (SI) in a machine.
+struct BodyInertia {
+  double mass = 0.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
+};
+
+// The default bounds (those the study's calibration.bounds does not set) of
+// every calibrated inertia of a body with declared dimensions, from the range
+// its box allows about the inertia's axis (Eqs. 15.1-15.2, as a bounds entry's
+// own dimensions do): k at most the half-diagonal, at least the uniform
+// solid's if distributed; a side the box leaves open keeps the default's
+// factor 1.5 on k; never past the stated start. Names: "<prefix>inertia" (about
+// the body's only axis, 2-D) or "<prefix>inertia.xx|yy|zz"; the frame parts'
+// scales are totals, not a body's, and keep theirs.
+void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
+                                  const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of);
+
+// A stated radius of gyration beyond the corners of its body's declared box
+// (Eq. 14.3: no mass inside the box reaches it) is an InputError at the
+// body's dimensions key: the study's statements contradict each other.
+void check_stated_inertia(const DeclaredBodySize& b, const BodyInertia& m, const core::UnitSystem& units);
+
+// After any calibration, every declared body's radii of gyration against its
+// box (section 15): `calibration_outside_physical_range` for a body whose mass
+// or inertia was fitted (a calibration parameter starts with its prefix) and
+// that left the range of Eqs. 14.3-14.4; `inertia_below_uniform_body` for a
+// distributed body, stated or fitted, below the uniform solid (Eq. 14.4). In
+// the order of the bodies, then of the axes X, Y, Z.
+std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize>& sizes,
+                                              const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of,
+                                              const std::optional<CalibrationRequest>& calibration, const core::UnitSystem& units);
 
 // Calibrates `parameters` in place (run_calibration, then the fitted values
 // set): get(p, name) and set(p, name, value) read and write a named

@@ -19,6 +19,11 @@ nlohmann::ordered_json finite_or(double v, const char* otherwise) { return std::
 
 }  // namespace
 
+std::string fit_status(const rigid::CalibrationResult& c) {
+  if (c.iteration_limit_reached) return "not_converged";
+  return c.max_relative_error <= kTargetsMetTolerance ? "targets_met" : "best_within_bounds";
+}
+
 nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& c,
                                          const core::UnitSystem& u, const std::function<core::Quantity(const std::string&)>& quantity,
                                          const core::ResultsFolder& folder) {
@@ -93,15 +98,21 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
   cal["labels_all_match"] = c.labels_match;
   cal["iterations"] = c.iterations;
   cal["iteration_limit_reached"] = c.iteration_limit_reached;
+  cal["fit_status"] = fit_status(c);
   folder.write_text("calibration.csv", pcsv.str());
   return cal;
 }
 
 void print_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& c) {
-  fmt::print("\ncalibration ({} iterations): {} targets, {} independent, {} parameters, {} degrees of freedom ({}){}; largest frequency error {:.3g} %; "
+  const std::string status = fit_status(c);
+  fmt::print("\ncalibration ({} iterations, {}): {} targets, {} independent, {} parameters, {} degrees of freedom ({}){}; largest frequency error {:.3g} %; "
              "dominant coordinates (predicted) {}\n",
-             c.iterations, request.targets.size(), c.independent_targets, c.fitted.size(), c.degrees_of_freedom,
-             c.agreement_guaranteed ? "agreement guaranteed by construction" : "agreement tested by the surplus targets",
+             c.iterations,
+             status == "not_converged" ? "NOT CONVERGED" : status == "targets_met" ? "converged, targets met" : "converged to the best within its bounds, targets missed",
+             request.targets.size(), c.independent_targets, c.fitted.size(), c.degrees_of_freedom,
+             c.agreement_guaranteed ? (status == "targets_met" ? "agreement guaranteed by construction"
+                                                               : "no surplus targets: met targets would have been guaranteed by construction")
+                                    : "agreement tested by the surplus targets",
              c.underdetermined ? fmt::format(", UNDERDETERMINED (regularization weight {:g})", c.regularization) : "", 100 * c.max_relative_error,
              c.labels_match ? "as the targets say" : "NOT all as the targets say");
   for (std::size_t t = 0; t < request.targets.size(); ++t)

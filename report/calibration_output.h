@@ -25,4 +25,12 @@ nlohmann::ordered_json write_calibration(const coupling::CalibrationRequest& req
 
 void print_calibration(const coupling::CalibrationRequest& request, const rigid::CalibrationResult& result);
 
+// summary.json's calibration.fit_status: "not_converged" (stopped at its
+// iteration limit with the residual still falling: its values are no fit),
+// "targets_met" (converged, every target within kTargetsMetTolerance relative)
+// or "best_within_bounds" (converged to the least residual its bounds allow,
+// missing a target by more: the miss is a finding, not a failure to hide).
+constexpr double kTargetsMetTolerance = 1e-6;
+std::string fit_status(const rigid::CalibrationResult& result);
+
 }  // namespace framedyn::report

@@ -5,8 +5,9 @@
 //
 // Levenberg-Marquardt on the logarithms x = ln p of the parameters (which
 // keeps them positive and makes the steps scale-free), each step projected
-// onto the bounds ln lower <= x <= ln upper, with a finite-difference
-// Jacobian. Residual: the log-frequency errors r_t = ln(f_t / target_t) of
+// onto the bounds ln lower <= x <= ln upper, with a central-difference
+// Jacobian, after a continuation that walks the targets from the model's own
+// frequencies in eight stages (the last given ten times the iterations). Residual: the log-frequency errors r_t = ln(f_t / target_t) of
 // the targets' modes (9.1), and, only when a regularisation weight w > 0 is
 // asked for, w (x - x0) (Tikhonov towards the nominal values, 9.2).
 // Identifiability: the scaled sensitivity matrix S = d r / d x (targets x
@@ -17,8 +18,15 @@
 // with sigma^2 the residual's variance per degree of freedom, and never below
 // the stated target uncertainty (9.4).
 // The dominant coordinates of the targets are never fitted: targets are paired
-// with modes by frequency alone and the labels are checked afterwards, as a
-// prediction (labels_match per target).
+// with modes by frequency order (match_targets: the k-th lowest target with a
+// lower mode than the (k+1)-th, least total log-frequency distance), among the
+// modes of CalibrationOptions::admissible when a family is given (a study's
+// calibration.pair_with: symmetric_modes admits the modes symmetric about a
+// symmetric machine's X-Z plane; docs/theory/rigid.md, section 14), and the
+// labels are checked afterwards, as a prediction (labels_match per target).
+// Measured shapes are fitted (9.6) but do not choose the pairing either.
+// The last stage stopped by its iteration limit is reported
+// (iteration_limit_reached), never as a converged fit.
 // A target may also carry a measured mode shape (components at chosen
 // coordinates or frame points, as an accelerometer survey gives them): its
 // residual is the part of the measured unit shape s that the model's observed
