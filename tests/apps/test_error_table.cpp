@@ -496,6 +496,8 @@ std::vector<Row> rows() {
       study_row("STUDY-141", "    left:  {contact: [72, -30, -26], vertical: {stiffness: 3000}",
                 "    left:  {contact: [-10, -30, -26], vertical_input: {kind: road, class: D, speed: 78.74}, vertical: {stiffness: 3000}", "vertical_input:",
                 "tires.rear.left.vertical_input", kStudy3D),
+      study_row("STUDY-160", "    contact: [72, -26]\n", "    contact: [-10, -26]\n    normal_input: {kind: road, class: D, speed: 78.74}\n", "normal_input:",
+                "tires.rear.normal_input"),
       // ---- duty cycles (coupling/duty_cycle.cpp)
       Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
       Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
