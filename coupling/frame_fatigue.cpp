@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "coupling/sn_curve_file.h"
 #include "fatigue/miner_damage.h"
 #include "fatigue/rainflow.h"
 #include "fem/section_stress.h"
@@ -88,10 +90,16 @@ FatigueRequest read_fatigue_block(const YamlMap& f) {
   if (f.has("shear_default")) r.shear_default_class_mpa = read_class(f, "shear_default");
   const std::vector<YamlMap> details = f.list_of_maps("details");
   for (const YamlMap& d : details) {
-    d.allow_only({"element_set", "class", "shear_class"});
+    d.allow_only({"element_set", "class", "shear_class", "curve"});
     FatigueDetail detail;
     detail.element_set = d.text("element_set");
-    detail.class_mpa = read_class(d, "class");
+    if (d.has("curve")) {
+      if (d.has("class")) throw d.error("curve", "class (a FAT class) or curve (an S-N curve file), not both", "both");  // STUDY-165
+      const std::filesystem::path file = std::filesystem::path(d.file()).parent_path() / d.text("curve");
+      detail.curve = read_sn_curve_file(file.lexically_normal().string());
+    } else {
+      detail.class_mpa = read_class(d, "class");
+    }
     if (d.has("shear_class")) detail.shear_class_mpa = read_class(d, "shear_class");
     detail.where = d.location("element_set");
     detail.where.key = d.path() + ".element_set";
@@ -221,11 +229,12 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
     const double shear_cls = listed ? q.details[at->second].shear_class_mpa.value_or(q.shear_default_class_mpa) : q.shear_default_class_mpa;
     const std::string who = listed ? fmt::format("{} (details[{}])", q.details[at->second].element_set, at->second) : "default";
     if (listed) used[at->second] = true;
+    const fatigue::SnCurve* own = listed && q.details[at->second].curve ? &*q.details[at->second].curve : nullptr;
     const std::string key = fmt::format("{:.10g}|{:.10g}|{}", cls, shear_cls, who);
     auto found = curve_index.find(key);
     if (found == curve_index.end()) {
       found = curve_index.emplace(key, static_cast<int>(curves.size())).first;
-      curves.push_back(fatigue_curve(q, cls));
+      curves.push_back(own ? *own : fatigue_curve(q, cls));
       shear_curves.push_back(fatigue_shear_curve(q, shear_cls));
       out.curves.push_back(curves.back().name());
       out.shear_curves.push_back(shear_curves.back().name());

@@ -27,7 +27,8 @@
 //     code: IIW                     # IIW (2016) | EN1993 (EN 1993-1-9)
 //     default: FAT71                # FAT class / detail category of sets not listed (MPa)
 //     shear_default: FAT80          # shear FAT class / delta tau_C of sets not listed (MPa)
-//     details: [{element_set: LEFT_RAIL, class: FAT80, shear_class: FAT100}]   # first listed set holding an element wins
+//     details: [{element_set: LEFT_RAIL, class: FAT80, shear_class: FAT100}]   # first listed set holding an element wins;
+//                                   # curve: FILE.yaml (an S-N curve file, relative to the study) instead of class
 //     mean_stress: none             # none (as-welded) | goodman (with ultimate_strength)
 //     ultimate_strength: 58000      # stress, Goodman only
 //     thickness: 0.5                # length: wall thickness for the thickness correction (none at <= 25 mm)
@@ -56,6 +57,9 @@ struct FatigueDetail {
   double class_mpa = 71.0;     // FAT class / detail category: the normal stress range at 2e6 cycles, MPa
   std::optional<double> shear_class_mpa;  // the shear range at 2e6 cycles, MPa; nullopt: the request's shear default
   core::InputLocation where = {};  // for messages about the set
+  // A user curve from an S-N curve file (details[i].curve, coupling/sn_curve_file.h) instead of
+  // class_mpa: used as it is (no thickness correction: the file's curve holds its own).
+  std::optional<fatigue::SnCurve> curve = std::nullopt;
 };
 
 struct FatigueRequest {

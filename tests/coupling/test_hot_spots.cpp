@@ -26,6 +26,7 @@
 #include "fem/beam_section.h"
 #include "fem/section_stress.h"
 #include "report/frame_outputs.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -272,6 +273,32 @@ TEST(FatigueLifeMap, FatClassPerElementSetFirstListedSetWinsElseTheDefault) {
   EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"RIGHT", 90.0, {}}})), framedyn::core::InputError);
   model.element_sets["CROSS"] = {7};
   EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"CROSS", 90.0, {}}})), framedyn::core::InputError);
+  // A detail's own curve (an S-N curve file's, here built in place): Basquin m = 3 through 90 MPa
+  // at 2e6 (C = 2e6 * 90^3) gives FAT90's damage at 120 MPa (above its knee), a class being ignored.
+  coupling::FatigueDetail own{"left", 1.0, {}};
+  own.curve = framedyn::fatigue::basquin_curve(2e6 * 90.0 * 90.0 * 90.0, 3.0, "file curve");
+  const coupling::LifeMap with_curve = coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({own}));
+  EXPECT_NEAR(with_curve.damage_per_hour[0][0] / d71, std::pow(71.0 / 90.0, 3), 1e-9);
+  EXPECT_EQ(with_curve.curves[static_cast<std::size_t>(with_curve.curve_of_station[0])], own.curve->name());
+}
+
+// The fatigue block's details[i].curve: an S-N curve file relative to the study file, its
+// curve used instead of a class. Reference 200 MPa at 1e5, m = 3 to 4e5 then m = 5:
+// N(100 MPa) = 4e5 (2 * 4^(-1/3))^5 (by hand); class and curve together are refused (STUDY-165).
+TEST(FatigueLifeMap, DetailCurveFromAFileBesideTheStudyGivesTheHandCyclesToFailure) {
+  const framedyn::testing::TempDir dir;
+  dir.write("curves/weld.yaml", "name: weld\nreference: {range: 200, cycles: 1e5}\nslopes: [3, 5]\nknees: [4e5]\n");
+  const auto block = [&](const std::string& text) {
+    static const framedyn::core::UnitSystem si = framedyn::core::UnitSystem::si();
+    return coupling::read_fatigue_block(coupling::YamlMap(YAML::Load(text), "frame.fatigue", (dir / "study.yaml").string(), &si));
+  };
+  const coupling::FatigueRequest q = block("details: [{element_set: LEFT, curve: curves/weld.yaml}]");
+  ASSERT_EQ(q.details.size(), 1u);
+  ASSERT_TRUE(q.details[0].curve.has_value());
+  const double n = 4e5 * std::pow(2.0 * std::pow(4.0, -1.0 / 3.0), 5);
+  EXPECT_NEAR(q.details[0].curve->cycles_to_failure(100e6), n, 1e-12 * n);
+  EXPECT_NE(q.details[0].curve->name().find("weld"), std::string::npos);
+  EXPECT_THROW(block("details: [{element_set: LEFT, class: FAT80, curve: curves/weld.yaml}]"), framedyn::core::InputError);
 }
 
 // Two scenarios' maps with hours: the cycle's damage is sum H_i d_i at every location (Miner),
