@@ -25,6 +25,7 @@
 #include "fatigue/mean_stress.h"
 #include "fatigue/miner_damage.h"
 #include "fatigue/rainflow.h"
+#include "coupling/sn_curve_file.h"
 #include "fatigue/sn_curve.h"
 #include "fatigue/stress_series.h"
 #include "report/rainflow_outputs.h"
@@ -94,7 +95,11 @@ std::optional<fatigue::SnCurve> curve_of(const RainflowOptions& opt) {
       throw core::InputError(command_line("--sn"), fatigue::sn_curve_names(), "'" + opt.sn + "'");
     }
   }
-  if (!opt.curve.empty()) curve = user_curve_from_spec(opt.curve);
+  if (!opt.curve.empty()) {
+    const auto ends = [&](const std::string& tail) { return opt.curve.size() > tail.size() && opt.curve.compare(opt.curve.size() - tail.size(), tail.size(), tail) == 0; };
+    const bool file = ends(".yaml") || ends(".yml");
+    curve = file ? coupling::read_sn_curve_file(opt.curve) : user_curve_from_spec(opt.curve);  // an S-N curve file (STUDY-161..164)
+  }
   if (!curve && (!opt.mean_stress.empty() || !opt.thickness.empty()))  // CLI-69
     throw core::InputError(command_line(!opt.mean_stress.empty() ? "--mean-stress" : "--thickness"), "an S-N curve (--sn or --curve) to apply it to",
                            "no curve");
@@ -216,7 +221,7 @@ void add_rainflow_command(CLI::App& app, std::function<int()>& run) {
       ->required();
   cmd->add_option("--column,-c", opt->column, "The stress column to count, by name or header (default: the only column that is not time)");
   cmd->add_option("--sn", opt->sn, "S-N curve for the damage: " + fatigue::sn_curve_names());
-  cmd->add_option("--curve", opt->curve, std::string("A user S-N curve instead of --sn: ") + kCurveSpec);
+  cmd->add_option("--curve", opt->curve, std::string("A user S-N curve instead of --sn: ") + kCurveSpec + ", or an S-N curve file FILE.yaml (name, units, points | basquin | reference + slopes + knees + cut_off)");
   cmd->add_option("--mean-stress", opt->mean_stress, "Mean-stress correction: none (as-welded details, the default) or goodman (base metal, with --ultimate)");
   cmd->add_option("--ultimate", opt->ultimate, "Goodman's tensile strength S_u, in the series' unit");
   cmd->add_option("--thickness", opt->thickness, "Plate thickness in mm for the code's thickness correction (IIW f(t) = (25/t)^n; EN 1993-1-9 k_s = (25/t)^0.2; none at <= 25 mm)");

@@ -3,7 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -12,6 +14,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "coupling/sn_curve_file.h"
 #include "fatigue/miner_damage.h"
 #include "fatigue/rainflow.h"
 #include "fem/section_stress.h"
@@ -87,10 +90,16 @@ FatigueRequest read_fatigue_block(const YamlMap& f) {
   if (f.has("shear_default")) r.shear_default_class_mpa = read_class(f, "shear_default");
   const std::vector<YamlMap> details = f.list_of_maps("details");
   for (const YamlMap& d : details) {
-    d.allow_only({"element_set", "class", "shear_class"});
+    d.allow_only({"element_set", "class", "shear_class", "curve"});
     FatigueDetail detail;
     detail.element_set = d.text("element_set");
-    detail.class_mpa = read_class(d, "class");
+    if (d.has("curve")) {
+      if (d.has("class")) throw d.error("curve", "class (a FAT class) or curve (an S-N curve file), not both", "both");  // STUDY-165
+      const std::filesystem::path file = std::filesystem::path(d.file()).parent_path() / d.text("curve");
+      detail.curve = read_sn_curve_file(file.lexically_normal().string());
+    } else {
+      detail.class_mpa = read_class(d, "class");
+    }
     if (d.has("shear_class")) detail.shear_class_mpa = read_class(d, "shear_class");
     detail.where = d.location("element_set");
     detail.where.key = d.path() + ".element_set";
@@ -128,20 +137,44 @@ fatigue::SnCurve fatigue_shear_curve(const FatigueRequest& q, double class_mpa) 
 
 std::string combination_rule(FatigueCode code) {
   if (code == FatigueCode::iiw)
-    return fmt::format("IIW Gough-Pollard on damage sums, (D_sigma)^(2/3) + (D_tau)^(2/5) <= CV = {:g} (non-proportional); a stress whose largest range is "
-                       "under {:g} % of the other's is neglected",
-                       kIiwComparisonValue, 100.0 * kIiwNeglectFraction);
+    return fmt::format("IIW Gough-Pollard on damage sums, (D_sigma)^(2/3) + (D_tau)^(2/5) <= CV, CV = {:g} where sigma and tau are proportional, "
+                       "{:g} where not; a stress whose largest range is under {:g} % of the other's is neglected",
+                       kIiwProportionalComparisonValue, kIiwNonProportionalComparisonValue, 100.0 * kIiwNeglectFraction);
   return "EN 1993-1-9 Eq. 8.3 (exponents 3 and 5 = the curves' slopes): D_sigma + D_tau <= 1";
 }
 
-double combined_damage(FatigueCode code, double ds, double dt, double normal_range, double shear_range) {
+std::string proportionality_rule(FatigueCode code) {
+  const std::string measure = fmt::format(
+      "the correlation r of sigma(t) and tau(t) over the steady window at each section point; proportional where |r| >= {:g} "
+      "(a sine pair out of phase by phi has r = cos phi)",
+      kProportionalCorrelation);
+  if (code == FatigueCode::iiw) return measure + "; a duty cycle is proportional where every scenario doing damage there is";
+  return measure + "; reported only: EN 1993-1-9 Eq. 8.3 has no CV";
+}
+
+double stress_correlation(const std::vector<double>& sigma, const std::vector<double>& tau) {
+  const std::size_t n = std::min(sigma.size(), tau.size());
+  if (n < 2) return 1.0;
+  double ms = 0.0, mt = 0.0;
+  for (std::size_t k = 0; k < n; ++k) ms += sigma[k], mt += tau[k];
+  ms /= static_cast<double>(n);
+  mt /= static_cast<double>(n);
+  double ss = 0.0, tt = 0.0, st = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double a = sigma[k] - ms, b = tau[k] - mt;
+    ss += a * a, tt += b * b, st += a * b;
+  }
+  if (!(ss > 0.0) || !(tt > 0.0)) return 1.0;
+  return std::clamp(st / std::sqrt(ss * tt), -1.0, 1.0);
+}
+
+double combined_damage(FatigueCode code, double ds, double dt, double normal_range, double shear_range, double cv) {
   if (code == FatigueCode::en1993) return ds + dt;  // F.29
   // F.28: the smaller stress neglected.
   if (!(dt > 0.0) || shear_range < kIiwNeglectFraction * normal_range) return ds;
   if (!(ds > 0.0) || normal_range < kIiwNeglectFraction * shear_range) return dt;
   // F.27: g(k) = (ds k)^(2/3) + (dt k)^(2/5) rises from 0; find g(k) = CV by bisection in log k
   // between k where each term is CV / 2 at most and k where one term alone is CV.
-  const double cv = kIiwComparisonValue;
   const auto g = [&](double k) { return std::pow(ds * k, 2.0 / 3.0) + std::pow(dt * k, 2.0 / 5.0); };
   double lo = std::log(std::min(std::pow(cv / 2, 1.5) / ds, std::pow(cv / 2, 2.5) / dt));
   double hi = std::log(std::min(std::pow(cv, 1.5) / ds, std::pow(cv, 2.5) / dt));
@@ -196,11 +229,12 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
     const double shear_cls = listed ? q.details[at->second].shear_class_mpa.value_or(q.shear_default_class_mpa) : q.shear_default_class_mpa;
     const std::string who = listed ? fmt::format("{} (details[{}])", q.details[at->second].element_set, at->second) : "default";
     if (listed) used[at->second] = true;
+    const fatigue::SnCurve* own = listed && q.details[at->second].curve ? &*q.details[at->second].curve : nullptr;
     const std::string key = fmt::format("{:.10g}|{:.10g}|{}", cls, shear_cls, who);
     auto found = curve_index.find(key);
     if (found == curve_index.end()) {
       found = curve_index.emplace(key, static_cast<int>(curves.size())).first;
-      curves.push_back(fatigue_curve(q, cls));
+      curves.push_back(own ? *own : fatigue_curve(q, cls));
       shear_curves.push_back(fatigue_shear_curve(q, shear_cls));
       out.curves.push_back(curves.back().name());
       out.shear_curves.push_back(shear_curves.back().name());
@@ -224,15 +258,16 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
   out.block_samples = steady.size();
   out.block_seconds = span * static_cast<double>(steady.size()) / static_cast<double>(steady.size() - 1);
   const double per_hour = kSecondsPerHour / out.block_seconds;
-  for (auto* table : {&out.damage_per_hour, &out.normal_damage_per_hour, &out.shear_damage_per_hour, &out.normal_max_range, &out.shear_max_range})
-    table->resize(h.stations.size());
+  const auto tables = {&out.damage_per_hour,  &out.normal_damage_per_hour, &out.shear_damage_per_hour,         &out.normal_max_range,
+                       &out.shear_max_range, &out.correlation,            &out.proportional_damage_per_hour, &out.non_proportional_damage_per_hour,
+                       &out.comparison_value};
+  for (auto* table : tables) table->resize(h.stations.size());
   std::vector<double> sigma(steady.size()), tau(steady.size()), tau_other(steady.size());
   for (std::size_t s = 0; s < h.stations.size(); ++s) {
     const std::size_t sec = static_cast<std::size_t>(h.stations[s].section);
     const fem::SectionForces fs = static_forces.empty() ? fem::SectionForces{} : static_forces.at(s);
     const std::vector<fem::SectionPoint>& points = h.points[sec];
-    for (auto* table : {&out.damage_per_hour, &out.normal_damage_per_hour, &out.shear_damage_per_hour, &out.normal_max_range, &out.shear_max_range})
-      (*table)[s].assign(points.size(), 0.0);
+    for (auto* table : tables) (*table)[s].assign(points.size(), 0.0);
     const std::size_t curve = static_cast<std::size_t>(out.curve_of_station[s]);
     for (std::size_t p = 0; p < points.size(); ++p) {
       const bool has_shear = fem::shear_direction(points[p]).norm() > 0.0;
@@ -248,18 +283,25 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
       }
       const BlockDamage normal = block_damage(sigma, curves[curve], q.mean_stress);
       BlockDamage shear;
+      double r = 1.0;  // no shear: nothing to be out of phase with
       if (has_shear) {
         shear = block_damage(tau, shear_curves[curve], fatigue::MeanStressCorrection::none());  // shear: no mean-stress effect (both codes)
+        r = stress_correlation(sigma, tau);
         if (points[p].open_wall) {  // the worse of an open wall's two faces
           const BlockDamage other = block_damage(tau_other, shear_curves[curve], fatigue::MeanStressCorrection::none());
-          if (other.damage > shear.damage) shear = other;
+          if (other.damage > shear.damage) shear = other, r = stress_correlation(sigma, tau_other);
         }
       }
       out.normal_damage_per_hour[s][p] = normal.damage * per_hour;
       out.shear_damage_per_hour[s][p] = shear.damage * per_hour;
       out.normal_max_range[s][p] = normal.max_range;
       out.shear_max_range[s][p] = shear.max_range;
-      out.damage_per_hour[s][p] = combined_damage(q.code, normal.damage * per_hour, shear.damage * per_hour, normal.max_range, shear.max_range);
+      const auto combine = [&](double cv) { return combined_damage(q.code, normal.damage * per_hour, shear.damage * per_hour, normal.max_range, shear.max_range, cv); };
+      out.correlation[s][p] = r;
+      out.comparison_value[s][p] = iiw_comparison_value(r);
+      out.proportional_damage_per_hour[s][p] = combine(kIiwProportionalComparisonValue);
+      out.non_proportional_damage_per_hour[s][p] = combine(kIiwNonProportionalComparisonValue);
+      out.damage_per_hour[s][p] = combine(out.comparison_value[s][p]);  // F.33
     }
   }
   std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_hour);
@@ -277,12 +319,11 @@ DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios) {
   const LifeMap& first = *scenarios.front().map;
   out.damage_per_cycle.resize(first.damage_per_hour.size());
   out.dominant.resize(first.damage_per_hour.size());
-  out.normal_damage_per_cycle.resize(first.damage_per_hour.size());
-  out.shear_damage_per_cycle.resize(first.damage_per_hour.size());
+  const auto tables = {&out.damage_per_cycle, &out.normal_damage_per_cycle, &out.shear_damage_per_cycle, &out.correlation,
+                       &out.comparison_value, &out.proportional_damage_per_cycle, &out.non_proportional_damage_per_cycle};
+  for (auto* table : tables) table->resize(first.damage_per_hour.size());
   for (std::size_t s = 0; s < first.damage_per_hour.size(); ++s) {
-    out.damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
-    out.normal_damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
-    out.shear_damage_per_cycle[s].assign(first.damage_per_hour[s].size(), 0.0);
+    for (auto* table : tables) (*table)[s].assign(first.damage_per_hour[s].size(), 0.0);
     out.dominant[s].assign(first.damage_per_hour[s].size(), 0);
   }
   for (const DutyScenario& sc : scenarios) {
@@ -295,18 +336,26 @@ DutyLife combine_duty_cycle(const std::vector<DutyScenario>& scenarios) {
     for (std::size_t p = 0; p < out.damage_per_cycle[s].size(); ++p) {
       // F.23 for each stress, then the code's combination of the cycle's sums (F.29); the
       // 15 % rule on the largest ranges over the scenarios.
+      // F.34: the cycle is as proportional as its least proportional scenario doing damage there.
       std::vector<double> part;
-      double normal = 0.0, shear = 0.0, normal_range = 0.0, shear_range = 0.0;
+      double normal = 0.0, shear = 0.0, normal_range = 0.0, shear_range = 0.0, r = 1.0;
       for (const DutyScenario& sc : scenarios) {
         part.push_back(sc.hours * sc.map->damage_per_hour[s][p]);
-        normal += sc.hours * damage_or_zero(sc.map->normal_damage_per_hour, sc.map->damage_per_hour, s, p);
-        shear += sc.hours * damage_or_zero(sc.map->shear_damage_per_hour, {}, s, p);
+        const double n_i = sc.hours * damage_or_zero(sc.map->normal_damage_per_hour, sc.map->damage_per_hour, s, p);
+        const double t_i = sc.hours * damage_or_zero(sc.map->shear_damage_per_hour, {}, s, p);
+        normal += n_i, shear += t_i;
         normal_range = std::max(normal_range, damage_or_zero(sc.map->normal_max_range, {}, s, p));
         shear_range = std::max(shear_range, damage_or_zero(sc.map->shear_max_range, {}, s, p));
+        const double r_i = s < sc.map->correlation.size() && p < sc.map->correlation[s].size() ? sc.map->correlation[s][p] : 0.0;  // unmeasured: not proportional
+        if (n_i + t_i > 0.0 && std::abs(r_i) < std::abs(r)) r = r_i;
       }
       out.normal_damage_per_cycle[s][p] = normal;
       out.shear_damage_per_cycle[s][p] = shear;
-      out.damage_per_cycle[s][p] = combined_damage(first.code_id, normal, shear, normal_range, shear_range);
+      out.correlation[s][p] = r;
+      out.comparison_value[s][p] = iiw_comparison_value(r);
+      out.proportional_damage_per_cycle[s][p] = combined_damage(first.code_id, normal, shear, normal_range, shear_range, kIiwProportionalComparisonValue);
+      out.non_proportional_damage_per_cycle[s][p] = combined_damage(first.code_id, normal, shear, normal_range, shear_range, kIiwNonProportionalComparisonValue);
+      out.damage_per_cycle[s][p] = combined_damage(first.code_id, normal, shear, normal_range, shear_range, out.comparison_value[s][p]);
       out.dominant[s][p] = static_cast<int>(stable_argmax(part));
     }
   std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_cycle);

@@ -10,9 +10,12 @@
 // and the signed shear stress along the point's wall (torsion + transverse shear,
 // fem::signed_shear, F.26) on the code's shear curve (IIW FAT80/100 m = 5; EN 1993-1-9
 // delta tau_C, m = 5, cut-off at 1e8), combined as the code says (section 10, F.27-F.29):
-// IIW Gough-Pollard on the damage sums with CV = 0.5 (non-proportional), the smaller
+// IIW Gough-Pollard on the damage sums with CV = 1.0 where sigma(t) and tau(t) are
+// proportional and 0.5 where they are not (section 12, F.32-F.33: proportional when the
+// correlation of the two histories over the steady window has |r| >= 0.95), the smaller
 // stress neglected when its largest range is under 15 % of the other's; EN 1993-1-9 the
-// sum of the two damage ratios. The life map and the life use the combined damage.
+// sum of the two damage ratios. The life map and the life use the combined damage; the
+// damage under both CVs is kept at every point.
 //
 // A duty cycle (F.23-F.25): scenarios i with hours H_i, each a life map per hour d_h,i;
 // the damage over the cycle D = sum_i H_i d_h,i (Miner: damage adds), the life in
@@ -24,7 +27,8 @@
 //     code: IIW                     # IIW (2016) | EN1993 (EN 1993-1-9)
 //     default: FAT71                # FAT class / detail category of sets not listed (MPa)
 //     shear_default: FAT80          # shear FAT class / delta tau_C of sets not listed (MPa)
-//     details: [{element_set: LEFT_RAIL, class: FAT80, shear_class: FAT100}]   # first listed set holding an element wins
+//     details: [{element_set: LEFT_RAIL, class: FAT80, shear_class: FAT100}]   # first listed set holding an element wins;
+//                                   # curve: FILE.yaml (an S-N curve file, relative to the study) instead of class
 //     mean_stress: none             # none (as-welded) | goodman (with ultimate_strength)
 //     ultimate_strength: 58000      # stress, Goodman only
 //     thickness: 0.5                # length: wall thickness for the thickness correction (none at <= 25 mm)
@@ -32,6 +36,7 @@
 //     hours: 1000                   # h: the damage reported is over this many hours
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +57,9 @@ struct FatigueDetail {
   double class_mpa = 71.0;     // FAT class / detail category: the normal stress range at 2e6 cycles, MPa
   std::optional<double> shear_class_mpa;  // the shear range at 2e6 cycles, MPa; nullopt: the request's shear default
   core::InputLocation where = {};  // for messages about the set
+  // A user curve from an S-N curve file (details[i].curve, coupling/sn_curve_file.h) instead of
+  // class_mpa: used as it is (no thickness correction: the file's curve holds its own).
+  std::optional<fatigue::SnCurve> curve = std::nullopt;
 };
 
 struct FatigueRequest {
@@ -73,17 +81,31 @@ fatigue::SnCurve fatigue_curve(const FatigueRequest& request, double class_mpa);
 // The code's shear S-N curve of a class (no thickness correction: both codes apply it to normal stress).
 fatigue::SnCurve fatigue_shear_curve(const FatigueRequest& request, double class_mpa);
 
-// IIW's comparison value CV for non-proportional normal and shear stress (IIW 2016, combined normal and shear stress, steel).
-inline constexpr double kIiwComparisonValue = 0.5;
+// IIW's comparison values CV for normal and shear stress of steel (IIW 2016, combined normal
+// and shear stress): 1.0 when they are proportional, 0.5 when they are not.
+inline constexpr double kIiwProportionalComparisonValue = 1.0;
+inline constexpr double kIiwNonProportionalComparisonValue = 0.5;
+// sigma(t) and tau(t) count as proportional where their correlation has |r| at least this
+// (F.33; a sine pair shifted by phi has r = cos phi: 0.95 admits |phi| <= 18.2 degrees).
+inline constexpr double kProportionalCorrelation = 0.95;
+// The correlation coefficient r of two histories of the same length (F.32); 1 when either
+// does not vary (a single varying stress is proportional to nothing but itself).
+double stress_correlation(const std::vector<double>& sigma, const std::vector<double>& tau);
+// The CV the IIW combination applies at a point of correlation r (F.33).
+inline double iiw_comparison_value(double correlation) {
+  return std::abs(correlation) >= kProportionalCorrelation ? kIiwProportionalComparisonValue : kIiwNonProportionalComparisonValue;
+}
 // IIW: a stress whose largest range is under this fraction of the other's is neglected.
 inline constexpr double kIiwNeglectFraction = 0.15;
 // The combined damage of a normal and a shear damage sum over the same period (F.27-F.29):
 // the period over the life the combination allows. IIW: the number of periods k at which
 // (D_s k)^(2/3) + (D_t k)^(2/5) = CV, returned as 1 / k, or the one sum alone when the other
 // stress's largest range is under 15 % of its own; EN 1993-1-9: D_s + D_t. Ranges in Pa.
-double combined_damage(FatigueCode code, double normal_damage, double shear_damage, double normal_max_range, double shear_max_range);
-// How the combination is taken, for reports.
+double combined_damage(FatigueCode code, double normal_damage, double shear_damage, double normal_max_range, double shear_max_range,
+                       double comparison_value = kIiwNonProportionalComparisonValue);
+// How the combination is taken, for reports; and how proportionality is measured.
 std::string combination_rule(FatigueCode code);
+std::string proportionality_rule(FatigueCode code);
 // "IIW 2016 (Hobbacher, IIW-2259-15)" or "EN 1993-1-9:2005".
 std::string fatigue_code_name(FatigueCode code);
 
@@ -103,6 +125,11 @@ struct LifeMap {
   std::vector<std::vector<double>> damage_per_hour;
   std::vector<std::vector<double>> normal_damage_per_hour, shear_damage_per_hour;
   std::vector<std::vector<double>> normal_max_range, shear_max_range;
+  // Proportionality (F.32, F.33): the correlation r of sigma(t) and tau(t) (the face whose
+  // shear damage is kept), the CV applied, and the damage per hour under each IIW CV
+  // (both equal to damage_per_hour under EN 1993-1-9, which has no CV).
+  std::vector<std::vector<double>> correlation, comparison_value;
+  std::vector<std::vector<double>> proportional_damage_per_hour, non_proportional_damage_per_hour;
   // The location of the largest damage per hour (ties to the lowest station, then point).
   std::size_t worst_station = 0;
   int worst_point = 0;
@@ -129,6 +156,10 @@ struct DutyLife {
   std::vector<std::vector<double>> damage_per_cycle;  // D per station and point (F.23), normal and shear combined (F.29)
   std::vector<std::vector<double>> normal_damage_per_cycle, shear_damage_per_cycle;  // sum H_i d_h,i of each stress
   std::vector<std::vector<int>> dominant;             // the scenario index doing most (combined) damage there
+  // Proportionality over the cycle (F.34): the correlation of the least proportional scenario
+  // doing damage there, the CV applied, and the cycle's damage under each IIW CV.
+  std::vector<std::vector<double>> correlation, comparison_value;
+  std::vector<std::vector<double>> proportional_damage_per_cycle, non_proportional_damage_per_cycle;
   std::size_t worst_station = 0;
   int worst_point = 0;
   // Life in hours of the duty cycle at a location: cycle_hours / D (infinite for D = 0).

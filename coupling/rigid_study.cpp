@@ -45,6 +45,24 @@ rigid::Tire2D tire(const YamlMap& m) {
   return t;
 }
 
+// F.30 in 2-D (docs/theory/fatigue.md section 11): a road input without `behind` runs
+// behind = x_tire - x_front behind the front axle (X grows rearward): the wheelbase for the
+// rear tire, 0 for the front one. A rear tire ahead of the front one needs `behind` (STUDY-160).
+void derive_road_delays(rigid::Machine2DParameters& p, const YamlMap& tires) {
+  const double x_front = p.front_tire.contact.x();
+  const double scale = std::max({1.0, std::abs(x_front), std::abs(p.rear_tire.contact.x())});
+  for (const auto& [axle, t] : {std::pair("front", &p.front_tire), std::pair("rear", &p.rear_tire)})
+    for (const auto& [key, input] : {std::pair("normal_input", &t->normal_input), std::pair("tractive_input", &t->tractive_input)}) {
+      if (input->kind != rigid::GroundInput::Kind::road || input->behind_given) continue;
+      const double behind = t->contact.x() - x_front;
+      if (behind < -1e-9 * scale)
+        throw tires.map(axle).map(key).error(
+            "", "a rear tire on or behind the front tire (contact X >= the front tire's X, X growing rearward) to derive its road delay, or 'behind'",
+            fmt::format("contact X {} ahead of the front tire's {}", tires.map(axle).node()["contact"][0].Scalar(), tires.map("front").node()["contact"][0].Scalar()));
+      input->behind = std::max(0.0, behind);
+    }
+}
+
 rigid::CabMount mount(const YamlMap& m) {
   m.allow_only({"position", "stiffness", "damping"});
   return {m.point("position"), {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)}};
@@ -217,6 +235,7 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
   tires.allow_only({"front", "rear"});
   p.front_tire = tire(tires.map("front"));
   p.rear_tire = tire(tires.map("rear"));
+  derive_road_delays(p, tires);
 
   if (auto soil = attachment_block(root, "soil", p.attachment != rigid::Attachment::none, "no soil data without an attachment", "a soil map")) {
     soil->allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference"});

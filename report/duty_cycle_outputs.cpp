@@ -72,7 +72,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
   // life_map.csv
   std::vector<std::string> header = {"output", "element", "station", column("X", L), column("Y", L), column("Z", L), "point",
                                      "sn_curve", column("damage_per_cycle", "1"), column("life", "h"), "dominant",
-                                     column("normal_damage_per_cycle", "1"), column("shear_damage_per_cycle", "1")};
+                                     column("normal_damage_per_cycle", "1"), column("shear_damage_per_cycle", "1"),
+                                     "sigma_tau_correlation", "comparison_value", column("life_cv_1", "h"), column("life_cv_0.5", "h")};
   for (const auto& s : r.scenarios) header.push_back(column("damage_per_hour " + s.name, "1/h"));
   CsvTable t(header);
   for (std::size_t s = 0; s < h.stations.size(); ++s) {
@@ -84,7 +85,10 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
           .add(first.frame.life->curves[static_cast<std::size_t>(first.frame.life->curve_of_station[s])]).add(life.damage_per_cycle[s][p])
           .add(std::isfinite(l) ? fmt::format("{:.6g}", l) : std::string())
           .add(life.damage_per_cycle[s][p] > 0.0 ? r.scenarios[static_cast<std::size_t>(life.dominant[s][p])].name : std::string())
-          .add(life.normal_damage_per_cycle[s][p]).add(life.shear_damage_per_cycle[s][p]);
+          .add(life.normal_damage_per_cycle[s][p]).add(life.shear_damage_per_cycle[s][p]).add(life.correlation[s][p])
+          .add(first.frame.life->code_id == coupling::FatigueCode::iiw ? fmt::format("{:g}", life.comparison_value[s][p]) : std::string())
+          .add(life_text(life.cycle_hours, life.proportional_damage_per_cycle[s][p]))
+          .add(life_text(life.cycle_hours, life.non_proportional_damage_per_cycle[s][p]));
       for (const auto& sc : r.scenarios) t.add(sc.frame.life->damage_per_hour[s][p]);
     }
   }
@@ -136,6 +140,11 @@ ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCyc
   fat["damage_per_cycle"] = d_cycle;
   fat["damage_per_cycle_parts"] = damage_parts(life.normal_damage_per_cycle.at(ws).empty() ? 0.0 : life.normal_damage_per_cycle[ws][static_cast<std::size_t>(wp)],
                                                life.shear_damage_per_cycle.at(ws).empty() ? 0.0 : life.shear_damage_per_cycle[ws][static_cast<std::size_t>(wp)], d_cycle, "1");
+  if (!life.correlation.at(ws).empty()) {
+    const std::size_t p = static_cast<std::size_t>(wp);
+    fat["proportionality"] = proportionality_summary(first.frame.life->code_id, life.correlation[ws][p], life.comparison_value[ws][p],
+                                                     life.proportional_damage_per_cycle[ws][p], life.non_proportional_damage_per_cycle[ws][p], life.cycle_hours);
+  }
   fat["mean_stress"] = q.fatigue.mean_stress.describe();
   ordered_json assumed = ordered_json::array();
   const coupling::LifeMap& m = *first.frame.life;

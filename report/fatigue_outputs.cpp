@@ -23,7 +23,30 @@ double life_of(double damage_per_hour) { return damage_per_hour > 0.0 ? 1.0 / da
 // An empty cell for a point without damage (every cycle below the cut-off): framedyn writes no "inf".
 std::string life_text(double life) { return std::isfinite(life) ? fmt::format("{:.6g}", life) : ""; }
 
+ordered_json life_value(double hours_per_damage, double damage) {
+  return damage > 0.0 ? ordered_json(hours_per_damage / damage) : ordered_json(nullptr);
+}
+
 }  // namespace
+
+std::string life_text(double hours_per_damage, double damage) { return damage > 0.0 ? life_text(hours_per_damage / damage) : std::string(); }
+
+std::string comparison_value_reason(coupling::FatigueCode code, double r, double cv) {
+  if (code != coupling::FatigueCode::iiw) return fmt::format("no CV (EN 1993-1-9 adds the damage sums); |r| = {:.3f}", std::abs(r));
+  return fmt::format("CV {:g} (|r| = {:.3f} {} {:g}: {})", cv, std::abs(r), cv == coupling::kIiwProportionalComparisonValue ? ">=" : "<",
+                     coupling::kProportionalCorrelation, cv == coupling::kIiwProportionalComparisonValue ? "proportional" : "not proportional");
+}
+
+ordered_json proportionality_summary(coupling::FatigueCode code, double r, double cv, double d_prop, double d_non, double hours_per_damage) {
+  ordered_json j;
+  j["measure"] = coupling::proportionality_rule(code);
+  j["correlation"] = r;
+  j["comparison_value"] = code == coupling::FatigueCode::iiw ? ordered_json(cv) : ordered_json(nullptr);
+  j["why"] = comparison_value_reason(code, r, cv);
+  j["life_proportional"] = {{"value", life_value(hours_per_damage, d_prop)}, {"unit", "h"}, {"comparison_value", coupling::kIiwProportionalComparisonValue}};
+  j["life_non_proportional"] = {{"value", life_value(hours_per_damage, d_non)}, {"unit", "h"}, {"comparison_value", coupling::kIiwNonProportionalComparisonValue}};
+  return j;
+}
 
 ordered_json damage_parts(double normal, double shear, double combined, const std::string& unit) {
   return {{"normal", normal}, {"shear", shear}, {"combined", combined}, {"unit", unit}};
@@ -35,7 +58,8 @@ void write_life_map(const coupling::FrameStudyResults& r, const coupling::FrameS
   const core::UnitSystem& u = q.units;
   CsvTable t({"output", "element", "station", column("X", u.label(Quantity::length)), column("Y", u.label(Quantity::length)),
               column("Z", u.label(Quantity::length)), "point", "sn_curve", "shear_sn_curve", column("damage_per_hour", "1/h"), column("life", "h"),
-              fmt::format("damage in {:g} h", q.fatigue->hours), column("normal_damage_per_hour", "1/h"), column("shear_damage_per_hour", "1/h")});
+              fmt::format("damage in {:g} h", q.fatigue->hours), column("normal_damage_per_hour", "1/h"), column("shear_damage_per_hour", "1/h"),
+              "sigma_tau_correlation", "comparison_value", column("life_cv_1", "h"), column("life_cv_0.5", "h")});
   for (std::size_t s = 0; s < r.stress.stations.size(); ++s) {
     const coupling::StressStation& st = r.stress.stations[s];
     const auto& points = r.stress.points[static_cast<std::size_t>(st.section)];
@@ -44,7 +68,9 @@ void write_life_map(const coupling::FrameStudyResults& r, const coupling::FrameS
       t.row().add(st.set).add(st.element_id).add(st.station).add(u.from_si(st.point.x(), Quantity::length))
           .add(u.from_si(st.point.y(), Quantity::length)).add(u.from_si(st.point.z(), Quantity::length)).add(points[p].name)
           .add(m.curves[static_cast<std::size_t>(m.curve_of_station[s])]).add(m.shear_curves[static_cast<std::size_t>(m.curve_of_station[s])])
-          .add(d).add(life_text(life_of(d))).add(d * q.fatigue->hours).add(m.normal_damage_per_hour[s][p]).add(m.shear_damage_per_hour[s][p]);
+          .add(d).add(life_text(life_of(d))).add(d * q.fatigue->hours).add(m.normal_damage_per_hour[s][p]).add(m.shear_damage_per_hour[s][p])
+          .add(m.correlation[s][p]).add(m.code_id == coupling::FatigueCode::iiw ? fmt::format("{:g}", m.comparison_value[s][p]) : std::string())
+          .add(life_text(1.0, m.proportional_damage_per_hour[s][p])).add(life_text(1.0, m.non_proportional_damage_per_hour[s][p]));
     }
   }
   folder.write_text("life_map.csv", t.str());
@@ -94,6 +120,11 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
   j["damage_per_hour"] = {{"value", d}, {"unit", "1/h"}};
   j["damage_per_hour_parts"] = damage_parts(m.normal_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)],
                                             m.shear_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)], d, "1/h");
+  {
+    const std::size_t ws = m.worst_station, wp = static_cast<std::size_t>(m.worst_point);
+    j["proportionality"] = proportionality_summary(m.code_id, m.correlation[ws][wp], m.comparison_value[ws][wp], m.proportional_damage_per_hour[ws][wp],
+                                                   m.non_proportional_damage_per_hour[ws][wp], 1.0);
+  }
   j["damage"] = {{"value", d * q.fatigue->hours}, {"hours", q.fatigue->hours}};
   j["mean_stress"] = q.fatigue->mean_stress.describe();
   j["block"] = {{"seconds", m.block_seconds}, {"samples", m.block_samples}, {"residue", "repeated block (closed at the absolute maximum)"}};

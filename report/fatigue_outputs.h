@@ -22,6 +22,17 @@ inline constexpr const char* kStressDescription =
 // {normal, shear, combined, unit}: the damage of each stress alone and combined.
 nlohmann::ordered_json damage_parts(double normal, double shear, double combined, const std::string& unit);
 
+// {measure, correlation, comparison_value, why, life_proportional {value, unit: h, cv},
+// life_non_proportional {...}}: which IIW CV was applied at a location and why, and the life
+// under each (F.32-F.34); `damage_proportional` / `damage_non_proportional` over `hours_per_damage`
+// hours (1 for a damage per hour, the cycle's hours for a damage per cycle).
+nlohmann::ordered_json proportionality_summary(coupling::FatigueCode code, double correlation, double comparison_value, double damage_proportional,
+                                               double damage_non_proportional, double hours_per_damage);
+// "CV 1 (|r| = 0.998 >= 0.95: proportional)": why a CV was applied.
+std::string comparison_value_reason(coupling::FatigueCode code, double correlation, double comparison_value);
+// An empty cell for an unlimited life (no damage): framedyn writes no "inf".
+std::string life_text(double hours_per_damage, double damage);
+
 // Nothing without results.life.
 void write_life_map(const coupling::FrameStudyResults& results, const coupling::FrameStudyRequest& request, const core::ResultsFolder& folder);
 // summary.json's "fatigue": code, hours, min_life {value, unit: h, element, station, point, set, X},

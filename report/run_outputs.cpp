@@ -1,6 +1,7 @@
 // rigid.contacts and the warnings list of summary.json: see run_outputs.h.
 #include "report/run_outputs.h"
 
+#include "report/fatigue_outputs.h"
 #include "report/json_quantity.h"
 
 #include <fmt/format.h>
@@ -101,6 +102,9 @@ void print_fatigue_line(const coupling::FrameStudyResults& f, const coupling::Fr
   const std::size_t wp = static_cast<std::size_t>(m.worst_point);
   fmt::print("  there: normal stress alone {:.3g}/h, shear alone {:.3g}/h, combined {:.3g}/h ({})\n", m.normal_damage_per_hour[m.worst_station][wp],
              m.shear_damage_per_hour[m.worst_station][wp], d, coupling::combination_rule(m.code_id));
+  fmt::print("  proportionality there: {}; life under CV 1 {} h, under CV 0.5 {} h\n",
+             comparison_value_reason(m.code_id, m.correlation[m.worst_station][wp], m.comparison_value[m.worst_station][wp]),
+             life_text(1.0, m.proportional_damage_per_hour[m.worst_station][wp]), life_text(1.0, m.non_proportional_damage_per_hour[m.worst_station][wp]));
   // Which detail categories were assumed where (normal and shear curves).
   for (std::size_t c = 0; c < m.curves.size(); ++c) {
     std::size_t n = 0;

@@ -26,6 +26,7 @@
 #include "fem/beam_section.h"
 #include "fem/section_stress.h"
 #include "report/frame_outputs.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -272,6 +273,32 @@ TEST(FatigueLifeMap, FatClassPerElementSetFirstListedSetWinsElseTheDefault) {
   EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"RIGHT", 90.0, {}}})), framedyn::core::InputError);
   model.element_sets["CROSS"] = {7};
   EXPECT_THROW(coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({{"CROSS", 90.0, {}}})), framedyn::core::InputError);
+  // A detail's own curve (an S-N curve file's, here built in place): Basquin m = 3 through 90 MPa
+  // at 2e6 (C = 2e6 * 90^3) gives FAT90's damage at 120 MPa (above its knee), a class being ignored.
+  coupling::FatigueDetail own{"left", 1.0, {}};
+  own.curve = framedyn::fatigue::basquin_curve(2e6 * 90.0 * 90.0 * 90.0, 3.0, "file curve");
+  const coupling::LifeMap with_curve = coupling::frame_life_map(model, h, {}, {0.0, "test"}, fatigue_request({own}));
+  EXPECT_NEAR(with_curve.damage_per_hour[0][0] / d71, std::pow(71.0 / 90.0, 3), 1e-9);
+  EXPECT_EQ(with_curve.curves[static_cast<std::size_t>(with_curve.curve_of_station[0])], own.curve->name());
+}
+
+// The fatigue block's details[i].curve: an S-N curve file relative to the study file, its
+// curve used instead of a class. Reference 200 MPa at 1e5, m = 3 to 4e5 then m = 5:
+// N(100 MPa) = 4e5 (2 * 4^(-1/3))^5 (by hand); class and curve together are refused (STUDY-165).
+TEST(FatigueLifeMap, DetailCurveFromAFileBesideTheStudyGivesTheHandCyclesToFailure) {
+  const framedyn::testing::TempDir dir;
+  dir.write("curves/weld.yaml", "name: weld\nreference: {range: 200, cycles: 1e5}\nslopes: [3, 5]\nknees: [4e5]\n");
+  const auto block = [&](const std::string& text) {
+    static const framedyn::core::UnitSystem si = framedyn::core::UnitSystem::si();
+    return coupling::read_fatigue_block(coupling::YamlMap(YAML::Load(text), "frame.fatigue", (dir / "study.yaml").string(), &si));
+  };
+  const coupling::FatigueRequest q = block("details: [{element_set: LEFT, curve: curves/weld.yaml}]");
+  ASSERT_EQ(q.details.size(), 1u);
+  ASSERT_TRUE(q.details[0].curve.has_value());
+  const double n = 4e5 * std::pow(2.0 * std::pow(4.0, -1.0 / 3.0), 5);
+  EXPECT_NEAR(q.details[0].curve->cycles_to_failure(100e6), n, 1e-12 * n);
+  EXPECT_NE(q.details[0].curve->name().find("weld"), std::string::npos);
+  EXPECT_THROW(block("details: [{element_set: LEFT, class: FAT80, curve: curves/weld.yaml}]"), framedyn::core::InputError);
 }
 
 // Two scenarios' maps with hours: the cycle's damage is sum H_i d_i at every location (Miner),
@@ -298,53 +325,100 @@ TEST(FatigueLifeMap, DutyCycleDamagesAddWithHoursAndOneScenarioIsTheRunScaled) {
   EXPECT_EQ(one.worst_point, la.worst_point);
 }
 
-// Shear in the damage (docs/theory/fatigue.md section 10, F.26-F.29): a BOX under a
-// constant-amplitude bending moment My and torque T in phase, 1 Hz, a steady block of
-// 5 cycles in 5 s (3600 cycles an hour). At mid-side +2 (top wall): sigma = My (b/2) / I11
-// with range 120 MPa on IIW FAT71 (m = 3): N_s = 2e6 (71/120)^3 = 414,262; the top wall's
-// Bredt-Batho shear tau = T / (2 A_m t) with a range chosen so that N_t = 4 N_s on IIW FAT80
-// shear (m = 5): delta tau = 80 (N_t / 2e6)^(-1/5) = 83.07 MPa. So d_t = d_s / 4 and
-// Gough-Pollard with CV = 0.5, (d_s L)^(2/3) + (d_t L)^(2/5) = 0.5, holds at d_s L = 1/8
-// (1/4 + 1/4): L = N_s / (8 * 3600) h = 14.38 h, against 115.1 h from the normal stress alone.
-// EN 1993-1-9 (the same N_s and N_t on its curves, both above their knees): L = 1 / (d_s + d_t)
-// = N_s / (1.25 * 3600) h.
-TEST(FatigueLifeMap, TorsionAndBendingCombineByGoughPollardUnderIiwAndByDamageSumUnderEn1993) {
+// Shear in the damage (docs/theory/fatigue.md sections 10 and 12, F.26-F.33): a BOX under a
+// constant-amplitude bending moment My and a torque T, 1 Hz, a steady block of 5 cycles in
+// 5 s (3600 cycles an hour), the torque in phase with the moment (phase 0) or a quarter
+// period behind (phase pi/2). At mid-side +2 (top wall): sigma = My (b/2) / I11 with range
+// 120 MPa on IIW FAT71 (m = 3): N_s = 2e6 (71/120)^3 = 414,262; the top wall's Bredt-Batho
+// shear tau = T / (2 A_m t) with a range chosen so that N_t = ratio N_s on IIW FAT80 shear
+// (m = 5): delta tau = 80 (N_t / 2e6)^(-1/5) MPa.
+struct TorsionAndBending {
+  coupling::StressHistories h;
+  std::size_t top = 0;
+  double n_s = 0.0, n_t = 0.0, range_t = 0.0;
+};
+TorsionAndBending torsion_and_bending(double ratio, double phase) {
   const double a = 0.1, b = 0.1, t = 0.005;
   const fem::SectionProperties box = fem::box_section(a, b, t, t, t, t);
   const double area_m = (a - t) * (b - t);
-  const double n_s = 2e6 * std::pow(71.0 / 120.0, 3), n_t = 4.0 * n_s;
-  const double range_t = 80e6 * std::pow(n_t / 2e6, -0.2);
-  const double moment = 60e6 * box.i11 / (b / 2), torque = 0.5 * range_t * 2.0 * area_m * t;
-  coupling::StressHistories h;
+  TorsionAndBending c;
+  c.n_s = 2e6 * std::pow(71.0 / 120.0, 3);
+  c.n_t = ratio * c.n_s;
+  c.range_t = 80e6 * std::pow(c.n_t / 2e6, -0.2);
+  const double moment = 60e6 * box.i11 / (b / 2), torque = 0.5 * c.range_t * 2.0 * area_m * t;
+  coupling::StressHistories& h = c.h;
   h.sections = {box};
   h.points = {fem::section_points(box)};
   h.times = Eigen::VectorXd::LinSpaced(1000, 0.0, 9.99);
   h.forces = Eigen::MatrixXf::Zero(6, 1000);
   h.stations.push_back({"rail", 100, 0, Eigen::Vector3d::Zero(), 0});
   for (int j = 0; j < 1000; ++j) {
-    const double wave = std::sin(2 * 3.14159265358979 * h.times(j));
-    h.forces(3, j) = static_cast<float>(torque * wave);
-    h.forces(4, j) = static_cast<float>(moment * wave);
+    const double w = 2 * 3.14159265358979 * h.times(j);
+    h.forces(3, j) = static_cast<float>(torque * std::sin(w - phase));
+    h.forces(4, j) = static_cast<float>(moment * std::sin(w));
   }
-  std::size_t top = 0;
-  while (top < h.points[0].size() && h.points[0][top].name != "mid-side +2") ++top;
-  ASSERT_LT(top, h.points[0].size());
-  const double d_s = 3600.0 / n_s, d_t = 3600.0 / n_t;
-  const coupling::LifeMap iiw = coupling::frame_life_map(fem::FrameModel{}, h, {}, {5.0, "test"}, fatigue_request());
+  while (c.top < h.points[0].size() && h.points[0][c.top].name != "mid-side +2") ++c.top;
+  return c;
+}
+
+// In phase, tau = k sigma: proportional (r = 1), so IIW's CV = 1.0. With N_t = 2 N_s,
+// d_t = d_s / 2 and (d_s L)^(2/3) + (d_t L)^(2/5) = 1 holds with both terms 1/2:
+// d_s L = 2^(-3/2), L = N_s 2^(-3/2) / 3600 h = 40.69 h (against 115.1 h from sigma alone).
+// The CV = 0.5 damage is reported too, and solves F.27 with 0.5.
+TEST(FatigueLifeMap, ProportionalTorsionAndBendingTakeIiwCvOneWithTheHandLife) {
+  const TorsionAndBending c = torsion_and_bending(2.0, 0.0);
+  ASSERT_LT(c.top, c.h.points[0].size());
+  const coupling::LifeMap iiw = coupling::frame_life_map(fem::FrameModel{}, c.h, {}, {5.0, "test"}, fatigue_request());
+  const std::size_t top = c.top;
+  const double d_s = 3600.0 / c.n_s, d_t = 3600.0 / c.n_t;
+  EXPECT_NEAR(iiw.normal_damage_per_hour[0][top], d_s, 1e-5 * d_s);
+  EXPECT_NEAR(iiw.shear_damage_per_hour[0][top], d_t, 1e-5 * d_t);
+  EXPECT_NEAR(iiw.correlation[0][top], 1.0, 1e-6);
+  EXPECT_EQ(iiw.comparison_value[0][top], 1.0);
+  const double life = c.n_s * std::pow(2.0, -1.5) / 3600.0;
+  EXPECT_NEAR(1.0 / iiw.damage_per_hour[0][top], life, 1e-5 * life);
+  EXPECT_EQ(iiw.damage_per_hour[0][top], iiw.proportional_damage_per_hour[0][top]);
+  // Under CV = 0.5 the same sums last k periods with (d_s k)^(2/3) + (d_t k)^(2/5) = 0.5.
+  const double k = 1.0 / iiw.non_proportional_damage_per_hour[0][top];
+  const double ds = iiw.normal_damage_per_hour[0][top], dt = iiw.shear_damage_per_hour[0][top];
+  EXPECT_NEAR(std::pow(ds * k, 2.0 / 3.0) + std::pow(dt * k, 2.0 / 5.0), 0.5, 1e-12);
+  std::cout << "[ measured ] in phase: r " << iiw.correlation[0][top] << ", CV " << iiw.comparison_value[0][top] << ", life "
+            << 1.0 / iiw.damage_per_hour[0][top] << " h (hand " << life << "), under CV 0.5 " << k << " h\n";
+  // A duty cycle of this one scenario is proportional too.
+  const coupling::DutyLife duty = coupling::combine_duty_cycle({{"in phase", 10.0, &iiw}});
+  EXPECT_EQ(duty.comparison_value[0][top], 1.0);
+  EXPECT_NEAR(duty.life_hours(0, static_cast<int>(top)), life, 1e-5 * life);
+}
+
+// A quarter period out of phase: r = cos(pi/2) = 0, not proportional, CV = 0.5. With N_t = 4 N_s,
+// d_t = d_s / 4 and F.27 holds at d_s L = 1/8 (1/4 + 1/4 = 0.5): L = N_s / (8 * 3600) h = 14.38 h.
+// EN 1993-1-9 has no CV (both codes' curves above their knees): L = N_s / (1.25 * 3600) h.
+TEST(FatigueLifeMap, TorsionAQuarterPeriodOutOfPhaseTakesIiwCvHalfAndEn1993TheDamageSum) {
+  const TorsionAndBending c = torsion_and_bending(4.0, 3.14159265358979 / 2);
+  ASSERT_LT(c.top, c.h.points[0].size());
+  const std::size_t top = c.top;
+  const double d_s = 3600.0 / c.n_s, d_t = 3600.0 / c.n_t;
+  const coupling::LifeMap iiw = coupling::frame_life_map(fem::FrameModel{}, c.h, {}, {5.0, "test"}, fatigue_request());
   EXPECT_NEAR(iiw.normal_damage_per_hour[0][top], d_s, 1e-5 * d_s);
   EXPECT_NEAR(iiw.shear_damage_per_hour[0][top], d_t, 1e-5 * d_t);
   EXPECT_NEAR(iiw.normal_max_range[0][top], 120e6, 1e-5 * 120e6);
-  EXPECT_NEAR(iiw.shear_max_range[0][top], range_t, 1e-5 * range_t);
-  const double life_iiw = n_s / (8.0 * 3600.0);
+  EXPECT_NEAR(iiw.shear_max_range[0][top], c.range_t, 1e-5 * c.range_t);
+  EXPECT_NEAR(iiw.correlation[0][top], 0.0, 1e-6);
+  EXPECT_EQ(iiw.comparison_value[0][top], 0.5);
+  const double life_iiw = c.n_s / (8.0 * 3600.0);
   EXPECT_NEAR(1.0 / iiw.damage_per_hour[0][top], life_iiw, 1e-5 * life_iiw);
-  std::cout << "[ measured ] mid-side +2: d_normal " << iiw.normal_damage_per_hour[0][top] << " /h (hand " << d_s << "), d_shear "
-            << iiw.shear_damage_per_hour[0][top] << " /h (hand " << d_t << "); IIW life " << 1.0 / iiw.damage_per_hour[0][top] << " h (hand "
-            << life_iiw << "), normal alone " << 1.0 / d_s << " h\n";
+  EXPECT_EQ(iiw.damage_per_hour[0][top], iiw.non_proportional_damage_per_hour[0][top]);
+  EXPECT_LT(iiw.proportional_damage_per_hour[0][top], iiw.damage_per_hour[0][top]);
+  std::cout << "[ measured ] a quarter period apart: r " << iiw.correlation[0][top] << ", CV " << iiw.comparison_value[0][top] << ", life "
+            << 1.0 / iiw.damage_per_hour[0][top] << " h (hand " << life_iiw << "), under CV 1 " << 1.0 / iiw.proportional_damage_per_hour[0][top]
+            << " h, normal alone " << 1.0 / d_s << " h\n";
   coupling::FatigueRequest en = fatigue_request();
   en.code = coupling::FatigueCode::en1993;
-  const coupling::LifeMap en_map = coupling::frame_life_map(fem::FrameModel{}, h, {}, {5.0, "test"}, en);
-  const double life_en = n_s / (1.25 * 3600.0);
+  const coupling::LifeMap en_map = coupling::frame_life_map(fem::FrameModel{}, c.h, {}, {5.0, "test"}, en);
+  const double life_en = c.n_s / (1.25 * 3600.0);
   EXPECT_NEAR(1.0 / en_map.damage_per_hour[0][top], life_en, 1e-5 * life_en);
+  EXPECT_EQ(en_map.proportional_damage_per_hour[0][top], en_map.damage_per_hour[0][top]);
+  EXPECT_EQ(en_map.non_proportional_damage_per_hour[0][top], en_map.damage_per_hour[0][top]);
   // A shear range under 15 % of the normal one is neglected under IIW: the normal damage alone.
   EXPECT_DOUBLE_EQ(coupling::combined_damage(coupling::FatigueCode::iiw, 2e-3, 1e-9, 100e6, 14.9e6), 2e-3);
   EXPECT_DOUBLE_EQ(coupling::combined_damage(coupling::FatigueCode::iiw, 1e-9, 2e-3, 14.9e6, 100e6), 2e-3);
@@ -354,6 +428,31 @@ TEST(FatigueLifeMap, TorsionAndBendingCombineByGoughPollardUnderIiwAndByDamageSu
   const double life_map = 1.0 / iiw.damage_per_hour[0][top];
   EXPECT_NEAR(duty.life_hours(0, static_cast<int>(top)), life_map, 1e-12 * life_map);
   EXPECT_NEAR(duty.normal_damage_per_cycle[0][top], 10.0 * iiw.normal_damage_per_hour[0][top], 1e-12 * duty.normal_damage_per_cycle[0][top]);
+  EXPECT_EQ(duty.comparison_value[0][top], 0.5);
+  // The cycle is as proportional as its least proportional damaging scenario.
+  const TorsionAndBending in_phase = torsion_and_bending(4.0, 0.0);
+  const coupling::LifeMap iiw_in_phase = coupling::frame_life_map(fem::FrameModel{}, in_phase.h, {}, {5.0, "test"}, fatigue_request());
+  EXPECT_EQ(iiw_in_phase.comparison_value[0][top], 1.0);
+  const coupling::DutyLife mixed = coupling::combine_duty_cycle({{"in phase", 10.0, &iiw_in_phase}, {"out of phase", 1.0, &iiw}});
+  EXPECT_EQ(mixed.comparison_value[0][top], 0.5);
+  EXPECT_NEAR(mixed.correlation[0][top], iiw.correlation[0][top], 1e-12);
+}
+
+// The correlation measure (F.32): sine pairs out of phase by phi give r = cos phi over whole periods;
+// a constant history is proportional to anything; the threshold |r| >= 0.95 is the CV's switch.
+TEST(FatigueLifeMap, CorrelationOfSinePairsIsTheCosineOfTheirPhaseAndSwitchesTheCvAtPointNineFive) {
+  for (double phi_deg : {0.0, 10.0, 18.0, 19.0, 45.0, 90.0, 180.0}) {
+    std::vector<double> sigma(400), tau(400);
+    for (std::size_t k = 0; k < sigma.size(); ++k) {
+      const double w = 2 * 3.14159265358979 * static_cast<double>(k) / 100.0;
+      sigma[k] = 50e6 + 80e6 * std::sin(w);  // a mean does not matter
+      tau[k] = 30e6 * std::sin(w - phi_deg * 3.14159265358979 / 180.0);
+    }
+    const double r = coupling::stress_correlation(sigma, tau);
+    EXPECT_NEAR(r, std::cos(phi_deg * 3.14159265358979 / 180.0), 1e-12) << phi_deg;
+    EXPECT_EQ(coupling::iiw_comparison_value(r), phi_deg <= 18.0 || phi_deg == 180.0 ? 1.0 : 0.5) << phi_deg;
+  }
+  EXPECT_EQ(coupling::stress_correlation({1.0, 2.0, 3.0}, {4.0, 4.0, 4.0}), 1.0);
 }
 
 // The signed shear reverses with the torque (the range the magnitude lost): at a circle's

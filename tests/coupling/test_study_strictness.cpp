@@ -176,4 +176,35 @@ TEST(RoadDelay, RearTiresRunTheWheelbaseBehindFromTheTirePositionsAndBehindOverr
   EXPECT_NE(m.find("tires.rear.left.vertical_input: expected a tire on or behind the front axle"), std::string::npos) << m;
 }
 
+// 2-D studies derive the delay the same way (F.30 with one tire per axle): the shipped 2-D plowing
+// study's tires at X 0 and 72 in given road inputs at 78.74 in/s without `behind`: the rear runs
+// 72 in = 1.8288 m behind and sees the front's profile 0.914402 s later (wheelbase / speed), the
+// front 0; `behind` overrides; a rear tire ahead of the front one is refused (STUDY-160).
+TEST(RoadDelay, TwoDimensionalRearTireRunsTheWheelbaseBehindFromTheTirePositionsAndBehindOverridesIt) {
+  const framedyn::testing::TempDir dir;
+  const std::string road = "{kind: road, class: D, speed: 78.74}";
+  std::string text = read_text(kSource / "examples" / "r100_plow_2d.yaml");
+  text = replaced(text, "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: " + road + "\n");
+  text = replaced(text, "    contact: [72, -26]\n", "    contact: [72, -26]\n    normal_input: " + road + "\n");
+  const auto machine_of = [&](const std::string& study) { return coupling::read_rigid_study(dir.write("study2d.yaml", study).string()).machine; };
+  const auto derived = machine_of(text);
+  const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
+  EXPECT_EQ(derived.front_tire.normal_input.behind, 0.0);
+  EXPECT_NEAR(derived.rear_tire.normal_input.behind, wheelbase, 1e-12);
+  EXPECT_FALSE(derived.rear_tire.normal_input.behind_given);
+  EXPECT_NEAR(derived.rear_tire.normal_input.behind / derived.rear_tire.normal_input.speed, wheelbase / speed, 1e-12);
+  EXPECT_NEAR(derived.rear_tire.normal_input.behind / derived.rear_tire.normal_input.speed, 0.914402, 1e-6);
+  // The rear tire's ground height is the front's one delay later.
+  const double delay = wheelbase / speed;
+  for (double t : {1.0, 2.5, 4.0})
+    EXPECT_NEAR(derived.rear_tire.normal_input.displacement(t + delay), derived.front_tire.normal_input.displacement(t), 1e-12) << t;
+  const std::string given_text = replaced(text, "    contact: [72, -26]\n    normal_input: {kind: road,", "    contact: [72, -26]\n    normal_input: {behind: 60, kind: road,");
+  const auto given = machine_of(given_text);
+  EXPECT_NEAR(given.rear_tire.normal_input.behind, 60 * 0.0254, 1e-12);
+  EXPECT_TRUE(given.rear_tire.normal_input.behind_given);
+  const std::string ahead = replaced(text, "    contact: [72, -26]\n    normal_input:", "    contact: [-10, -26]\n    normal_input:");
+  const std::string m = error_of([&] { machine_of(ahead); });
+  EXPECT_NE(m.find("tires.rear.normal_input: expected a rear tire on or behind the front tire"), std::string::npos) << m;
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -113,6 +114,45 @@ TEST(RainflowCommand, MeanStressThicknessAndUserCurvesGiveTheHandDamage) {
   check(damage("mpa.csv", "--sn EN90 --thickness 50"), 50.0 / (2e6 * std::pow(0.9 * std::pow(0.5, 0.2), 3)), "EN 1993-1-9 size effect");
   check(damage("mpa.csv", "--curve points:1e5:200,1e7:50"), 5e-5, "points");
   check(damage("mpa.csv", "--curve basquin:2e12:3"), 2.5e-5, "Basquin");
+}
+
+// S-N curve files (coupling/sn_curve_file.h) on the same 50 cycles of 100 MPa:
+//  - reference 200 MPa at 1e5, m = 3 to the knee at 4e5, then m = 5: the knee's range
+//    200 (1/4)^(1/3) = 125.99 MPa, so 100 MPa is on the m = 5 part: N = 4e5 (2 * 4^(-1/3))^5 = 1.26992e6;
+//  - the same with one slope and a cut-off at 5e5 cycles (116.96 MPa): 100 MPa does no damage;
+//  - the points 1e5:200, 1e7:50 (MPa) written in psi: N(100 MPa) = 1e6, D = 5e-5 as --curve points;
+//  - Basquin C = 2e12 MPa^3 written in ksi (C / 6.894757^3): N(100 MPa) = 2e6, D = 2.5e-5;
+//  - a point that does not fall: refused naming the file, line and key (STUDY-163).
+TEST(RainflowCommand, CurveFilesGiveTheHandDamageInAnyStressUnit) {
+  TempDir dir;
+  std::ofstream(dir / "mpa.csv") << series("MPa", 1.0);
+  int k = 0;
+  const auto damage = [&](const std::string& curve_file, const std::string& text) {
+    std::ofstream(dir / curve_file) << text;
+    const std::string out = "curve_out" + std::to_string(k++);
+    const auto r = framedyn(dir, "rainflow mpa.csv --curve " + curve_file + " --out " + out + " -q");
+    EXPECT_EQ(r.status, 0) << curve_file << ": " << r.err;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / out / "summary.json"));
+    return j["fatigue"]["damage"].get<double>();
+  };
+  const auto check = [&](double d, double expected, const std::string& what) {
+    EXPECT_NEAR(d, expected, 1e-12 * std::max(expected, 1e-300)) << what;
+    std::cout << "[ measured ] curve file, " << what << ": D = " << d << " (hand " << expected << ")\n";
+  };
+  const double n_knee = 4e5 * std::pow(2.0 * std::pow(4.0, -1.0 / 3.0), 5);
+  check(damage("knee.yaml", "name: two slopes\nunits: MPa\nreference: {range: 200, cycles: 1e5}\nslopes: [3, 5]\nknees: [4e5]\ncut_off: 1e9\n"), 50.0 / n_knee,
+        "m = 3/5, knee at 4e5");
+  EXPECT_EQ(damage("cut.yaml", "name: cut off\nreference: {range: 200, cycles: 1e5}\nslopes: [3]\ncut_off: 5e5\n"), 0.0);
+  char psi[160];
+  std::snprintf(psi, sizeof psi, "name: in psi\nunits: psi\npoints: [[1e5, %.17g], [1e7, %.17g]]\n", 200e6 / kPsi, 50e6 / kPsi);
+  check(damage("psi.yaml", psi), 5e-5, "points in psi");
+  char ksi[160];
+  std::snprintf(ksi, sizeof ksi, "name: in ksi\nunits: ksi\nbasquin: {C: %.17g, m: 3}\n", 2e12 / std::pow(kPsi * 1e3 / 1e6, 3));
+  check(damage("ksi.yaml", ksi), 2.5e-5, "Basquin in ksi");
+  std::ofstream(dir / "bad.yaml") << "name: bad\npoints:\n  - [1e5, 200]\n  - [1e7, 250]\n";
+  const auto r = framedyn(dir, "rainflow mpa.csv --curve bad.yaml --out bad_out -q");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("bad.yaml:4: points[1]: expected N rising and S falling from the point before, found [1e+07, 250] after [100000, 200]"), std::string::npos) << r.err;
 }
 
 }  // namespace
