@@ -216,9 +216,11 @@ TEST(FrameResponseCommand, InpDialectReadsCircAsTheStudySaysAndWithoutItTheSumma
   EXPECT_EQ(calculix["warnings"], nlohmann::json::array());
   const double f_radius = plain["frame"]["modes"][0]["frequency"]["value"], f_diameter = calculix["frame"]["modes"][0]["frequency"]["value"];
   EXPECT_NEAR(f_diameter / f_radius, 0.5, 1e-9);
-  // Euler-Bernoulli's first root, beta L = 1.8751: the 4-element cubic mesh is 1e-4 stiff of it.
+  // Euler-Bernoulli's first root, beta L = 1.8751 (7.2360 Hz for r = 0.02 m): the 4-element cubic mesh with
+  // consistent mass is stiff by the discretisation error, 3.3e-5 measured (O(h^4), bounded by 1e-4).
   const double r = 0.02, exact = 1.8751040687 * 1.8751040687 / (2.0 * 3.141592653589793 * 4.0) * std::sqrt(2.1e11 * r * r / 4.0 / 7850.0);
-  EXPECT_NEAR(f_radius / exact, 1.0, 1e-3);
+  EXPECT_GT(f_radius, exact);
+  EXPECT_NEAR(f_radius / exact, 1.0, 1e-4);
 }
 
 // The pipeline (a 3-D study's frame_response block) reads the same key: the
