@@ -1,7 +1,8 @@
-// `framedyn transient DECK.inp [--step N] [--output-set NSET] --out DIR`: runs
-// a *MODAL DYNAMIC or *DYNAMIC step of a deck as the deck defines it
-// (fem/transient_step.h) and writes the displacement history and summary
-// with report/transient_step_outputs.
+// `framedyn transient DECK.inp [--step N] [--output-set NSET] [--element-set
+// ELSET] [--paraview xdmf|none] --out DIR`: runs a *MODAL DYNAMIC or *DYNAMIC
+// step of a deck as the deck defines it (fem/transient_step.h) and writes the
+// displacement and section-force histories, the ParaView series and the
+// summary with report/transient_step_outputs.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -11,7 +12,6 @@
 #include "apps/commands.h"
 #include "apps/mesh_input.h"
 #include "apps/progress.h"
-#include "report/run_outputs.h"
 #include "core/error.h"
 #include "core/results_folder.h"
 #include "fem/transient_step.h"
@@ -27,6 +27,8 @@ struct TransientCommandOptions {
   MeshInput mesh;
   int step = 0;
   std::string output_set;
+  std::string element_set;
+  std::string paraview = "xdmf";
   std::string out;
   ProgressFlags progress;
 };
@@ -61,17 +63,17 @@ int run_transient(const TransientCommandOptions& opt) {
   const std::string out_dir = opt.out.empty() ? std::filesystem::path(opt.mesh.path).stem().string() + "_transient" : opt.out;
   core::check_results_target(out_dir, {opt.mesh.path});
   progress.stage("reading " + opt.mesh.path);
-  std::vector<core::Warning> warnings;
-  const fem::FrameModel deck = opt.mesh.load(&warnings);
+  const fem::FrameModel deck = opt.mesh.load();
   const std::size_t index = chosen_step(deck, opt);
   const std::vector<int> output_nodes = output_set_nodes(deck, opt.mesh.path, opt.output_set);
+  const std::vector<int> output_beams = output_set_beams(deck, opt.mesh.path, opt.element_set);
   progress.stage(fmt::format("step {} (*{})", deck.steps[index].number, deck.steps[index].procedure));
   const fem::TransientStepResult r = fem::run_transient_step(deck, index, opt.mesh.path);
 
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.mesh.path});
-  nlohmann::ordered_json summary = report::write_transient_step_results(deck, r, {opt.mesh.path, output_nodes}, folder);
-  report::add_warnings(summary, warnings, print_warning);  // also on stderr
+  const report::TransientStepRun run{opt.mesh.path, output_nodes, opt.element_set, output_beams, opt.paraview == "xdmf"};
+  const nlohmann::ordered_json summary = report::write_transient_step_results(deck, r, run, folder);
   folder.write_text("summary.json", summary.dump(2) + "\n");
   folder.commit();
   progress.done();
@@ -85,7 +87,11 @@ int run_transient(const TransientCommandOptions& opt) {
   fmt::print("{}; {} output times\n", r.scheme, r.response.times.size());
   fmt::print("max displacement {:.6g} {} at node {} ({}) at t = {:.6g} s\n", p.value / u.to_si_factor(Quantity::length), u.label(Quantity::length),
              p.node, fem::dof_name(p.dof), p.time);
-  fmt::print("results in {}/ (summary.json, displacement_history.csv)\n", out_dir);
+  const nlohmann::ordered_json& m = summary["frame"]["transient"]["max_bending_moment"];  // as summary.json has it
+  fmt::print("max bending moment {:.6g} {} at element {} end {} at t = {:.6g} s\n", m["value"].get<double>(), m["unit"].get<std::string>(),
+             m["element"].get<int>(), m["end"].get<int>(), m["time"].get<double>());
+  fmt::print("results in {}/ (summary.json, displacement_history.csv, section_force_history.csv{})\n", out_dir,
+             run.paraview ? ", transient.xdmf, transient.h5" : "");
   return 0;
 }
 
@@ -98,6 +104,11 @@ void add_transient_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--step", opt->step, "Input step (*STEP, 1, 2, ...) to run (default: the deck's only *MODAL DYNAMIC or *DYNAMIC step)")
       ->check(number_check("a step number from 1", [](double n) { return n >= 1 && n <= 1e6; }, true));
   cmd->add_option("--output-set", opt->output_set, "Node set (*NSET) whose nodes displacement_history.csv lists (default: all nodes)");
+  cmd->add_option("--element-set", opt->element_set,
+                  "Element set (*ELSET) whose beams section_force_history.csv lists, both ends (default: all beams)");
+  cmd->add_option("--paraview", opt->paraview, "ParaView output: xdmf (transient.xdmf + transient.h5, every output time; default) or none")
+      ->check(CLI::Validator(
+          [](std::string& s) { return s == "xdmf" || s == "none" ? std::string() : fmt::format("expected xdmf or none, found '{}'", s); }, ""));
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <mesh name>_transient)");
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_transient(*opt); }; });

@@ -123,11 +123,11 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   // dead_load in the pipeline only: the static loads come from the vehicle model.
   if (pipeline)
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
-                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
+                  "direct_substeps", "convert_units", "inp_dialect", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
                   "compare_supports", "fatigue"});
   else
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
-                  "direct_substeps", "convert_units", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "fatigue"});
+                  "direct_substeps", "convert_units", "inp_dialect", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "fatigue"});
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -211,6 +211,13 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     }
   }
   r.convert_units = f.boolean_or("convert_units", false);
+  if (f.has("inp_dialect")) {
+    const std::string dialect = f.text("inp_dialect");
+    if (dialect == "abaqus") r.inp_dialect = fem::InpDialect::abaqus;
+    else if (dialect == "calculix") r.inp_dialect = fem::InpDialect::calculix;
+    else  // STUDY-155
+      throw f.error("inp_dialect", "abaqus (SECTION=CIRC values are radii) or calculix (diameters)", quoted(dialect));
+  }
   const std::string mesh_loads = f.text_or("mesh_loads", pipeline ? "none" : "constant");
   if (mesh_loads != "constant" && mesh_loads != "none")
     throw f.error("mesh_loads", "constant (the mesh's *CLOAD and *DLOAD act throughout, from their static equilibrium) or none", quoted(mesh_loads));
@@ -220,7 +227,7 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   if (r.dead_load && r.mesh_loads)
     throw f.error("mesh_loads", "mesh_loads: none with the dead load on (the static state already applies gravity and the static loads), or dead_load: false",
                   "mesh_loads: constant");
-  for (const char* key : {"supports", "support_set", "modes", "loads", "mesh"}) {
+  for (const char* key : {"supports", "support_set", "modes", "loads", "mesh", "inp_dialect"}) {
     // A defaulted key: the block's line, still under the key's own path.
     core::InputLocation at = f.location(f.has(key) ? key : "");
     at.key = f.path() + "." + key;
@@ -328,7 +335,10 @@ FrameStudyRequest read_frame_study(const std::string& file) {
 }
 
 fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
-  fem::FrameModel model = fem::read_inp(q.mesh);
+  fem::InpReadOptions o;
+  o.dialect = q.inp_dialect;
+  o.dialect_key = q.where("inp_dialect").key;  // the warning names the study's key, not the command line's option
+  fem::FrameModel model = fem::read_inp(q.mesh, o);
   // A mesh in other units than the study is most often the wrong file (a
   // metric copy of an inch frame): converted only when the study says so.
   if (!q.convert_units && model.units.name() != q.units.name())
@@ -577,7 +587,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
 }
 
 std::vector<core::Warning> frame_warnings(const FrameStudyResults& r, const FrameStudyRequest& q) {
-  std::vector<core::Warning> out;
+  std::vector<core::Warning> out = r.model.reader_warnings;
   // A von Mises stress above the yield strength the study declares (the total: static + dynamic).
   if (q.yield_strength && r.hot_spots.peak.von_mises_total > *q.yield_strength && r.hot_spots.peak.station < r.stress.stations.size()) {
     const core::UnitSystem& u = q.units;

@@ -60,6 +60,7 @@
 #include "coupling/yaml_input.h"
 #include "fem/direct_integration.h"
 #include "fem/frame_model.h"
+#include "fem/inp_reader.h"
 #include "fem/solver_counters.h"
 #include "fem/modal_transient.h"
 
@@ -109,6 +110,10 @@ struct FrameStudyRequest {
   ParaviewOutput paraview = ParaviewOutput::none;  // a study file's default: xdmf
   int direct_substeps = 4;                   // Newmark steps per load-history interval
   bool convert_units = false;                // mesh or load history in other units than the study: convert (else refuse)
+  // frame.inp_dialect: how the mesh's SECTION=CIRC values are read (radius
+  // for abaqus, diameter for calculix; docs/theory/fem.md section 23). Unset:
+  // Abaqus's reading, and the circ_radius_or_diameter warning in the summary.
+  std::optional<fem::InpDialect> inp_dialect;
   // The mesh's own *CLOAD and *DLOAD (gravity) as constant loads acting
   // throughout, the response starting from the static equilibrium under them
   // (frame-response's default; the pipeline's loads come from the vehicle model).
@@ -198,8 +203,10 @@ struct FrameStudyResults {
   std::optional<LifeMap> life;
 };
 
-// The study's mesh, refused (naming frame.mesh) when it is in other units than
-// the study and convert_units is not set.
+// The study's mesh read in the study's inp_dialect, refused (naming
+// frame.mesh) when it is in other units than the study and convert_units is
+// not set. The reader's warnings stay in the model's reader_warnings, which
+// frame_warnings lists first.
 fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 
 // Runs the study. `loads` replaces the request's load-history file (e.g. the
@@ -227,7 +234,9 @@ const char* method_name(FrameMethod method);
 // with a clamped node (at the clamp or within one element of it), where the
 // clamp's reaction sets the stress. One warning per output set when both
 // peaks share the element. `stress_above_yield`: the peak von Mises stress
-// exceeds the study's frame.yield_strength.
+// exceeds the study's frame.yield_strength. The mesh reader's own warnings
+// (results.model.reader_warnings: a CIRC section read without
+// frame.inp_dialect) come first.
 std::vector<core::Warning> frame_warnings(const FrameStudyResults& results, const FrameStudyRequest& request);
 
 }  // namespace framedyn::coupling

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/units.h"
+#include "core/warnings.h"
 #include "fem/beam_section.h"
 #include "fem/member_releases.h"
 
@@ -195,6 +196,10 @@ struct FrameModel {
   // constraints, loads and element_loads above hold the first step's.
   std::vector<AnalysisStep> steps;
   std::map<std::string, Amplitude> amplitudes;  // *AMPLITUDE by upper-case name
+  // What the reader noticed about the input that may change the answer (a
+  // SECTION=CIRC read without a dialect): copies of the model keep them, and
+  // every command's summary.json lists them under `warnings`.
+  std::vector<core::Warning> reader_warnings;
 
   int dof_count() const { return kDofsPerNode * static_cast<int>(nodes.size()); }
   // Index of the node with mesh number `id`, or -1.

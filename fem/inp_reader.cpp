@@ -1659,14 +1659,15 @@ FrameModel Parser::build(const core::UnitSystem& units) {
     // circle whose diameter is the value). Without a dialect, Abaqus's reading
     // and a warning with both.
     const double circ_scale = options_.dialect == InpDialect::calculix ? 0.5 : 1.0;
-    if (s.shape == "CIRC" && !options_.dialect && options_.warnings) {
+    if (s.shape == "CIRC" && !options_.dialect) {
       const std::string L_unit = units.label(Quantity::length);
       const std::string values = s.dims.size() > 1 ? fmt::format("{:g}, {:g}", s.dims[0], s.dims[1]) : fmt::format("{:g}", s.dims[0]);
-      core::add_warning(*options_.warnings, "circ_radius_or_diameter",
+      core::add_warning(model.reader_warnings, "circ_radius_or_diameter",
                         fmt::format("{}: SECTION=CIRC of ELSET {} read as Abaqus reads it, {} {} {}; CalculiX 2.20 reads the same line as "
-                                    "{} (a section 1/16 as stiff in bending): give --inp-dialect abaqus or calculix to say which the deck means",
+                                    "{} (a section 1/16 as stiff in bending): give {} abaqus or calculix to say which the deck means",
                                     s.where.file + ":" + std::to_string(s.where.line), s.elset, s.dims.size() > 1 ? "semi-axes" : "radius", values,
-                                    L_unit, s.dims.size() > 1 ? "the axes (semi-axes half as long)" : "the diameter (radius half as long)"),
+                                    L_unit, s.dims.size() > 1 ? "the axes (semi-axes half as long)" : "the diameter (radius half as long)",
+                                    options_.dialect_key),
                         {{"radius_read", s.dims[0], L_unit}, {"radius_calculix", 0.5 * s.dims[0], L_unit}});
     }
     try {

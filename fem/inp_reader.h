@@ -15,8 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "core/warnings.h"
-
 #include "fem/frame_model.h"
 
 namespace framedyn::fem {
@@ -29,9 +27,11 @@ enum class InpDialect { abaqus, calculix };
 struct InpReadOptions {
   std::optional<std::string> units;  // "in-lbf-s", "m-N-s" (or "SI"), "mm-N-s"
   // Unset: Abaqus's reading, and a CIRC section gets a warning naming its
-  // element set and both readings (into `warnings`, when given).
+  // element set and both readings (into the model's reader_warnings).
   std::optional<InpDialect> dialect;
-  std::vector<core::Warning>* warnings = nullptr;
+  // How the warning tells the user to give the dialect: the command line's
+  // option, or a study's key (frame.inp_dialect).
+  std::string dialect_key = "--inp-dialect";
 };
 
 // Throws core::InputError (file, line, keyword, expected, found) on any problem.

@@ -11,6 +11,7 @@
 #include "report/json_quantity.h"
 #include "report/csv_writer.h"
 #include "report/plot.h"
+#include "report/summary_warnings.h"
 
 namespace framedyn::report {
 
@@ -39,6 +40,7 @@ void write_summary(const fem::FrameModel& model, const fem::ModalResult& modes, 
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", analysis}};
   j["input"] = input;
   j["frame"] = {{"nodes", model.nodes.size()}, {"beam_elements", model.beams.size()}, {"free_dofs", modes.free_dofs}, {analysis, response}};
+  add_warnings(j, model.reader_warnings);
   folder.write_text("summary.json", j.dump(2) + "\n");
 }
 

@@ -9,6 +9,7 @@
 
 #include "report/csv_writer.h"
 #include "report/json_quantity.h"
+#include "report/summary_warnings.h"
 #include "report/vtu_writer.h"
 #include "report/xdmf_writer.h"
 
@@ -81,6 +82,7 @@ void write_modes_results(const fem::FrameModel& model, const fem::ModalResult& r
   frame["solver"] = {{"method", "shift-invert Lanczos (Spectra) on CHOLMOD, Sturm-count certified"}, {"shift", quantity(-run.shift_hz, hz)},
                      {"restarts", r.iterations}, {"operator_solves", r.operator_solves}};
   j["frame"] = frame;
+  add_warnings(j, model.reader_warnings);
   folder.write_text("summary.json", j.dump(2) + "\n");
 
   // modes.csv

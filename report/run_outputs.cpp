@@ -1,4 +1,4 @@
-// rigid.contacts and the warnings list of summary.json: see run_outputs.h.
+// rigid.contacts, rigid.steady and frame.steady of summary.json: see run_outputs.h.
 #include "report/run_outputs.h"
 
 #include "report/fatigue_outputs.h"
@@ -129,20 +129,6 @@ nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& fram
   }
   j["rails"] = rails;
   return j;
-}
-
-void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings, const std::function<void(const core::Warning&)>& console) {
-  if (!summary.contains("warnings")) summary["warnings"] = nlohmann::ordered_json::array();
-  for (const core::Warning& w : warnings) {
-    nlohmann::ordered_json jw = {{"code", w.code}, {"message", w.message}};
-    if (!w.figures.empty()) {
-      nlohmann::ordered_json figures = nlohmann::ordered_json::object();
-      for (const core::WarningFigure& f : w.figures) figures[f.name] = {{"value", f.value}, {"unit", f.unit}};
-      jw["figures"] = figures;
-    }
-    summary["warnings"].push_back(jw);
-    if (console) console(w);
-  }
 }
 
 }  // namespace framedyn::report

@@ -1,8 +1,8 @@
 // Outputs every rigid-body run writes the same way in 2-D and 3-D:
 // summary.json's rigid.contacts.<name> {min_force, max_force (compression
-// positive) {value, unit}, tension_fraction, lift_off_fraction} and the
-// top-level `warnings` list of {code, message, figures}, also printed on
-// stderr; rigid.steady (steady operation and the peaks before and in it).
+// positive) {value, unit}, tension_fraction, lift_off_fraction}; rigid.steady
+// (steady operation and the peaks before and in it). The top-level `warnings`
+// list: report/summary_warnings.h.
 // docs/user-guide.md, "summary.json" and "Warnings".
 #pragma once
 
@@ -14,6 +14,7 @@
 
 #include "core/units.h"
 #include "core/warnings.h"
+#include "report/summary_warnings.h"  // add_warnings, for the commands that write run summaries
 #include "coupling/contact_report.h"
 #include "coupling/static_report.h"
 #include "coupling/frame_study.h"
@@ -47,11 +48,5 @@ void print_hot_spot_line(const coupling::FrameStudyResults& frame, const core::U
 void print_fatigue_line(const coupling::FrameStudyResults& frame, const coupling::FrameStudyRequest& request);
 nlohmann::ordered_json frame_steady_json(const coupling::FrameStudyResults& frame, std::optional<double> reached_at,
                                          const core::UnitSystem& units);
-
-// Appends the warnings to summary["warnings"] (created if absent, so that any
-// stage of a run may add its own) and hands each to `console` (apps/ prints it
-// on stderr as "framedyn: warning [code]: message"; a batch run prints nothing).
-void add_warnings(nlohmann::ordered_json& summary, const std::vector<core::Warning>& warnings,
-                  const std::function<void(const core::Warning&)>& console = {});
 
 }  // namespace framedyn::report

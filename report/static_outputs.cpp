@@ -10,6 +10,7 @@
 
 #include "fem/section_stress.h"
 #include "report/csv_writer.h"
+#include "report/summary_warnings.h"
 #include "report/vtu_writer.h"
 
 namespace framedyn::report {
@@ -174,6 +175,7 @@ void write_static_results(const fem::FrameModel& model, const fem::StaticResult&
     }
   }
   j["frame"]["free_rigid_motions"] = rigid;
+  add_warnings(j, model.reader_warnings);
   folder.write_text("summary" + run.file_suffix + ".json", j.dump(2) + "\n");
 }
 

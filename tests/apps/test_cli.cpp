@@ -12,6 +12,7 @@
 #include <atomic>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -269,6 +271,111 @@ TEST(Cli, StaticWritesEachStepOfAMultiStepDeck) {
     const nlohmann::json j = nlohmann::json::parse(read_file(dir / "res" / ("summary_step" + std::to_string(step) + ".json")));
     EXPECT_EQ(j.at("input").at("step"), step);
   }
+}
+
+// The mesh reader's warnings (fem::FrameModel::reader_warnings) reach the
+// summary.json of every command that reads a deck, and stderr once: a CIRC
+// section read without --inp-dialect is warned (circ_radius_or_diameter,
+// naming the set and the option); with a dialect there is nothing to warn.
+TEST(Cli, ACircSectionReadWithoutADialectIsWarnedInTheSummaryOfEveryDeckCommand) {
+  TempDir dir;
+  std::string deck = cantilever_deck("B33");
+  const std::string rect = "SECTION=RECT\n0.05, 0.1\n";
+  deck.replace(deck.find(rect), rect.size(), "SECTION=CIRC\n0.03\n");
+  dir.write("circ.inp", deck);
+  dir.write("psd.csv", "frequency [Hz],psd [1/Hz]\n2,0.001\n400,0.001\n");
+  const std::vector<std::pair<std::string, std::string>> commands = {{"static", ""},
+                                                                     {"modes", " --modes 4"},
+                                                                     {"harmonic", " -f 1:100:5 -z 0.02 --no-figures"},
+                                                                     {"random", " --psd psd.csv -z 0.02 --no-figures"}};
+  for (const auto& [command, options] : commands) {
+    const RunResult plain = framedyn(dir, command + " circ.inp" + options + " --out plain_" + command);
+    ASSERT_EQ(plain.status, 0) << command << ": " << plain.err;
+    const nlohmann::json w = nlohmann::json::parse(read_file(dir / ("plain_" + command) / "summary.json"))["warnings"];
+    ASSERT_EQ(w.size(), 1u) << command << ": " << w.dump();
+    EXPECT_EQ(w[0]["code"], "circ_radius_or_diameter") << command;
+    const std::string message = w[0]["message"];
+    EXPECT_NE(message.find("circ.inp:"), std::string::npos) << message;
+    EXPECT_NE(message.find("ELSET BEAM"), std::string::npos) << message;
+    EXPECT_NE(message.find("give --inp-dialect abaqus or calculix"), std::string::npos) << message;
+    EXPECT_EQ(w[0]["figures"]["radius_read"]["value"], 0.03) << command;
+    EXPECT_EQ(w[0]["figures"]["radius_calculix"]["value"], 0.015) << command;
+    // On stderr once: read, not again when written.
+    std::size_t printed = 0;
+    for (std::size_t at = plain.err.find("warning [circ_radius_or_diameter]"); at != std::string::npos;
+         at = plain.err.find("warning [circ_radius_or_diameter]", at + 1))
+      ++printed;
+    EXPECT_EQ(printed, 1u) << command << ": " << plain.err;
+  }
+  // Told the dialect, there is nothing to warn (one command: the reader is the same for all).
+  const RunResult told = framedyn(dir, "static circ.inp --inp-dialect calculix --out told");
+  ASSERT_EQ(told.status, 0) << told.err;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir / "told" / "summary.json"))["warnings"], nlohmann::json::array());
+  EXPECT_EQ(told.err.find("circ_radius_or_diameter"), std::string::npos) << told.err;
+}
+
+// framedyn transient's section-force history and ParaView series
+// (docs/theory/fem.md section 24). A 100 kg tip mass on a 2 m cantilever
+// whose beam weighs 7.85e-5 kg (density 7.85e-3 kg/m^3): a one-degree-of-
+// freedom oscillator along z, omega^2 = 3 E I / L^3 / (M + 33/140 m_beam).
+// Under a tip load P switched on at t = 0 and held, the tip moves u_st (1 -
+// cos omega t), and the beam, whose own inertia is 7.85e-7 of the mass's,
+// carries k u(t) at its tip: the root's bending moment is P L (1 - cos
+// omega t), 2 P L at t = T/2, and the shear at the root P (1 - cos omega t).
+TEST(Cli, TransientRootMomentOfAStepLoadedTipMassIsPLTimesOneMinusCosOmegaT) {
+  TempDir dir;
+  constexpr double kMass = 100.0, kDensity = 7.85e-3, kP = 1000.0;
+  const double i_z = kA * kB * kB * kB / 12.0, m_beam = kDensity * kA * kB * kL;
+  const double omega = std::sqrt(3.0 * kE * i_z / (kL * kL * kL) / (kMass + 33.0 / 140.0 * m_beam)), period = 2.0 * M_PI / omega;
+  std::string deck = cantilever_deck("B33");
+  deck = deck.substr(0, deck.find("*STEP"));  // the model data, without its static step
+  deck.replace(deck.find("*DENSITY\n7850"), 13, "*DENSITY\n0.00785");
+  deck.replace(deck.find("0.05, 0.1\n"), 10, "0.05, 0.1\n0, 1, 0\n");  // n1 = y: local 2 = z, depth b = 0.1
+  char steps[512];
+  std::snprintf(steps, sizeof steps,
+                "*ELEMENT, TYPE=MASS, ELSET=TIPMASS\n100, 5\n*MASS, ELSET=TIPMASS\n%.17g\n*AMPLITUDE, NAME=STEP\n0, 1, 1, 1\n"
+                "*STEP\n*FREQUENCY\n2\n*END STEP\n*STEP\n*MODAL DYNAMIC\n%.17g, %.17g\n*CLOAD, AMPLITUDE=STEP\n5, 3, %.17g\n*END STEP\n",
+                kMass, period / 100.0, period, kP);
+  dir.write("tip_mass.inp", deck + steps);
+  const RunResult r = framedyn(dir, "transient tip_mass.inp --element-set beam --out res");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = read_csv(dir / "res" / "section_force_history.csv");
+  ASSERT_EQ(rows.size(), 101u * 4 * 2);  // 101 output times, 4 elements, 2 ends
+  double worst_moment = 0.0, worst_shear = 0.0;
+  int root_rows = 0;
+  for (const auto& row : rows) {
+    if (row.at("element") != "1" || row.at("end") != "1") continue;
+    ++root_rows;
+    const double t = std::stod(row.at("time [s]")), exact = 1.0 - std::cos(omega * t);
+    worst_moment = std::max(worst_moment, std::abs(std::hypot(std::stod(row.at("My [N*m]")), std::stod(row.at("Mz [N*m]"))) - kP * kL * exact));
+    worst_shear = std::max(worst_shear, std::abs(std::hypot(std::stod(row.at("Vy [N]")), std::stod(row.at("Vz [N]"))) - kP * exact));
+  }
+  EXPECT_EQ(root_rows, 101);
+  EXPECT_LT(worst_moment, 1e-6 * kP * kL);
+  EXPECT_LT(worst_shear, 1e-6 * kP);
+  // The summary's peak: 2 P L at the root at T/2 (the output time 50 of 100).
+  const nlohmann::json peak = nlohmann::json::parse(read_file(dir / "res" / "summary.json"))["frame"]["transient"]["max_bending_moment"];
+  EXPECT_NEAR(peak["value"].get<double>(), 2.0 * kP * kL, 1e-6 * kP * kL);
+  EXPECT_EQ(peak["unit"], "N*m");
+  EXPECT_EQ(peak["element"], 1);
+  EXPECT_EQ(peak["end"], 1);
+  EXPECT_NEAR(peak["time"].get<double>(), period / 2.0, 1e-9 * period);
+  // The ParaView series: one grid per output time, the displacement and rotation per node and the twelve end forces per element.
+  const std::string xdmf = read_file(dir / "res" / "transient.xdmf");
+  EXPECT_NE(xdmf.find("CollectionType=\"Temporal\""), std::string::npos);
+  std::size_t grids = 0;
+  for (std::size_t at = xdmf.find("<Time Value="); at != std::string::npos; at = xdmf.find("<Time Value=", at + 1)) ++grids;
+  EXPECT_EQ(grids, 101u);
+  for (const char* field : {"displacement [m]", "rotation [rad]", "N_end1 [N]", "Mz_end2 [N*m]"}) EXPECT_NE(xdmf.find(field), std::string::npos) << field;
+  EXPECT_GT(fs::file_size(dir / "res" / "transient.h5"), 8u * 101 * (5 * 6 + 4 * 12));  // every value stored, 8 bytes each
+  EXPECT_NE(r.out.find("max bending moment"), std::string::npos) << r.out;
+  // --paraview none: no series; an element set without beams is refused.
+  ASSERT_EQ(framedyn(dir, "transient tip_mass.inp --paraview none --out bare -q").status, 0);
+  EXPECT_FALSE(fs::exists(dir / "bare" / "transient.xdmf"));
+  EXPECT_FALSE(fs::exists(dir / "bare" / "transient.h5"));
+  const RunResult massless = framedyn(dir, "transient tip_mass.inp --element-set TIPMASS --out none -q");
+  EXPECT_EQ(massless.status, 1);
+  EXPECT_NE(massless.err.find("found 'TIPMASS' (no beam elements)"), std::string::npos) << massless.err;
 }
 
 TEST(Cli, StaticWithUnitsOption) {

@@ -492,6 +492,7 @@ std::vector<Row> rows() {
       frame_row("STUDY-51", "method: mode_displacement", "method: direct", "damping:", "frame.damping"),
       frame_row("STUDY-52", "output_interval: 0.001", "output_interval: 0", "output_interval:", "frame.output_interval"),
       frame_row("STUDY-53", "stations: 3", "stations: 1", "stations:", "frame.stations"),
+      frame_row("STUDY-155", "  stations: 3\n", "  stations: 3\n  inp_dialect: ccx\n", "inp_dialect:", "frame.inp_dialect"),
       frame_row("STUDY-54", "supports: fixed_rear_end", "supports: fixed_rear_end\n  support_set: BACK", "support_set: BACK", "frame.support_set"),
       frame_row("STUDY-55", "modes: 4", "modes: 100000", "modes: 100000", "frame.modes"),
       frame_row("STUDY-56", "damping: {modal_ratio: 0.02}", "damping: {rayleigh: {alpha: -1, beta: 0}}", "damping:", "frame.damping.rayleigh.alpha"),
@@ -703,6 +704,9 @@ std::vector<Row> rows() {
       {"CLI-49", {{"frame.inp", kMesh}}, "transient frame.inp --step 1 --out results -q", "command line: --step", true},
       {"CLI-50", {{"frame.inp", kMesh}}, "transient frame.inp --out results -q", "command line: --step", true},
       cli_row("CLI-51", "static frame.inp --inp-dialect nastran --out results -q", "command line: --inp-dialect"),
+      {"CLI-77", {{"frame.inp", edit(kMesh, "*STATIC\n", "*DYNAMIC\n0.01, 0.1\n")}}, "transient frame.inp --element-set RAILS --out results -q",
+       "command line: --element-set", true},
+      cli_row("CLI-78", "transient frame.inp --paraview vtu --out results -q", "command line: --paraview"),
       {"CLI-48", {{"series.csv", edit(edit(kSeries, "sg1 [MPa]", "sg1 [MPa],sg2 [MPa]"), "0,10", "0,10,12")}}, "rainflow series.csv --out results",
        "series.csv:1: --column", true},
       // ---- framedyn rainflow's options (apps/rainflow_command.cpp)

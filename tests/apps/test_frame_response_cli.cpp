@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -175,6 +176,89 @@ TEST(FrameResponseCommand, StressHistoriesOnRequestHoldTheTopHotSpotsPeak) {
   bool warned = false;
   for (const auto& w : summary["warnings"]) warned = warned || w["code"] == "stress_above_yield";
   EXPECT_EQ(warned, j["peak_von_mises"]["value"].get<double>() > 1.0e5);
+}
+
+// frame.inp_dialect (the study's frame block): a mesh with a CIRC section read
+// without it is warned in summary.json's warnings and on the console, the
+// message naming the study's key; with inp_dialect: calculix the value is the
+// diameter. The cantilever's bending frequencies of Euler-Bernoulli B33
+// elements (no rotary inertia), omega = (beta L)^2 sqrt(E I / (rho A)) / L^2
+// with I / A = r^2 / 4, are proportional to r: half with the calculix reading.
+TEST(FrameResponseCommand, InpDialectReadsCircAsTheStudySaysAndWithoutItTheSummaryWarns) {
+  framedyn::testing::TempDir dir;
+  std::string mesh = "** units: m-N-s\n*NODE, NSET=ALL\n";
+  for (int i = 0; i <= 4; ++i) mesh += std::to_string(i + 1) + ", " + std::to_string(0.5 * i) + ", 0, 0\n";
+  mesh += "*NSET, NSET=TIP\n5\n*ELEMENT, TYPE=B33, ELSET=BEAM\n1, 1, 2\n2, 2, 3\n3, 3, 4\n4, 4, 5\n"
+          "*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=CIRC\n0.02\n0, 1, 0\n"
+          "*MATERIAL, NAME=STEEL\n*ELASTIC\n2.1e11, 0.3\n*DENSITY\n7850\n*BOUNDARY\n1, ENCASTRE\n";
+  dir.write("circ.inp", mesh);
+  std::string history = "# framedyn load history, version 1\n# units: m-N-s\n# point TIP 2 0 0\n"
+                        "time [s],TIP.FX [N],TIP.FY [N],TIP.FZ [N],TIP.MX [N*m],TIP.MY [N*m],TIP.MZ [N*m]\n";
+  for (int k = 0; k <= 10; ++k) history += std::to_string(0.001 * k) + ",0,0,100,0,0,0\n";
+  dir.write("loads.csv", history);
+  const std::string study = "framedyn_study: 1\nname: circ\nunits: m-N-s\nmodel: frame_transient\nframe:\n  mesh: circ.inp\n  loads: loads.csv\n"
+                            "  modes: 2\n  paraview: none\n";
+  dir.write("plain.yaml", study);
+  dir.write("calculix.yaml", study + "  inp_dialect: calculix\n");
+  const auto run = [&](const std::string& name) {
+    const std::string cmd = kBinary + " frame-response " + (dir / (name + ".yaml")).string() + " -o " + (dir / name).string() + " > " +
+                            (dir / (name + ".log")).string() + " 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / (name + ".log"));
+    return nlohmann::json::parse(slurp(dir / name / "summary.json"));
+  };
+  const nlohmann::json plain = run("plain"), calculix = run("calculix");
+  ASSERT_EQ(plain["warnings"].size(), 1u) << plain["warnings"].dump();
+  EXPECT_EQ(plain["warnings"][0]["code"], "circ_radius_or_diameter");
+  const std::string message = plain["warnings"][0]["message"];
+  EXPECT_NE(message.find("ELSET BEAM"), std::string::npos) << message;
+  EXPECT_NE(message.find("give frame.inp_dialect abaqus or calculix"), std::string::npos) << message;
+  EXPECT_NE(slurp(dir / "plain.log").find("framedyn: warning [circ_radius_or_diameter]"), std::string::npos) << slurp(dir / "plain.log");
+  EXPECT_EQ(calculix["warnings"], nlohmann::json::array());
+  const double f_radius = plain["frame"]["modes"][0]["frequency"]["value"], f_diameter = calculix["frame"]["modes"][0]["frequency"]["value"];
+  EXPECT_NEAR(f_diameter / f_radius, 0.5, 1e-9);
+  // Euler-Bernoulli's first root, beta L = 1.8751 (7.2360 Hz for r = 0.02 m): the 4-element cubic mesh with
+  // consistent mass is stiff by the discretisation error, 3.3e-5 measured (O(h^4), bounded by 1e-4).
+  const double r = 0.02, exact = 1.8751040687 * 1.8751040687 / (2.0 * 3.141592653589793 * 4.0) * std::sqrt(2.1e11 * r * r / 4.0 / 7850.0);
+  EXPECT_GT(f_radius, exact);
+  EXPECT_NEAR(f_radius / exact, 1.0, 1e-4);
+}
+
+// The pipeline (a 3-D study's frame_response block) reads the same key: the
+// shipped offset-plowing study on a copy of its frame whose light cross
+// members are given as a CIRC section has the warning in its summary.json,
+// naming frame_response.inp_dialect; with the key, none.
+TEST(FrameResponseCommand, ThePipelinesFrameResponseBlockTakesTheDialectAndWarnsWithoutIt) {
+  framedyn::testing::TempDir dir;
+  std::string frame = slurp(std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp");
+  const std::string box = "ELSET=LIGHT_CROSS_MEMBERS, MATERIAL=STEEL, SECTION=BOX\n4.0, 3.0, 0.1875, 0.1875, 0.1875, 0.1875\n";
+  ASSERT_NE(frame.find(box), std::string::npos);
+  frame.replace(frame.find(box), box.size(), "ELSET=LIGHT_CROSS_MEMBERS, MATERIAL=STEEL, SECTION=CIRC\n1.5\n");
+  dir.write("frame.inp", frame);
+  std::string study = slurp(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/offset_plowing.yaml");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"../meshes/r100_frame.inp", "frame.inp"},
+                                 {"duration: 1.0", "duration: 0.01"}, {"paraview: xdmf", "paraview: none"}}) {
+    ASSERT_NE(study.find(from), std::string::npos) << from;
+    study.replace(study.find(from), from.size(), to);
+  }
+  dir.write("plain.yaml", study);
+  const std::string block = "frame_response:\n";
+  study.replace(study.find(block), block.size(), block + "  inp_dialect: abaqus\n");
+  dir.write("abaqus.yaml", study);
+  for (const std::string name : {"plain", "abaqus"}) {
+    const std::string cmd = kBinary + " run " + (dir / (name + ".yaml")).string() + " -o " + (dir / name).string() + " > " +
+                            (dir / (name + ".log")).string() + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / (name + ".log"));
+    int circ = 0;
+    std::string message;
+    const nlohmann::json warnings = nlohmann::json::parse(slurp(dir / name / "summary.json"))["warnings"];
+    for (const auto& w : warnings)
+      if (w["code"] == "circ_radius_or_diameter") ++circ, message = w["message"];
+    EXPECT_EQ(circ, name == "plain" ? 1 : 0) << name << ": " << warnings.dump();
+    if (name == "plain") {
+      EXPECT_NE(message.find("give frame_response.inp_dialect abaqus or calculix"), std::string::npos) << message;
+      EXPECT_NE(slurp(dir / "plain.log").find("framedyn: warning [circ_radius_or_diameter]"), std::string::npos) << slurp(dir / "plain.log");
+    }
+  }
 }
 
 }  // namespace

@@ -475,10 +475,8 @@ TEST(InpReader, TwoValuesOnACircLineAreAnEllipseWithItsClosedFormConstants) {
   // (along 2): A = pi a b, I11 = pi a b^3 / 4, I22 = pi a^3 b / 4,
   // J = pi a^3 b^3 / (a^2 + b^2) (docs/theory/fem.md, Eqs. 23.1-23.3).
   const double a = 0.03, b = 0.05;
-  std::vector<framedyn::core::Warning> warnings;
-  InpReadOptions o;
-  o.warnings = &warnings;
-  const FrameModel m = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03, 0.05\n"), o);
+  const FrameModel m = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03, 0.05\n"));
+  const std::vector<framedyn::core::Warning>& warnings = m.reader_warnings;
   const auto& s = section_of(m);
   EXPECT_EQ(s.shape, "CIRC");
   EXPECT_REL(s.area, kPi * a * b, 1e-13);
@@ -509,20 +507,19 @@ TEST(InpReader, TwoValuesOnACircLineAreAnEllipseWithItsClosedFormConstants) {
 
 TEST(InpReader, TheCalculixDialectReadsCircValuesAsDiametersAndWarnsNothing) {
   // CalculiX 2.20 reads CIRC's value as the diameter (docs/theory/fem.md section 23).
-  std::vector<framedyn::core::Warning> warnings;
   InpReadOptions o;
-  o.warnings = &warnings;
   o.dialect = framedyn::fem::InpDialect::calculix;
   const double r = 0.015;
   const FrameModel circle = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03\n"), o);
   EXPECT_REL(section_of(circle).i11, kPi * std::pow(r, 4) / 4, 1e-13);
   const FrameModel ellipse = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03, 0.05\n"), o);
   EXPECT_REL(section_of(ellipse).area, kPi * 0.015 * 0.025, 1e-13);
-  EXPECT_TRUE(warnings.empty());
+  EXPECT_TRUE(circle.reader_warnings.empty());
+  EXPECT_TRUE(ellipse.reader_warnings.empty());
   o.dialect = framedyn::fem::InpDialect::abaqus;  // said explicitly: the radius, no warning
   const FrameModel abaqus = read(one_beam("*BEAM SECTION, ELSET=B, MATERIAL=STEEL, SECTION=CIRC\n0.03\n"), o);
   EXPECT_REL(section_of(abaqus).i11, kPi * std::pow(0.03, 4) / 4, 1e-13);
-  EXPECT_TRUE(warnings.empty());
+  EXPECT_TRUE(abaqus.reader_warnings.empty());
 }
 
 TEST(InpReader, ISectionAgainstHandFormulas) {

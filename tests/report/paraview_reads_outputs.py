@@ -18,7 +18,11 @@ VTK_POLY_LINE 4 of two points). (5) The life map in the series: the portal
 frame with a fatigue block: frame_response.xdmf's cell fields
 fatigue_damage_per_hour and fatigue_life at the last time step equal, element
 by element, the largest damage per hour of life_map.csv's rows of that element
-and its inverse. Exit status 0 if all hold."""
+and its inverse. (6) `framedyn transient`'s transient.xdmf: the times of
+displacement_history.csv, and at every time each node's displacement and each
+element's twelve end forces (N_end1 ... Mz_end2) equal to
+displacement_history.csv and section_force_history.csv. Exit status 0 if all
+hold."""
 import csv
 import math
 import os
@@ -159,5 +163,86 @@ cells = [(data.GetCellType(i), [int(data.GetCell(i).GetPointIds().GetId(k)) for 
          for i in range(data.GetNumberOfCells())]
 check(data.GetNumberOfPoints() == 6 and cells[0] == (21, [0, 2, 1]) and cells[1] == (21, [2, 4, 3]) and cells[2][0] in (3, 4) and cells[2][1] == [4, 5],
       f"mixed mesh: 6 points and cells {cells} (B32R 1-3 mid 2, B32 3-5 mid 4, B31 5-6)")
+
+# (6) framedyn transient's series: a tip-mass cantilever under a step load (*MODAL DYNAMIC).
+deck = """** units: m-N-s
+*NODE, NSET=ALL
+1, 0, 0, 0
+2, 0.5, 0, 0
+3, 1.0, 0, 0
+4, 1.5, 0, 0
+5, 2.0, 0, 0
+*ELEMENT, TYPE=B33, ELSET=BEAM
+1, 1, 2
+2, 2, 3
+3, 3, 4
+4, 4, 5
+*BEAM SECTION, ELSET=BEAM, MATERIAL=STEEL, SECTION=RECT
+0.05, 0.1
+0, 1, 0
+*MATERIAL, NAME=STEEL
+*ELASTIC
+2.1e11, 0.3
+*DENSITY
+7850
+*ELEMENT, TYPE=MASS, ELSET=TIPMASS
+100, 5
+*MASS, ELSET=TIPMASS
+100
+*BOUNDARY
+1, 1, 6
+*AMPLITUDE, NAME=STEP
+0, 1, 1, 1
+*STEP
+*FREQUENCY
+4
+*END STEP
+*STEP
+*MODAL DYNAMIC
+0.002, 0.1
+*CLOAD, AMPLITUDE=STEP
+5, 3, 1000.
+5, 2, 300.
+*END STEP
+"""
+with open(os.path.join(work, "tip_mass.inp"), "w") as f:
+    f.write(deck)
+out = os.path.join(work, "transient")
+run("transient", os.path.join(work, "tip_mass.inp"), "--out", out)
+nodes = {}  # time -> node -> (ux, uy, uz)
+with open(os.path.join(out, "displacement_history.csv")) as f:
+    for row in csv.reader(f):
+        if not row[0].startswith("time"):
+            nodes.setdefault(float(row[0]), {})[int(row[1])] = tuple(float(v) for v in row[2:5])
+ends = {}  # time -> element -> [N, Vy, Vz, T, My, Mz of end 1, then of end 2]
+with open(os.path.join(out, "section_force_history.csv")) as f:
+    for row in csv.reader(f):
+        if not row[0].startswith("time"):
+            ends.setdefault(float(row[0]), {}).setdefault(int(row[1]), [0.0] * 12)[6 * (int(row[2]) - 1):6 * int(row[2])] = [float(v) for v in row[3:9]]
+reader = Xdmf3ReaderS(FileName=[os.path.join(out, "transient.xdmf")])
+reader.UpdatePipelineInformation()
+times = list(reader.TimestepValues)
+check(len(times) == len(nodes) and all(abs(a - b) <= 1e-9 for a, b in zip(times, sorted(nodes))),
+      f"transient.xdmf: {len(times)} time steps, the {len(nodes)} times of displacement_history.csv")
+names = [f"{c}_end{e} [{'N' if c in ('N', 'Vy', 'Vz') else 'N*m'}]" for e in (1, 2) for c in ("N", "Vy", "Vz", "T", "My", "Mz")]
+u_scale = max(abs(v) for table in nodes.values() for u in table.values() for v in u)
+f_scale = max(abs(v) for table in ends.values() for e in table.values() for v in e)
+worst_u = worst_f = 0.0
+for t in times:
+    data = read(reader, t)
+    got = point_values(data, "displacement [m]")
+    worst_u = max([worst_u] + [abs(got[n][d] - u[d]) for n, u in nodes[min(nodes, key=lambda x: abs(x - t))].items() for d in range(3)])
+    ids = data.GetCellData().GetArray("element_id")
+    arrays = [data.GetCellData().GetArray(n) for n in names]
+    if any(a is None for a in arrays):
+        check(False, f"transient.xdmf: cell fields {names}")
+        break
+    table = ends[min(ends, key=lambda x: abs(x - t))]
+    for i in range(data.GetNumberOfCells()):
+        e = int(ids.GetValue(i))
+        worst_f = max([worst_f] + [abs(arrays[k].GetValue(i) - table[e][k]) for k in range(12)])
+check(worst_u <= 1e-8 * u_scale and worst_f <= 1e-8 * f_scale,
+      f"transient.xdmf: displacement at every node and time = displacement_history.csv (worst {worst_u:.2e} m of {u_scale:.3e}), "
+      f"the twelve end forces of every element = section_force_history.csv (worst {worst_f:.2e} of {f_scale:.3e})")
 
 sys.exit(1 if failures else 0)
