@@ -11,11 +11,11 @@
 #include <sstream>
 #include <thread>
 
-#include "batch/key_path.h"
 #include "batch/sensitivity.h"
 #include "core/cell_text.h"
 #include "core/error.h"
 #include "core/results_folder.h"
+#include "coupling/study_key_path.h"
 #include "report/csv_writer.h"
 #include "report/study_run.h"
 
@@ -28,7 +28,8 @@ namespace {
 bool summary_value(const nlohmann::ordered_json& summary, const std::string& path, double& value, std::string& unit, std::string& why) {
   const nlohmann::ordered_json* n = &summary;
   std::string here;  // the path so far
-  for (const KeyPathStep& k : parse_key_path(path)) {
+  const std::vector<coupling::KeyPathStep> steps = coupling::parse_key_path(path).value();  // checked when the design was read
+  for (const coupling::KeyPathStep& k : steps) {
     if (!k.is_item) {
       if (!n->is_object() || !n->contains(k.key)) {
         why = fmt::format("the run's summary has no {}{}{}", here, here.empty() ? "" : ".", k.key);
@@ -148,7 +149,7 @@ RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::ve
   r.output_units.assign(design.outputs.size(), "");
   try {
     YAML::Node doc = YAML::Load(design.study_text);  // with its marks: a refused sample's error names the study's line
-    for (std::size_t j = 0; j < values.size(); ++j) set_number(doc, design.parameters[j].key, values[j]);
+    for (std::size_t j = 0; j < values.size(); ++j) coupling::set_study_number(doc, design.parameters[j].key, values[j], design.study_file.string());
     report::StudyRunOptions opt;
     if (keep) opt.out = *keep;
     const report::StudyRun run = report::run_study_document(doc, design.study_file, opt);

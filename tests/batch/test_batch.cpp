@@ -25,9 +25,10 @@
 
 #include "batch/design.h"
 #include "batch/engine.h"
-#include "batch/key_path.h"
 #include "batch/sampling.h"
 #include "batch/sensitivity.h"
+#include "core/error.h"
+#include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
 #include "tests/support/run_framedyn.h"
@@ -97,33 +98,67 @@ plow: {shaker: {force: 26530, frequency_hz: 18.33}}
 
 TEST(KeyPath, SetsExactlyTheNumberItNamesByKeyIndexOrName) {
   YAML::Node doc = YAML::Load(kDoc);
-  batch::set_number(doc, "soil.damping", 0.1 + 0.2);
-  batch::set_number(doc, "frame.parts[engine].weight", 900);
-  batch::set_number(doc, "frame.parts[1].position[2]", -3.5);
-  batch::set_number(doc, "plow.shaker.frequency_hz", 20.125);
-  EXPECT_EQ(batch::get_number(doc, "soil.damping"), 0.1 + 0.2);  // read back exactly (shortest round-trip text)
+  using framedyn::coupling::set_study_number;
+  set_study_number(doc, "soil.damping", 0.1 + 0.2, "study.yaml");
+  set_study_number(doc, "frame.parts[engine].weight", 900, "study.yaml");
+  set_study_number(doc, "frame.parts[1].position[2]", -3.5, "study.yaml");
+  set_study_number(doc, "plow.shaker.frequency_hz", 20.125, "study.yaml");
+  EXPECT_EQ(framedyn::coupling::study_number(doc, "soil.damping", "study.yaml"), 0.1 + 0.2);  // read back exactly (shortest round-trip text)
   EXPECT_EQ(doc["frame"]["parts"][1]["weight"].Scalar(), "900");
   EXPECT_EQ(doc["frame"]["parts"][1]["position"][2].Scalar(), "-3.5");
   EXPECT_EQ(doc["plow"]["shaker"]["frequency_hz"].as<double>(), 20.125);
   EXPECT_EQ(doc["soil"]["stiffness"].as<double>(), 40000.0);  // nothing else changed
+  YAML::Node list = YAML::Load("[[1, 2], [3, 4]]");  // a path may begin with an item, and items may follow items
+  set_study_number(list, "[1][0]", 7, "study.yaml");
+  EXPECT_EQ(list[1][0].Scalar(), "7");
 }
 
+// The one walker (coupling/study_key_path) behind Study.set and design files:
+// docs/errors.md PY-01 to PY-05, naming the study file, the line of the deepest key found and the path.
 TEST(KeyPath, RefusesAnUnknownKeyOrATargetThatIsNotANumberSayingWhatIsThere) {
   YAML::Node doc = YAML::Load(kDoc);
-  const auto message = [&](const std::string& path) {
+  const auto message = [&](const std::string& path, double value = 1.0) {
     try {
-      batch::set_number(doc, path, 1.0, "the study");
-    } catch (const batch::KeyPathError& e) {
+      framedyn::coupling::set_study_number(doc, path, value, "study.yaml");
+    } catch (const framedyn::core::InputError& e) {
       return std::string(e.what());
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message("soil.dampin"), "the study's soil has no key 'dampin' (it has stiffness, damping)");
-  EXPECT_EQ(message("frame.parts[cab].weight"), "the study's frame.parts has no item named 'cab' (it has frame_structure, engine)");
-  EXPECT_EQ(message("frame.parts[2].weight"), "the study's frame.parts has 2 items (positions 0 to 1), not [2]");
-  EXPECT_EQ(message("frame.parts[0].from"), "the study's frame.parts[0].from is 'frame_mesh', not a number");
-  EXPECT_EQ(message("plow.shaker"), "the study's plow.shaker is a map, not a number");
-  EXPECT_EQ(message("soil..damping"), "'soil..damping' is not a key path (an empty key)");
+  EXPECT_EQ(message("soil.dampin"), "study.yaml:1: soil.dampin: expected a key of the study (soil has stiffness, damping), found no key 'dampin'");
+  EXPECT_EQ(message("frame.parts[cab].weight"),
+            "study.yaml:4: frame.parts[cab].weight: expected an item of frame.parts (index 0 to 1, or the name of an item), found no item 'cab'");
+  EXPECT_EQ(message("frame.parts[2].weight"),
+            "study.yaml:4: frame.parts[2].weight: expected an item of frame.parts (index 0 to 1, or the name of an item), found no item '2'");
+  EXPECT_EQ(message("frame.parts[0].from").rfind("study.yaml:4: frame.parts[0].from: expected a number there (a key path sets numbers only), found ", 0), 0u);
+  EXPECT_EQ(message("plow.shaker").rfind("study.yaml:6: plow.shaker: expected a number there (a key path sets numbers only), found ", 0), 0u);
+  EXPECT_EQ(message("soil.damping", std::nan("")), "study.yaml:1: soil.damping: expected a finite number, found nan");
+  for (const std::string& bad : std::vector<std::string>{"soil..damping", "parts[", "a.[0]", "a[0]b", "a]", "soil."})
+    EXPECT_EQ(message(bad), "study.yaml: " + bad + ": expected a key path: keys joined by '.', a list item as key[index] or key[name], found '" + bad + "'")
+        << bad;
+}
+
+// A design file's parameter key goes through the same walker: the message is Study.set's, naming the study file.
+TEST(KeyPath, ADesignsUnknownParameterKeyGetsTheStudySetMessage) {
+  TempDir dir("framedyn_test_batch");
+  dir.write("study.yaml", kDoc);
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: monte_carlo, samples: 4}\nparameters:\n"
+            "  - {key: soil.dampin, low: 1, high: 2}\noutputs: [frame.peak_normal_stress]\n");
+  std::string from_design, from_set;
+  try {
+    batch::read_batch_design((dir / "design.yaml").string());
+  } catch (const framedyn::core::InputError& e) {
+    from_design = e.what();
+  }
+  try {
+    YAML::Node doc = YAML::Load(kDoc);
+    framedyn::coupling::set_study_number(doc, "soil.dampin", 1.5, (dir / "study.yaml").string());
+  } catch (const framedyn::core::InputError& e) {
+    from_set = e.what();
+  }
+  EXPECT_FALSE(from_set.empty());
+  EXPECT_EQ(from_design, from_set);
 }
 
 // ------------------------------------------------------------- sampling
