@@ -15,6 +15,7 @@
 #include "core/cell_text.h"
 #include "core/error.h"
 #include "core/results_folder.h"
+#include "coupling/frame_model_cache.h"
 #include "coupling/study_key_path.h"
 #include "report/csv_writer.h"
 #include "report/study_run.h"
@@ -140,7 +141,8 @@ std::vector<std::vector<double>> design_samples(const BatchDesign& design) {
   return rows;
 }
 
-RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::vector<double>& values, const std::optional<std::filesystem::path>& keep) {
+RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::vector<double>& values, const std::optional<std::filesystem::path>& keep,
+                     coupling::FrameModelCache* frame_cache) {
   RunRecord r;
   r.index = index;
   r.present = true;
@@ -152,6 +154,7 @@ RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::ve
     for (std::size_t j = 0; j < values.size(); ++j) coupling::set_study_number(doc, design.parameters[j].key, values[j], design.study_file.string());
     report::StudyRunOptions opt;
     if (keep) opt.out = *keep;
+    opt.frame_cache = frame_cache;
     const report::StudyRun run = report::run_study_document(doc, design.study_file, opt);
     std::string notes;
     for (std::size_t o = 0; o < design.outputs.size(); ++o) {
@@ -343,13 +346,14 @@ BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
   std::size_t finished = 0, since = 0;
   std::exception_ptr failure;
   const auto worker = [&] {
+    coupling::FrameModelCache models;  // this worker's: built by its first run, reused by the next
     for (;;) {
       const std::size_t k = next++;
       if (k >= todo.size()) return;
       const std::size_t i = todo[k];
       std::optional<std::filesystem::path> keep;
       if (options.keep_runs) keep = std::filesystem::path(options.out.string() + "_runs") / fmt::format("run_{:06d}", i);
-      RunRecord r = run_sample(design, i, samples[i], keep);
+      RunRecord r = run_sample(design, i, samples[i], keep, options.reuse_models ? &models : nullptr);
       std::lock_guard<std::mutex> lock(m);
       rows[i] = std::move(r);
       ++finished;

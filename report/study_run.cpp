@@ -395,7 +395,7 @@ StudyRun run_rigid_3d(const YAML::Node& doc, const std::filesystem::path& file, 
     const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
     stage("frame transient (pipeline)");
     const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
-    frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at);
+    frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache);
     stage("writing results (frame)");
     if (!folder.in_memory()) report::write_frame_outputs(*frame, *study.frame_response, folder, options.step);
     j["frame"] = report::frame_summary(*frame, *study.frame_response);
@@ -413,7 +413,7 @@ StudyRun run_rigid_3d(const YAML::Node& doc, const std::filesystem::path& file, 
       cq.paraview = coupling::ParaviewOutput::none;
       cq.fatigue.reset();  // the life map is the run's own support's
       cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
-      compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
+      compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache));
       const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
       nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};
       for (const char* key : {"peak_bending_moment", "peak_von_mises", "static"})

@@ -28,6 +28,7 @@
 #include "batch/sampling.h"
 #include "batch/sensitivity.h"
 #include "core/error.h"
+#include "coupling/frame_model_cache.h"
 #include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
@@ -159,6 +160,37 @@ TEST(KeyPath, ADesignsUnknownParameterKeyGetsTheStudySetMessage) {
   }
   EXPECT_FALSE(from_set.empty());
   EXPECT_EQ(from_design, from_set);
+}
+
+// ------------------------------------------------------------- a frame model built once per worker
+
+// The pipeline (examples/offset_plowing.yaml, 0.1 s) with the worker's frame models reused
+// (coupling/frame_model_cache.h) gives whole summaries identical to runs that build their own:
+// the soil's damping changes only the vehicle's run, so one build serves all three; a part's
+// weight changes the frame model, so it makes a second build, and the first is still kept.
+TEST(FrameModelReuse, PipelineSummariesWithReuseEqualRunsThatBuildTheirOwn) {
+  const fs::path study = kExamples / "offset_plowing.yaml";
+  const YAML::Node base = framedyn::coupling::load_yaml_file(study.string());
+  const auto summary = [&](double damping, double engine_weight, framedyn::coupling::FrameModelCache* cache) {
+    YAML::Node doc = YAML::Clone(base);
+    framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
+    framedyn::coupling::set_study_number(doc, "soil.damping", damping, study.string());
+    framedyn::coupling::set_study_number(doc, "frame.parts[engine].weight", engine_weight, study.string());
+    report::StudyRunOptions o;
+    o.frame_cache = cache;
+    return report::run_study_document(doc, study, o).summary.dump(2);
+  };
+  framedyn::coupling::FrameModelCache cache;
+  const std::vector<std::pair<double, double>> runs = {{200, 850}, {300, 850}, {400, 850}, {300, 900}, {250, 850}};
+  std::set<std::string> distinct;
+  for (const auto& [damping, weight] : runs) {
+    const std::string built = summary(damping, weight, nullptr), reused = summary(damping, weight, &cache);
+    EXPECT_EQ(reused, built) << "soil.damping " << damping << ", engine weight " << weight;
+    distinct.insert(built);
+  }
+  EXPECT_EQ(distinct.size(), runs.size());  // every run's numbers differ: the reuse is not of results
+  EXPECT_EQ(cache.builds(), 2u);            // the 850-lb engine's frame, then the 900-lb engine's
+  EXPECT_EQ(cache.reuses(), 3u);            // damping 300 and 400, and 250 back on the first build
 }
 
 // ------------------------------------------------------------- sampling
