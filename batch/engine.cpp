@@ -330,6 +330,33 @@ std::vector<RunRecord> starting_rows(const BatchDesign& design, const BatchOptio
   return rows;
 }
 
+void run_on_threads(std::size_t count, int threads, bool reuse_models, const std::function<void(std::size_t, coupling::FrameModelCache*)>& run) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex m;
+  std::exception_ptr failure;
+  const auto worker = [&] {
+    coupling::FrameModelCache models;  // this worker's: built by its first run, reused by the next
+    while (!stop) {
+      const std::size_t i = next++;
+      if (i >= count) return;
+      try {
+        run(i, reuse_models ? &models : nullptr);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(1, count))));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
   core::check_results_target(options.out, batch_inputs(design));  // before the runs: a refusal costs no time
   const std::vector<std::vector<double>> samples = design_samples(design);
@@ -341,38 +368,27 @@ BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
     if (r.present) ++counts.skipped;
     else todo.push_back(r.index);
   const std::size_t every = options.checkpoint_runs > 0 ? options.checkpoint_runs : std::max<std::size_t>(1, samples.size() / 20);
-  std::atomic<std::size_t> next{0};
   std::mutex m;
   std::size_t finished = 0, since = 0;
   std::exception_ptr failure;
-  const auto worker = [&] {
-    coupling::FrameModelCache models;  // this worker's: built by its first run, reused by the next
-    for (;;) {
-      const std::size_t k = next++;
-      if (k >= todo.size()) return;
-      const std::size_t i = todo[k];
-      std::optional<std::filesystem::path> keep;
-      if (options.keep_runs) keep = std::filesystem::path(options.out.string() + "_runs") / fmt::format("run_{:06d}", i);
-      RunRecord r = run_sample(design, i, samples[i], keep, options.reuse_models ? &models : nullptr);
-      std::lock_guard<std::mutex> lock(m);
-      rows[i] = std::move(r);
-      ++finished;
-      if (options.progress) options.progress(finished, todo.size());
-      if (++since >= every && finished < todo.size() && !failure) {
-        since = 0;
-        try {
-          write_batch_folder(design, rows, options);  // a checkpoint: --resume continues from it
-        } catch (...) {
-          failure = std::current_exception();
-        }
+  run_on_threads(todo.size(), options.threads, options.reuse_models, [&](std::size_t k, coupling::FrameModelCache* models) {
+    const std::size_t i = todo[k];
+    std::optional<std::filesystem::path> keep;
+    if (options.keep_runs) keep = std::filesystem::path(options.out.string() + "_runs") / fmt::format("run_{:06d}", i);
+    RunRecord r = run_sample(design, i, samples[i], keep, models);
+    std::lock_guard<std::mutex> lock(m);
+    rows[i] = std::move(r);
+    ++finished;
+    if (options.progress) options.progress(finished, todo.size());
+    if (++since >= every && finished < todo.size() && !failure) {
+      since = 0;
+      try {
+        write_batch_folder(design, rows, options);  // a checkpoint: --resume continues from it
+      } catch (...) {
+        failure = std::current_exception();
       }
     }
-  };
-  const int n = std::max(1, std::min<int>(options.threads, static_cast<int>(std::max<std::size_t>(1, todo.size()))));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  });
   if (failure) std::rethrow_exception(failure);
   write_batch_folder(design, rows, options);
   for (const RunRecord& r : rows) {

@@ -66,6 +66,16 @@ struct BatchCounts {
   std::size_t total = 0, done = 0, failed = 0, skipped = 0;  // skipped: read back by --resume
 };
 
+// The engine's threads: calls run(i, models) once for every i in [0, count), on
+// `threads` threads (at most count; the calling thread is one of them) taking
+// the next index as they finish, each with its own frame models
+// (coupling/frame_model_cache.h; null with reuse_models false). `run` must
+// leave its result in a slot of its own for i. The first exception a run
+// throws is rethrown once every thread has stopped (the others stop taking runs).
+// Used by run_batch and by the Python module's framedyn.batch.
+void run_on_threads(std::size_t count, int threads, bool reuse_models,
+                    const std::function<void(std::size_t, coupling::FrameModelCache*)>& run);
+
 // Runs the design on threads; writes (and checkpoints) the results folder.
 BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options);
 
