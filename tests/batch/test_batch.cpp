@@ -2,7 +2,9 @@
 // report::run_study_document (report/study_run.h):
 //   - a study run in memory gives summary.json's content byte for byte and writes nothing;
 //   - a parsed document changed in memory runs as the same change made in the file;
-//   - key paths set exactly the number they name and refuse what is not one;
+//   - key paths (the one walker, coupling/study_key_path) set exactly the number they name and refuse
+//     what is not one with Study.set's messages, from a design file too;
+//   - a pipeline run with its worker's frame model reused gives the summary of a run that builds its own;
 //   - the inverse normal CDF against tabulated quantiles; Latin hypercube strata each sampled once;
 //   - standardised regression coefficients of an exactly linear output equal their closed form,
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
