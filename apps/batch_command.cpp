@@ -23,7 +23,7 @@ namespace {
 struct BatchCommandOptions {
   std::string design, out;
   int threads = 0;  // 0: one per core
-  bool resume = false, keep_runs = false;
+  bool resume = false, keep_runs = false, rebuild_models = false;
   int checkpoint = 0;
   ProgressFlags progress;
 };
@@ -40,6 +40,7 @@ int run_batch_command(const BatchCommandOptions& opt) {
   bo.threads = opt.threads > 0 ? opt.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   bo.resume = opt.resume;
   bo.keep_runs = opt.keep_runs;
+  bo.reuse_models = !opt.rebuild_models;
   bo.checkpoint_runs = static_cast<std::size_t>(opt.checkpoint);
   progress.stage("reading " + opt.design);
   const batch::BatchDesign design = batch::read_batch_design(opt.design);
@@ -73,6 +74,8 @@ void add_batch_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--threads,-j", opt->threads, "Runs at the same time on this machine (0: one per core); results do not depend on it")->capture_default_str();
   cmd->add_flag("--resume", opt->resume, "Continue the batch in --out: skip the runs its runs.csv holds");
   cmd->add_flag("--keep-runs", opt->keep_runs, "Also write each run's own results folder (<out>_runs/run_NNNNNN)");
+  cmd->add_flag("--rebuild-models", opt->rebuild_models,
+                "Build every run's frame model anew instead of once per worker (the same results; for timing the reuse)");
   cmd->add_option("--checkpoint", opt->checkpoint, "Write the results folder every N runs (0: every 5 % of the runs)")->capture_default_str();
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_batch_command(*opt); }; });

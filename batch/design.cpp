@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "core/units.h"
-#include "batch/key_path.h"
+#include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 
 namespace framedyn::batch {
@@ -117,14 +117,10 @@ BatchDesign read_batch_design(const std::string& file) {
   const std::vector<YamlMap> params = top.list_of_maps("parameters");
   if (params.empty()) throw top.error("parameters", "a list of parameters {key, ...}", top.has("parameters") ? "an empty list" : "no parameters");
   std::set<std::string> keys;
-  const std::string study_name = "the study " + d.study_file.filename().string();
   for (const YamlMap& p : params) {
     ParameterSpec spec = read_parameter(p, d.sampling.method);
-    try {
-      get_number(d.study, spec.key, study_name);
-    } catch (const KeyPathError& e) {
-      throw p.error("key", "a key path to a number of the study (e.g. soil.damping, frame.parts[engine].weight)", e.what());
-    }
+    // The key path's own errors (docs/errors.md PY-01 to PY-04) name the study, its line and the path.
+    coupling::study_number(d.study, spec.key, d.study_file.string());
     if (!keys.insert(spec.key).second) throw p.error("key", "each key once", "'" + spec.key + "' again");
     d.parameter_lines.push_back(p.location("key").line);
     d.parameters.push_back(spec);
@@ -140,11 +136,7 @@ BatchDesign read_batch_design(const std::string& file) {
                                          top.has("outputs") ? "an empty list" : "no outputs");
   std::set<std::string> outs;
   for (const std::string& o : d.outputs) {
-    try {
-      parse_key_path(o);
-    } catch (const KeyPathError& e) {
-      throw top.error("outputs", "key paths into a run's summary", e.what());
-    }
+    if (!coupling::parse_key_path(o)) throw top.error("outputs", std::string(coupling::kKeyPathForm) + " into a run's summary", "'" + o + "'");
     if (!outs.insert(o).second) throw top.error("outputs", "each output once", "'" + o + "' again");
   }
   return d;

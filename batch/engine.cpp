@@ -11,11 +11,12 @@
 #include <sstream>
 #include <thread>
 
-#include "batch/key_path.h"
 #include "batch/sensitivity.h"
 #include "core/cell_text.h"
 #include "core/error.h"
 #include "core/results_folder.h"
+#include "coupling/frame_model_cache.h"
+#include "coupling/study_key_path.h"
 #include "report/csv_writer.h"
 #include "report/study_run.h"
 
@@ -28,7 +29,8 @@ namespace {
 bool summary_value(const nlohmann::ordered_json& summary, const std::string& path, double& value, std::string& unit, std::string& why) {
   const nlohmann::ordered_json* n = &summary;
   std::string here;  // the path so far
-  for (const KeyPathStep& k : parse_key_path(path)) {
+  const std::vector<coupling::KeyPathStep> steps = coupling::parse_key_path(path).value();  // checked when the design was read
+  for (const coupling::KeyPathStep& k : steps) {
     if (!k.is_item) {
       if (!n->is_object() || !n->contains(k.key)) {
         why = fmt::format("the run's summary has no {}{}{}", here, here.empty() ? "" : ".", k.key);
@@ -139,7 +141,8 @@ std::vector<std::vector<double>> design_samples(const BatchDesign& design) {
   return rows;
 }
 
-RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::vector<double>& values, const std::optional<std::filesystem::path>& keep) {
+RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::vector<double>& values, const std::optional<std::filesystem::path>& keep,
+                     coupling::FrameModelCache* frame_cache) {
   RunRecord r;
   r.index = index;
   r.present = true;
@@ -148,9 +151,10 @@ RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::ve
   r.output_units.assign(design.outputs.size(), "");
   try {
     YAML::Node doc = YAML::Load(design.study_text);  // with its marks: a refused sample's error names the study's line
-    for (std::size_t j = 0; j < values.size(); ++j) set_number(doc, design.parameters[j].key, values[j]);
+    for (std::size_t j = 0; j < values.size(); ++j) coupling::set_study_number(doc, design.parameters[j].key, values[j], design.study_file.string());
     report::StudyRunOptions opt;
     if (keep) opt.out = *keep;
+    opt.frame_cache = frame_cache;
     const report::StudyRun run = report::run_study_document(doc, design.study_file, opt);
     std::string notes;
     for (std::size_t o = 0; o < design.outputs.size(); ++o) {
@@ -326,6 +330,33 @@ std::vector<RunRecord> starting_rows(const BatchDesign& design, const BatchOptio
   return rows;
 }
 
+void run_on_threads(std::size_t count, int threads, bool reuse_models, const std::function<void(std::size_t, coupling::FrameModelCache*)>& run) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex m;
+  std::exception_ptr failure;
+  const auto worker = [&] {
+    coupling::FrameModelCache models;  // this worker's: built by its first run, reused by the next
+    while (!stop) {
+      const std::size_t i = next++;
+      if (i >= count) return;
+      try {
+        run(i, reuse_models ? &models : nullptr);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(1, count))));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
   core::check_results_target(options.out, batch_inputs(design));  // before the runs: a refusal costs no time
   const std::vector<std::vector<double>> samples = design_samples(design);
@@ -337,37 +368,27 @@ BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
     if (r.present) ++counts.skipped;
     else todo.push_back(r.index);
   const std::size_t every = options.checkpoint_runs > 0 ? options.checkpoint_runs : std::max<std::size_t>(1, samples.size() / 20);
-  std::atomic<std::size_t> next{0};
   std::mutex m;
   std::size_t finished = 0, since = 0;
   std::exception_ptr failure;
-  const auto worker = [&] {
-    for (;;) {
-      const std::size_t k = next++;
-      if (k >= todo.size()) return;
-      const std::size_t i = todo[k];
-      std::optional<std::filesystem::path> keep;
-      if (options.keep_runs) keep = std::filesystem::path(options.out.string() + "_runs") / fmt::format("run_{:06d}", i);
-      RunRecord r = run_sample(design, i, samples[i], keep);
-      std::lock_guard<std::mutex> lock(m);
-      rows[i] = std::move(r);
-      ++finished;
-      if (options.progress) options.progress(finished, todo.size());
-      if (++since >= every && finished < todo.size() && !failure) {
-        since = 0;
-        try {
-          write_batch_folder(design, rows, options);  // a checkpoint: --resume continues from it
-        } catch (...) {
-          failure = std::current_exception();
-        }
+  run_on_threads(todo.size(), options.threads, options.reuse_models, [&](std::size_t k, coupling::FrameModelCache* models) {
+    const std::size_t i = todo[k];
+    std::optional<std::filesystem::path> keep;
+    if (options.keep_runs) keep = std::filesystem::path(options.out.string() + "_runs") / fmt::format("run_{:06d}", i);
+    RunRecord r = run_sample(design, i, samples[i], keep, models);
+    std::lock_guard<std::mutex> lock(m);
+    rows[i] = std::move(r);
+    ++finished;
+    if (options.progress) options.progress(finished, todo.size());
+    if (++since >= every && finished < todo.size() && !failure) {
+      since = 0;
+      try {
+        write_batch_folder(design, rows, options);  // a checkpoint: --resume continues from it
+      } catch (...) {
+        failure = std::current_exception();
       }
     }
-  };
-  const int n = std::max(1, std::min<int>(options.threads, static_cast<int>(std::max<std::size_t>(1, todo.size()))));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  });
   if (failure) std::rethrow_exception(failure);
   write_batch_folder(design, rows, options);
   for (const RunRecord& r : rows) {

@@ -17,6 +17,10 @@
 
 #include "batch/design.h"
 
+namespace framedyn::coupling {
+class FrameModelCache;
+}
+
 namespace framedyn::batch {
 
 // One run's row. Cells are the table's text (10 significant digits); the
@@ -35,8 +39,10 @@ struct RunRecord {
 std::vector<std::vector<double>> design_samples(const BatchDesign& design);
 
 // Runs one sample in memory (with keep_folder: also writes that run's results folder).
+// `frame_cache`: the calling worker's frame models (coupling/frame_model_cache.h), built
+// once and reused by its later runs; the row is the same with or without it.
 RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::vector<double>& values,
-                     const std::optional<std::filesystem::path>& keep_folder = std::nullopt);
+                     const std::optional<std::filesystem::path>& keep_folder = std::nullopt, coupling::FrameModelCache* frame_cache = nullptr);
 
 // runs.csv's text: index, parameters [the study's units], outputs [unit], status, message.
 std::string runs_csv(const BatchDesign& design, const std::vector<RunRecord>& rows);
@@ -51,6 +57,7 @@ struct BatchOptions {
   int threads = 1;
   bool resume = false;
   bool keep_runs = false;          // each run's own results folder in <out>_runs/run_NNNNNN
+  bool reuse_models = true;        // each worker builds its frame models once (coupling/frame_model_cache.h); false: every run builds its own
   std::size_t checkpoint_runs = 0;  // write the folder every so many runs (0: every 5 % of the runs)
   std::function<void(std::size_t, std::size_t)> progress;  // (runs finished, runs to do)
 };
@@ -58,6 +65,16 @@ struct BatchOptions {
 struct BatchCounts {
   std::size_t total = 0, done = 0, failed = 0, skipped = 0;  // skipped: read back by --resume
 };
+
+// The engine's threads: calls run(i, models) once for every i in [0, count), on
+// `threads` threads (at most count; the calling thread is one of them) taking
+// the next index as they finish, each with its own frame models
+// (coupling/frame_model_cache.h; null with reuse_models false). `run` must
+// leave its result in a slot of its own for i. The first exception a run
+// throws is rethrown once every thread has stopped (the others stop taking runs).
+// Used by run_batch and by the Python module's framedyn.batch.
+void run_on_threads(std::size_t count, int threads, bool reuse_models,
+                    const std::function<void(std::size_t, coupling::FrameModelCache*)>& run);
 
 // Runs the design on threads; writes (and checkpoints) the results folder.
 BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options);

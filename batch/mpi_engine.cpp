@@ -5,6 +5,7 @@
 #include "batch/mpi_engine.h"
 
 #include "core/results_folder.h"
+#include "coupling/frame_model_cache.h"
 
 #include <cstdlib>
 
@@ -82,11 +83,13 @@ BatchCounts run_batch_mpi(const BatchDesign& design, const BatchOptions& options
     // A worker: no console of its own (the manager reports), and never the results folder.
     std::fflush(stdout);
     if (!std::freopen("/dev/null", "w", stdout)) return {};
+    coupling::FrameModelCache models;  // this worker's frame models: built by its first run, reused by the next
     for (;;) {
       long long index = -1;
       MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       if (index < 0) return {};
-      const std::string text = to_json(run_sample(design, static_cast<std::size_t>(index), samples[static_cast<std::size_t>(index)])).dump();
+      const std::string text = to_json(run_sample(design, static_cast<std::size_t>(index), samples[static_cast<std::size_t>(index)], std::nullopt,
+                                                  options.reuse_models ? &models : nullptr)).dump();
       MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kResult, MPI_COMM_WORLD);
     }
   }

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "batch/design.h"
@@ -30,26 +31,50 @@ int main(int argc, char** argv) {
                         << "  - frame.peak_normal_stress\n  - rigid.response.peak_cutting_force\n";
   // An absolute study path: the design file's folder is joined with it (an absolute path stays itself).
   const framedyn::batch::BatchDesign d = framedyn::batch::read_batch_design(design.string());
+  // Each engine twice in the same run, its workers building their frame models once (new) and every
+  // run building its own (old, --rebuild-models): the ratio new/old is measured under the same load.
   double one = 0.0;
   for (int threads : {1, 2}) {
-    framedyn::batch::BatchOptions o;
-    o.out = dir / fmt::format("threads_{}", threads);
-    o.threads = threads;
-    const auto t0 = std::chrono::steady_clock::now();
-    const framedyn::batch::BatchCounts c = framedyn::batch::run_batch(d, o);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (threads == 1) one = s;
-    fmt::print("{} thread(s): {} runs ({} failed) in {:.2f} s: {:.2f} runs/s, parallel efficiency {:.0f} %\n", threads, c.total, c.failed, s, c.total / s,
-               100.0 * one / (s * threads));
+    double seconds[2] = {0.0, 0.0};
+    for (int reuse : {0, 1}) {
+      framedyn::batch::BatchOptions o;
+      o.out = dir / fmt::format("threads_{}_{}", threads, reuse);
+      o.threads = threads;
+      o.reuse_models = reuse == 1;
+      const auto t0 = std::chrono::steady_clock::now();
+      const framedyn::batch::BatchCounts c = framedyn::batch::run_batch(d, o);
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      seconds[reuse] = s;
+      if (threads == 1 && reuse == 1) one = s;
+      fmt::print("{} thread(s), {}: {} runs ({} failed) in {:.2f} s: {:.2f} runs/s", threads, reuse ? "models reused" : "models rebuilt", c.total, c.failed, s,
+                 c.total / s);
+      if (reuse == 1) fmt::print(", parallel efficiency {:.0f} %, speed new/old {:.3f}", 100.0 * one / (s * threads), seconds[0] / seconds[1]);
+      fmt::print("\n");
+    }
   }
   for (int ranks : {2, 3}) {
-    const std::string cmd = fmt::format("cd {} && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n {} --oversubscribe {} batch design.yaml --out mpi_{} -q > /dev/null",
-                                        dir.string(), ranks, FRAMEDYN_BINARY, ranks);
-    const auto t0 = std::chrono::steady_clock::now();
-    const int rc = std::system(cmd.c_str());
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    fmt::print("{} MPI ranks ({} worker(s)): {} in {:.2f} s: {:.2f} runs/s (mpirun start-up included)\n", ranks, ranks - 1, rc == 0 ? "done" : "FAILED", s,
-               runs / s);
+    double seconds[2] = {0.0, 0.0};
+    for (int reuse : {0, 1}) {
+      const std::string cmd = fmt::format(
+          "cd {} && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n {} --oversubscribe {} batch design.yaml --out mpi_{}_{} -q {}> /dev/null",
+          dir.string(), ranks, FRAMEDYN_BINARY, ranks, reuse, reuse ? "" : "--rebuild-models ");
+      const auto t0 = std::chrono::steady_clock::now();
+      const int rc = std::system(cmd.c_str());
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      seconds[reuse] = s;
+      fmt::print("{} MPI ranks ({} worker(s)), {}: {} in {:.2f} s: {:.2f} runs/s (mpirun start-up included)", ranks, ranks - 1,
+                 reuse ? "models reused" : "models rebuilt", rc == 0 ? "done" : "FAILED", s, runs / s);
+      if (reuse == 1) fmt::print(", speed new/old {:.3f}", seconds[0] / seconds[1]);
+      fmt::print("\n");
+    }
+  }
+  // The tables do not depend on the reuse.
+  for (const char* pair : {"threads_1", "threads_2", "mpi_2", "mpi_3"}) {
+    const auto text = [&](int reuse) {
+      std::ifstream in(dir / fmt::format("{}_{}", pair, reuse) / "runs.csv", std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    fmt::print("{}: runs.csv with and without reuse {}\n", pair, text(0) == text(1) && !text(0).empty() ? "identical" : "DIFFER");
   }
   fs::remove_all(dir);
   return 0;

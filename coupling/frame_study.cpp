@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "coupling/frame_model_cache.h"
 #include "fem/inp_reader.h"
 #include "fem/modal_analysis.h"
 #include "fem/quadratic_beam_element.h"
@@ -376,13 +377,19 @@ std::vector<int> axle_pin_supports(const fem::FrameModel& model, const FrameStud
 }  // namespace
 
 FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, const LoadHistory* static_loads,
-                                  std::optional<double> rigid_steady_from) {
+                                  std::optional<double> rigid_steady_from, FrameModelCache* cache) {
   const auto start = std::chrono::steady_clock::now();
   FrameStudyResults out;
   const fem::SolverCounts counts_before = fem::solver_counts();
-  out.model = read_frame_mesh(q);
-  fem::FrameModel& model = out.model;
+  // Built before by this worker for the same mesh, supports and parts (frame_model_cache.h): the same objects.
+  const std::string build_key = cache ? frame_build_key(q) : std::string();
+  const FrameBuild* const built = cache ? cache->find(build_key) : nullptr;
   const std::string mesh_name = q.mesh.string();
+  fem::FrameModel& model = out.model;
+  if (built) {
+    model = built->supported;
+  } else {
+  out.model = read_frame_mesh(q);
   if (q.supports == FrameSupports::fixed_rear_end || q.supports == FrameSupports::clamped) {
     for (const std::string& name : q.support_sets) {
       const auto set = model.node_sets.find(upper(name));
@@ -402,6 +409,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     throw core::InputError(q.where("supports"), fmt::format("a mesh without *BOUNDARY for {}", supports_name(q.supports)),
                            fmt::format("{} constrained DOFs in {}", model.constraints.size(), mesh_name));
   }
+  }  // built
   // The output sets, before the solve: a misspelt name costs no run.
   for (const RailSpec& rail : q.rails) {
     const auto set = model.element_sets.find(upper(rail.element_set));
@@ -440,9 +448,21 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   check_load_points_on_mesh(model, out.mapping, out.loads, q, loads_file);
   // The frame assembly's parts, after the loads are mapped (a load point reaches frame nodes, never a part's c.g.
   // node): their nodes are numbered after the mesh's, so the distribution gains zero rows for them.
-  out.parts = mount_frame_parts(model, q.parts, mesh_name);
+  std::unique_ptr<FrameBuild> building;  // with a cache and no build for this key: kept for the worker's next runs
+  if (built) {
+    model = built->mounted;
+    out.parts = built->parts;
+    out.mass = built->mass;
+  } else {
+    if (cache && !build_key.empty()) {
+      building = std::make_unique<FrameBuild>();
+      building->key = build_key;
+      building->supported = model;
+    }
+    out.parts = mount_frame_parts(model, q.parts, mesh_name);
+    out.mass = frame_rigid_body_mass(model);  // M alone over all DOFs (supports freed): the one mass-only assembly
+  }
   out.mapping.distribution.conservativeResize(model.dof_count(), out.mapping.distribution.cols());
-  out.mass = frame_rigid_body_mass(model);  // M alone over all DOFs (supports freed): the one mass-only assembly
 
   // One assembly of K and M and one factorisation of the frame per run (issue 17):
   // the modes (dense, or the Lanczos on this K and M), the dynamic response
@@ -450,15 +470,26 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   // Factorisations that remain are of other matrices: K - sigma M and M for
   // the shift-invert Lanczos of `modes: N` (and its Sturm counts), and the
   // Newmark matrix K + a0 M + a1 C of `method: direct`.
-  if (q.supports == FrameSupports::axle_pins) out.pin_supports = axle_pin_supports(model, q);
-  const std::unique_ptr<const fem::FrameDynamics> assembled =
-      out.pin_supports.empty() ? std::make_unique<const fem::FrameDynamics>(model) : std::make_unique<const fem::FrameDynamics>(model, out.pin_supports);
-  const fem::FrameDynamics& frame = *assembled;
+  if (built) out.pin_supports = built->pin_supports;
+  else if (q.supports == FrameSupports::axle_pins) out.pin_supports = axle_pin_supports(model, q);
+  // The dynamics keep a reference to their model: a kept build's own copy, else this run's.
+  std::unique_ptr<const fem::FrameDynamics> assembled;
+  if (!built) {
+    const fem::FrameModel* on = &model;
+    if (building) {
+      building->mounted = model;
+      on = &building->mounted;
+    }
+    assembled = out.pin_supports.empty() ? std::make_unique<const fem::FrameDynamics>(*on) : std::make_unique<const fem::FrameDynamics>(*on, out.pin_supports);
+  }
+  const fem::FrameDynamics& frame = built ? *built->dynamics : *assembled;
   const int rigid_count = frame.rigid_count();  // free-free 6, supported 0, partially supported between
   out.free_rigid_motions = rigid_count;
-  fem::ModalBasis basis;
-  if (q.method != FrameMethod::direct && q.modes < 0) {
-    basis = frame.all_modes();
+  fem::ModalBasis computed_basis;
+  const fem::ModalBasis& basis = built ? built->basis : computed_basis;
+  if (built) {
+  } else if (q.method != FrameMethod::direct && q.modes < 0) {
+    computed_basis = frame.all_modes();
   } else {
     fem::ModalOptions mo;
     const int wanted = q.method == FrameMethod::direct ? std::min(20, frame.dofs().free_count() - 7) : q.modes;
@@ -466,7 +497,16 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     if (mo.mode_count >= frame.dofs().free_count())
       throw core::InputError(q.where("modes"), fmt::format("fewer than {} modes (the free DOFs), or 'all'", frame.dofs().free_count() - rigid_count),
                              std::to_string(q.modes));
-    basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, frame.dofs(), frame.system(), mo));
+    computed_basis = fem::modal_basis(frame.dofs(), fem::compute_modes(model, frame.dofs(), frame.system(), mo));
+  }
+  if (building) {
+    building->parts = out.parts;
+    building->mass = out.mass;
+    building->pin_supports = out.pin_supports;
+    building->dynamics = std::move(assembled);
+    building->basis = computed_basis;
+    // `frame` refers to the kept dynamics (the pointer moved, not the object): valid while the cache holds it.
+    cache->keep(std::move(building));
   }
 
   // The lowest elastic shapes on all DOFs (rigid-link slaves included), for the mode-shape figure.

@@ -66,6 +66,8 @@
 
 namespace framedyn::coupling {
 
+class FrameModelCache;
+
 enum class FrameSupports {
   fixed_rear_end,            // all six DOFs of the support sets fixed (REAR_END: the thesis's SAPIV model)
   clamped,                   // the same on any mesh: all six DOFs of the support sets fixed
@@ -219,8 +221,10 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 // `static_loads` (with request.dead_load): the static loads at the same load
 // points as the history (one row; static_frame_loads_3d), null for gravity alone.
 // `rigid_steady_from`: when the vehicle model reached steady operation (s), for the hot spots.
+// `cache` (coupling/frame_model_cache.h): the model, its dynamics and modes are
+// taken from it when built before for the same key, else built and kept there.
 FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr, const LoadHistory* static_loads = nullptr,
-                                  std::optional<double> rigid_steady_from = std::nullopt);
+                                  std::optional<double> rigid_steady_from = std::nullopt, FrameModelCache* cache = nullptr);
 
 // The names of the supports and the method as a study file spells them.
 const char* supports_name(FrameSupports supports);

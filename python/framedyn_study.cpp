@@ -19,6 +19,8 @@
 #include <string>
 
 #include "core/error.h"
+#include "batch/engine.h"
+#include "coupling/frame_model_cache.h"
 #include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
@@ -87,13 +89,16 @@ Results results_of(const report::StudyRun& run) {
 }
 
 // The document with the sample's values set, then run: the work of one row, without the GIL.
-report::StudyRun run_sample(const Study& s, const std::vector<std::pair<std::string, double>>& sample) {
+report::StudyRun run_sample(const Study& s, const std::vector<std::pair<std::string, double>>& sample, coupling::FrameModelCache* models) {
   YAML::Node doc = YAML::Clone(s.doc);
   for (const auto& [key, value] : sample) coupling::set_study_number(doc, key, value, s.file);
-  return report::run_study_document(doc, s.file);
+  report::StudyRunOptions o;
+  o.frame_cache = models;
+  return report::run_study_document(doc, s.file, o);
 }
 
-py::object batch(const Study& study, const std::vector<std::map<std::string, double>>& samples) {
+py::object batch(const Study& study, const std::vector<std::map<std::string, double>>& samples, int threads) {
+  if (threads < 1) throw py::value_error("threads: expected at least 1, found " + std::to_string(threads));
   // Keys in the order of the first sample that names them (std::map: sorted within a sample).
   std::vector<std::string> keys;
   for (const auto& sample : samples)
@@ -103,15 +108,17 @@ py::object batch(const Study& study, const std::vector<std::map<std::string, dou
   std::vector<std::string> errors(samples.size());
   const Study copy{YAML::Clone(study.doc), study.file};
   {
+    // On the batch engine's threads (batch/engine.h), each with its own frame models, without the GIL;
+    // each run fills its own row, so the table is the serial one whatever the thread count.
     py::gil_scoped_release release;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
+    framedyn::batch::run_on_threads(samples.size(), threads, true, [&](std::size_t i, coupling::FrameModelCache* models) {
       try {
-        const report::StudyRun run = run_sample(copy, {samples[i].begin(), samples[i].end()});
+        const report::StudyRun run = run_sample(copy, {samples[i].begin(), samples[i].end()}, models);
         numbers[i] = report::summary_numbers(run.summary);
       } catch (const std::exception& e) {  // a failed run is a row with its message; the batch goes on
         errors[i] = e.what();
       }
-    }
+    });
   }
   // Columns: the parameters, then every summary number any run has ("path [unit]"), NaN where a run has none.
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -184,7 +191,7 @@ void bind_studies(py::module_& m) {
         return s;
       },
       py::arg("path"), "Reads a study file (framedyn run's YAML)");
-  m.def("batch", &batch, py::arg("study"), py::arg("samples"),
-        "Runs the study once per sample ({key path: value}); a pandas DataFrame (a dict of arrays without pandas): the parameters, "
+  m.def("batch", &batch, py::arg("study"), py::arg("samples"), py::arg("threads") = 1,
+        "Runs the study once per sample ({key path: value}) on `threads` threads of the batch engine (the same table whatever the count); a pandas DataFrame (a dict of arrays without pandas): the parameters, "
         "every number of each run's summary ('path [unit]'), and 'error' (empty, or why the run failed)");
 }

@@ -355,7 +355,7 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
   const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
   stage("frame transient (pipeline)");
   const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
-  details.frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at);
+  details.frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache);
   const coupling::FrameStudyResults& frame = *details.frame;
   stage("writing results (frame)");
   if (!folder.in_memory()) report::write_frame_outputs(frame, *study.frame_response, folder, options.step);
@@ -374,7 +374,7 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
     cq.paraview = coupling::ParaviewOutput::none;
     cq.fatigue.reset();  // the life map is the run's own support's
     cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
-    compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at));
+    compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache));
     const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
     nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};
     for (const char* key : {"peak_bending_moment", "peak_von_mises", "static"})

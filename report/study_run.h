@@ -25,9 +25,17 @@ namespace YAML {
 class Node;
 }
 
+namespace framedyn::coupling {
+class FrameModelCache;
+}
+
 namespace framedyn::report {
 
 struct StudyRunOptions {
+  // A worker's frame models (coupling/frame_model_cache.h), reused by the
+  // pipeline's frame side when this run's mesh, supports and parts are those
+  // of an earlier run; null: built for this run alone. The summary is the same either way.
+  coupling::FrameModelCache* frame_cache = nullptr;
   // Write the results folder here (the files `framedyn run --out` writes); none:
   // the summary only, in memory, and no file is written at all.
   std::optional<std::filesystem::path> out;

@@ -734,7 +734,8 @@ std::vector<Row> rows() {
     r.push_back(row);
   }
 
-  // ---- design files of framedyn batch (batch/design.cpp, batch/key_path.cpp, apps/batch_command.cpp)
+  // ---- design files of framedyn batch (batch/design.cpp, apps/batch_command.cpp); a parameter key the study
+  // does not have is refused by coupling/study_key_path with Study.set's message (PY-01 to PY-05; BATCH-03/04 retired)
   const std::string kDesign =
       "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: latin_hypercube, samples: 4, seed: 1}\nparameters:\n"
       "  - {key: soil.damping, distribution: uniform, low: 150, high: 450}\noutputs:\n  - rigid.response.peak_cutting_force\n";
@@ -745,8 +746,6 @@ std::vector<Row> rows() {
   const std::vector<Row> batch = {
       design_row("BATCH-01", "framedyn_batch: 1", "framedyn_batch: 2", "framedyn_batch", "framedyn_batch"),
       design_row("BATCH-02", "latin_hypercube", "sobol", "sampling:", "sampling.method"),
-      design_row("BATCH-03", "soil.damping", "soil.dampin", "soil.dampin", "parameters[0].key"),
-      design_row("BATCH-04", "soil.damping,", "soil,", "key: soil,", "parameters[0].key"),
       design_row("BATCH-05", "high: 450", "high: 100", "high: 100", "parameters[0].high"),
       design_row("BATCH-06", "uniform", "beta", "beta", "parameters[0].distribution"),
       design_row("BATCH-07", "distribution: uniform, low: 150, high: 450", "values: [1, 2]", "values:", "parameters[0].values"),

@@ -2,7 +2,9 @@
 // report::run_study_document (report/study_run.h):
 //   - a study run in memory gives summary.json's content byte for byte and writes nothing;
 //   - a parsed document changed in memory runs as the same change made in the file;
-//   - key paths set exactly the number they name and refuse what is not one;
+//   - key paths (the one walker, coupling/study_key_path) set exactly the number they name and refuse
+//     what is not one with Study.set's messages, from a design file too;
+//   - a pipeline run with its worker's frame model reused gives the summary of a run that builds its own;
 //   - the inverse normal CDF against tabulated quantiles; Latin hypercube strata each sampled once;
 //   - standardised regression coefficients of an exactly linear output equal their closed form,
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
@@ -25,9 +27,11 @@
 
 #include "batch/design.h"
 #include "batch/engine.h"
-#include "batch/key_path.h"
 #include "batch/sampling.h"
 #include "batch/sensitivity.h"
+#include "core/error.h"
+#include "coupling/frame_model_cache.h"
+#include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
 #include "tests/support/run_framedyn.h"
@@ -97,33 +101,98 @@ plow: {shaker: {force: 26530, frequency_hz: 18.33}}
 
 TEST(KeyPath, SetsExactlyTheNumberItNamesByKeyIndexOrName) {
   YAML::Node doc = YAML::Load(kDoc);
-  batch::set_number(doc, "soil.damping", 0.1 + 0.2);
-  batch::set_number(doc, "frame.parts[engine].weight", 900);
-  batch::set_number(doc, "frame.parts[1].position[2]", -3.5);
-  batch::set_number(doc, "plow.shaker.frequency_hz", 20.125);
-  EXPECT_EQ(batch::get_number(doc, "soil.damping"), 0.1 + 0.2);  // read back exactly (shortest round-trip text)
+  using framedyn::coupling::set_study_number;
+  set_study_number(doc, "soil.damping", 0.1 + 0.2, "study.yaml");
+  set_study_number(doc, "frame.parts[engine].weight", 900, "study.yaml");
+  set_study_number(doc, "frame.parts[1].position[2]", -3.5, "study.yaml");
+  set_study_number(doc, "plow.shaker.frequency_hz", 20.125, "study.yaml");
+  EXPECT_EQ(framedyn::coupling::study_number(doc, "soil.damping", "study.yaml"), 0.1 + 0.2);  // read back exactly (shortest round-trip text)
   EXPECT_EQ(doc["frame"]["parts"][1]["weight"].Scalar(), "900");
   EXPECT_EQ(doc["frame"]["parts"][1]["position"][2].Scalar(), "-3.5");
   EXPECT_EQ(doc["plow"]["shaker"]["frequency_hz"].as<double>(), 20.125);
   EXPECT_EQ(doc["soil"]["stiffness"].as<double>(), 40000.0);  // nothing else changed
+  YAML::Node list = YAML::Load("[[1, 2], [3, 4]]");  // a path may begin with an item, and items may follow items
+  set_study_number(list, "[1][0]", 7, "study.yaml");
+  EXPECT_EQ(list[1][0].Scalar(), "7");
 }
 
+// The one walker (coupling/study_key_path) behind Study.set and design files:
+// docs/errors.md PY-01 to PY-05, naming the study file, the line of the deepest key found and the path.
 TEST(KeyPath, RefusesAnUnknownKeyOrATargetThatIsNotANumberSayingWhatIsThere) {
   YAML::Node doc = YAML::Load(kDoc);
-  const auto message = [&](const std::string& path) {
+  const auto message = [&](const std::string& path, double value = 1.0) {
     try {
-      batch::set_number(doc, path, 1.0, "the study");
-    } catch (const batch::KeyPathError& e) {
+      framedyn::coupling::set_study_number(doc, path, value, "study.yaml");
+    } catch (const framedyn::core::InputError& e) {
       return std::string(e.what());
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message("soil.dampin"), "the study's soil has no key 'dampin' (it has stiffness, damping)");
-  EXPECT_EQ(message("frame.parts[cab].weight"), "the study's frame.parts has no item named 'cab' (it has frame_structure, engine)");
-  EXPECT_EQ(message("frame.parts[2].weight"), "the study's frame.parts has 2 items (positions 0 to 1), not [2]");
-  EXPECT_EQ(message("frame.parts[0].from"), "the study's frame.parts[0].from is 'frame_mesh', not a number");
-  EXPECT_EQ(message("plow.shaker"), "the study's plow.shaker is a map, not a number");
-  EXPECT_EQ(message("soil..damping"), "'soil..damping' is not a key path (an empty key)");
+  EXPECT_EQ(message("soil.dampin"), "study.yaml:1: soil.dampin: expected a key of the study (soil has stiffness, damping), found no key 'dampin'");
+  EXPECT_EQ(message("frame.parts[cab].weight"),
+            "study.yaml:4: frame.parts[cab].weight: expected an item of frame.parts (index 0 to 1, or the name of an item), found no item 'cab'");
+  EXPECT_EQ(message("frame.parts[2].weight"),
+            "study.yaml:4: frame.parts[2].weight: expected an item of frame.parts (index 0 to 1, or the name of an item), found no item '2'");
+  EXPECT_EQ(message("frame.parts[0].from").rfind("study.yaml:4: frame.parts[0].from: expected a number there (a key path sets numbers only), found ", 0), 0u);
+  EXPECT_EQ(message("plow.shaker").rfind("study.yaml:6: plow.shaker: expected a number there (a key path sets numbers only), found ", 0), 0u);
+  EXPECT_EQ(message("soil.damping", std::nan("")), "study.yaml:1: soil.damping: expected a finite number, found nan");
+  for (const std::string& bad : std::vector<std::string>{"soil..damping", "parts[", "a.[0]", "a[0]b", "a]", "soil."})
+    EXPECT_EQ(message(bad), "study.yaml: " + bad + ": expected a key path: keys joined by '.', a list item as key[index] or key[name], found '" + bad + "'")
+        << bad;
+}
+
+// A design file's parameter key goes through the same walker: the message is Study.set's, naming the study file.
+TEST(KeyPath, ADesignsUnknownParameterKeyGetsTheStudySetMessage) {
+  TempDir dir("framedyn_test_batch");
+  dir.write("study.yaml", kDoc);
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: monte_carlo, samples: 4}\nparameters:\n"
+            "  - {key: soil.dampin, low: 1, high: 2}\noutputs: [frame.peak_normal_stress]\n");
+  std::string from_design, from_set;
+  try {
+    batch::read_batch_design((dir / "design.yaml").string());
+  } catch (const framedyn::core::InputError& e) {
+    from_design = e.what();
+  }
+  try {
+    YAML::Node doc = YAML::Load(kDoc);
+    framedyn::coupling::set_study_number(doc, "soil.dampin", 1.5, (dir / "study.yaml").string());
+  } catch (const framedyn::core::InputError& e) {
+    from_set = e.what();
+  }
+  EXPECT_FALSE(from_set.empty());
+  EXPECT_EQ(from_design, from_set);
+}
+
+// ------------------------------------------------------------- a frame model built once per worker
+
+// The pipeline (examples/offset_plowing.yaml, 0.1 s) with the worker's frame models reused
+// (coupling/frame_model_cache.h) gives whole summaries identical to runs that build their own:
+// the soil's damping changes only the vehicle's run, so one build serves all three; a part's
+// weight changes the frame model, so it makes a second build, and the first is still kept.
+TEST(FrameModelReuse, PipelineSummariesWithReuseEqualRunsThatBuildTheirOwn) {
+  const fs::path study = kExamples / "offset_plowing.yaml";
+  const YAML::Node base = framedyn::coupling::load_yaml_file(study.string());
+  const auto summary = [&](double damping, double engine_weight, framedyn::coupling::FrameModelCache* cache) {
+    YAML::Node doc = YAML::Clone(base);
+    framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
+    framedyn::coupling::set_study_number(doc, "soil.damping", damping, study.string());
+    framedyn::coupling::set_study_number(doc, "frame.parts[engine].weight", engine_weight, study.string());
+    report::StudyRunOptions o;
+    o.frame_cache = cache;
+    return report::run_study_document(doc, study, o).summary.dump(2);
+  };
+  framedyn::coupling::FrameModelCache cache;
+  const std::vector<std::pair<double, double>> runs = {{200, 850}, {300, 850}, {400, 850}, {300, 900}, {250, 850}};
+  std::set<std::string> distinct;
+  for (const auto& [damping, weight] : runs) {
+    const std::string built = summary(damping, weight, nullptr), reused = summary(damping, weight, &cache);
+    EXPECT_EQ(reused, built) << "soil.damping " << damping << ", engine weight " << weight;
+    distinct.insert(built);
+  }
+  EXPECT_EQ(distinct.size(), runs.size());  // every run's numbers differ: the reuse is not of results
+  EXPECT_EQ(cache.builds(), 2u);            // the 850-lb engine's frame, then the 900-lb engine's
+  EXPECT_EQ(cache.reuses(), 3u);            // damping 300 and 400, and 250 back on the first build
 }
 
 // ------------------------------------------------------------- sampling

@@ -294,6 +294,20 @@ def test_batch_tabulates_one_row_per_sample(tmp_path):
     assert table["rigid.response.peak_cutting_force [lbf]"][0] != table["rigid.response.peak_cutting_force [lbf]"][1]
 
 
+def test_batch_on_two_threads_gives_the_serial_table(tmp_path):
+    # The batch engine's threads, each run in its own row: the table of one thread, value for value.
+    study = framedyn.load_study(short_copy(tmp_path))
+    samples = [{"soil.damping": d} for d in (150, 250, 350, 450)] + [{"soil.damping": -5}]  # the last is refused
+    serial, threaded = framedyn.batch(study, samples), framedyn.batch(study, samples, threads=2)
+    assert list(serial.keys()) == list(threaded.keys())
+    for column in serial.keys():
+        a, b = list(serial[column]), list(threaded[column])
+        assert [repr(x) for x in a] == [repr(x) for x in b], column
+    assert serial["error"][4] != "" and list(serial["error"][:4]) == ["", "", "", ""]
+    with pytest.raises(ValueError):
+        framedyn.batch(study, samples, threads=0)
+
+
 def test_the_example_script_runs_and_writes_its_figure(tmp_path):
     out = tmp_path / "offset_plowing.png"
     run = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "examples", "python", "offset_plowing.py"),
