@@ -8,8 +8,14 @@
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
 //   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
 //     a batch resumed from a checkpoint gives the table of an uninterrupted one;
+//   - `framedyn batch` killed (SIGKILL) after a checkpoint and run again with --resume gives the
+//     uninterrupted batch's runs.csv and summary.json byte for byte, and leaves the user's files alone;
 //   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives.
 #include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
@@ -20,8 +26,11 @@
 #include <string>
 #include <utility>
 
+#include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
+#include <thread>
 
 #include "batch/design.h"
 #include "batch/engine.h"
@@ -295,6 +304,102 @@ TEST(BatchEngine, GridOverOneParameterGivesTheNumbersOfFramedynSweep) {
     ++rows;
   }
   EXPECT_EQ(rows, 3);
+}
+
+// ------------------------------------------------------------- kill and resume
+
+// `framedyn ARGS...` started in `dir` as a child process (stdout and stderr to
+// /dev/null), so that the test can kill it at a moment of its choosing.
+pid_t start_framedyn(const fs::path& dir, std::vector<std::string> args) {
+  args.insert(args.begin(), FRAMEDYN_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    std::FILE* null = std::fopen("/dev/null", "w");
+    if (null) ::dup2(::fileno(null), 1), ::dup2(::fileno(null), 2);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The user's files below `folder` (relative path -> content): all but framedyn's
+// results folders "results" and "whole" and partial folders "results.partial-<pid>".
+std::map<std::string, std::string> user_files(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(folder)) {
+    const std::string rel = fs::relative(e.path(), folder).generic_string();
+    const std::string top = rel.substr(0, rel.find('/'));
+    if (top == "results" || top == "whole" || top.rfind("results.partial-", 0) == 0 || e.is_directory()) continue;
+    files[rel] = read_text(e.path());
+  }
+  return files;
+}
+
+// A grid of 20 runs of the 2-D plow (0.2 s each) on one thread, checkpointed
+// every 2 runs, is killed with SIGKILL as soon as its first checkpoint is in
+// place (nothing catches SIGKILL: the process stops between any two
+// instructions, possibly half-way through writing the next checkpoint). Run
+// again with --resume, it must read the checkpoint's runs back, do the others
+// and give the uninterrupted batch's runs.csv and summary.json byte for byte;
+// the user's files (the inputs and a note beside them) are as they were.
+TEST(BatchEngine, BatchKilledAfterACheckpointAndResumedGivesTheUninterruptedTable) {
+  TempDir dir;
+  std::string study = read_text(kPlow2D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.2,");
+  dir.write("study.yaml", study);
+  std::string dampings;
+  for (int k = 0; k < 20; ++k) dampings += (k ? ", " : "") + std::to_string(150 + 20 * k);
+  dir.write("design.yaml", "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [" +
+                               dampings + "]}\noutputs:\n  - rigid.response.peak_cutting_force\n  - rigid.modes[0].frequency\n");
+  dir.write("notes.txt", "the user's own notes\n");
+  const std::map<std::string, std::string> before = user_files(dir.path());
+
+  const auto whole = framedyn::testing::framedyn(dir, "batch design.yaml --out whole -j 1 --checkpoint 2 -q");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+
+  const pid_t pid = start_framedyn(dir.path(), {"batch", "design.yaml", "--out", "results", "-j", "1", "--checkpoint", "2", "-q"});
+  ASSERT_GT(pid, 0);
+  const auto start = std::chrono::steady_clock::now();
+  bool killed = false;
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
+    if (fs::exists(dir / "results" / "runs.csv")) {  // a checkpoint is committed (one rename: whole or absent)
+      ::kill(pid, SIGKILL);
+      killed = true;
+      break;
+    }
+    int raw = 0;
+    if (::waitpid(pid, &raw, WNOHANG) == pid) break;  // ended before its first checkpoint: nothing to resume
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_TRUE(killed) << "the batch ended (or took 60 s) before its first checkpoint";
+  int raw = 0;
+  ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(raw) && WTERMSIG(raw) == SIGKILL) << "the batch finished before the kill reached it";
+  const nlohmann::json checkpoint = nlohmann::json::parse(read_text(dir / "results" / "summary.json"));
+  EXPECT_EQ(checkpoint["complete"], false);
+  const int kept = checkpoint["runs"]["done"].get<int>() + checkpoint["runs"]["failed"].get<int>();
+  EXPECT_GE(kept, 2);
+  EXPECT_LT(kept, 20);
+
+  const auto resumed = framedyn::testing::framedyn(dir, "batch design.yaml --out results -j 1 --checkpoint 2 --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find(std::to_string(kept) + " read back by --resume"), std::string::npos) << resumed.out;
+  EXPECT_EQ(read_text(dir / "results" / "runs.csv"), read_text(dir / "whole" / "runs.csv"));
+  EXPECT_EQ(read_text(dir / "results" / "summary.json"), read_text(dir / "whole" / "summary.json"));
+  // The user's files byte for byte; besides them only framedyn's folders: the two
+  // results and, at most, the partial checkpoint the kill interrupted.
+  EXPECT_EQ(user_files(dir.path()), before);
+  for (const auto& e : fs::directory_iterator(dir.path())) {
+    const std::string name = e.path().filename().string();
+    const bool framedyns = name == "results" || name == "whole" || name == "results.partial-" + std::to_string(pid);
+    EXPECT_TRUE(framedyns || before.count(name)) << "unexpected " << name;
+  }
 }
 
 }  // namespace
