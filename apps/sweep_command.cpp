@@ -1,5 +1,6 @@
-// `framedyn sweep STUDY.yaml --parameter NAME --values v1,v2,...`: runs a study
-// once per value of a machine parameter (coupling/parameter_sweep.h) and writes
+// `framedyn sweep STUDY.yaml --parameter KEY --values v1,v2,...`: runs a study
+// once per value of one of its numbers, named by key path (a one-parameter
+// design study on the batch engine: batch/sweep_runs.h; 2-D and 3-D) and writes
 // DIR/sweep.csv, DIR/summary.json and PNG figures: blade amplitude against the
 // parameter (thesis Figure 9), peak cutting and backing force (Figure 10), the
 // relative change of each against the run at the study file's value, and the
@@ -13,18 +14,15 @@
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/progress.h"
+#include "batch/sweep_runs.h"
 #include "core/error.h"
 #include "core/results_folder.h"
-#include "coupling/parameter_sweep.h"
-#include "coupling/rigid_study.h"
 #include "report/plot.h"
 #include "report/sweep_outputs.h"
 
 namespace framedyn::apps {
 
 namespace {
-
-using core::Quantity;
 
 struct SweepOptions {
   std::string study;
@@ -45,24 +43,13 @@ int run_sweep(const SweepOptions& opt) {
   const std::string out_dir =
       opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_sweep_" + opt.parameter : opt.out;
   core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
-  progress.stage("reading " + opt.study);
-  const coupling::RigidStudy study = coupling::read_rigid_study(opt.study);
-  const core::UnitSystem& u = study.units;
-  Quantity q;
-  try {
-    q = coupling::parameter_quantity(study.machine, opt.parameter);
-  } catch (const std::invalid_argument&) {
-    std::string known;
-    for (const std::string& k : coupling::sweepable_parameters()) known += (known.empty() ? "" : ", ") + k;
-    throw core::InputError({opt.study, 0, "--parameter"}, "one of " + known, "'" + opt.parameter + "'");
-  }
-  std::vector<double> values_si;
-  for (double v : opt.values) values_si.push_back(u.to_si(v, q));
-  const coupling::SweepResult s = coupling::run_parameter_sweep(study, opt.parameter, values_si, opt.jobs, progress.callback());
+  progress.stage("runs");
+  batch::OneParameterSweep request{opt.study, opt.parameter, opt.values, opt.jobs, progress.callback()};
+  const batch::OneParameterSweepResult r = batch::run_one_parameter_sweep(request);
 
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, {opt.study});
-  const report::SweepReport w{opt.study, &study, &s, opt.values, opt.jobs};
+  const report::SweepReport w{opt.study, r.study_name, r.units, &r.result, opt.values, r.parameter_unit, opt.jobs};
   folder.write_text("sweep.csv", report::sweep_csv(w));
   std::vector<std::string> pngs;
   if (opt.figures) {
@@ -85,9 +72,9 @@ int run_sweep(const SweepOptions& opt) {
 
 void add_sweep_command(CLI::App& app, std::function<int()>& run) {
   auto opt = std::make_shared<SweepOptions>();
-  CLI::App* cmd = app.add_subcommand("sweep", "Run a study once per value of a machine parameter (thesis Figures 9 and 10)");
+  CLI::App* cmd = app.add_subcommand("sweep", "Run a study once per value of one of its numbers (thesis Figures 9 and 10)");
   cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
-  cmd->add_option("--parameter,-p", opt->parameter, "Machine parameter to vary, e.g. soil.damping or soil.stiffness")->required();
+  cmd->add_option("--parameter,-p", opt->parameter, "Key path of the number to vary, e.g. soil.damping, soil.stiffness, plow.shaker.frequency_hz")->required();
   cmd->add_option("--values", opt->values, "Values in the study's units, comma-separated: 100,200,300")
       ->required()
       ->delimiter(',')

@@ -56,15 +56,13 @@ void set_if(nlohmann::ordered_json& j, const std::string& key, const std::option
   if (v) j[key] = *v;
 }
 
-Quantity parameter_quantity(const SweepReport& w) { return w.result->quantity; }
-
 }  // namespace
 
 std::string sweep_csv(const SweepReport& w) {
   const coupling::SweepResult& s = *w.result;
-  const core::UnitSystem& u = w.study->units;
+  const core::UnitSystem& u = w.units;
   const std::vector<double>& x = w.values;
-  std::vector<std::string> h = {column(s.parameter, u.label(parameter_quantity(w)))};
+  std::vector<std::string> h = {column(s.parameter, w.parameter_unit)};
   for (const Figure& f : figures()) h.push_back(column(f.key, u.label(f.quantity)));
   for (const Figure& f : figures()) h.push_back(column(f.key + "_change", u.label(Quantity::percent)));
   const std::size_t modes = s.points.front().frequencies_hz.size();
@@ -96,9 +94,9 @@ std::string sweep_csv(const SweepReport& w) {
 
 std::vector<std::string> write_sweep_figures(const SweepReport& w, const core::ResultsFolder& folder) {
   const coupling::SweepResult& s = *w.result;
-  const core::UnitSystem& u = w.study->units;
+  const core::UnitSystem& u = w.units;
   const std::vector<double>& x = w.values;
-  const std::string x_unit = u.label(parameter_quantity(w));
+  const std::string x_unit = w.parameter_unit;
   std::vector<std::string> written;
   const auto series_of = [&](const Figure& f, bool relative) {
     PlotSeries ps{f.label, {}, {}};
@@ -113,7 +111,7 @@ std::vector<std::string> write_sweep_figures(const SweepReport& w, const core::R
   };
   const auto base = [&](const std::string& title, const std::string& y_label, const std::string& y_unit) {
     LinePlot p;
-    p.title = title + ": " + w.study->name;
+    p.title = title + ": " + w.study_name;
     p.x_label = s.parameter;
     p.x_unit = x_unit;
     p.y_label = y_label;
@@ -155,10 +153,9 @@ std::vector<std::string> write_sweep_figures(const SweepReport& w, const core::R
 
 nlohmann::ordered_json sweep_summary(const SweepReport& w, const std::vector<std::string>& pngs) {
   const coupling::SweepResult& s = *w.result;
-  const coupling::RigidStudy& study = *w.study;
-  const core::UnitSystem& u = study.units;
+  const core::UnitSystem& u = w.units;
   const std::vector<double>& x = w.values;
-  const std::string unit = u.label(parameter_quantity(w)), hz = u.label(Quantity::frequency);
+  const std::string unit = w.parameter_unit, hz = u.label(Quantity::frequency);
   const double reference = u.from_si(s.reference.value, s.quantity);
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < s.points.size(); ++i) {
@@ -178,7 +175,7 @@ nlohmann::ordered_json sweep_summary(const SweepReport& w, const std::vector<std
   }
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "sweep"}};
-  j["input"] = {{"study", w.study_file}, {"name", study.name}, {"units", u.name()}};
+  j["input"] = {{"study", w.study_file}, {"name", w.study_name}, {"units", u.name()}};
   nlohmann::ordered_json sw;
   sw["parameter"] = s.parameter;
   sw["values"] = quantity(x, unit);
@@ -203,11 +200,11 @@ nlohmann::ordered_json sweep_summary(const SweepReport& w, const std::vector<std
 
 std::string sweep_console_text(const SweepReport& w, const std::vector<std::string>& pngs) {
   const coupling::SweepResult& s = *w.result;
-  const core::UnitSystem& u = w.study->units;
+  const core::UnitSystem& u = w.units;
   const std::vector<double>& x = w.values;
-  const std::string unit = u.label(parameter_quantity(w));
+  const std::string unit = w.parameter_unit;
   const double reference = u.from_si(s.reference.value, s.quantity);
-  std::string out = fmt::format("framedyn sweep: {} ({}), {} over {} values, units {}\n", w.study_file, w.study->name, s.parameter, x.size(), u.name());
+  std::string out = fmt::format("framedyn sweep: {} ({}), {} over {} values, units {}\n", w.study_file, w.study_name, s.parameter, x.size(), u.name());
   out += fmt::format("reference: {} = {:g} {} (the study file's value{})\n\n", s.parameter, reference, unit,
                      s.reference_index >= 0 ? "" : ", run on its own");
   const std::string lu = u.label(Quantity::length), fu = u.label(Quantity::force);

@@ -14,7 +14,6 @@
 
 #include "core/results_folder.h"
 #include "coupling/parameter_sweep.h"
-#include "coupling/rigid_study.h"
 
 namespace framedyn::report {
 
@@ -22,9 +21,11 @@ namespace framedyn::report {
 // user gave them (the study's units) and the command's settings.
 struct SweepReport {
   std::string study_file;  // as given on the command line
-  const coupling::RigidStudy* study = nullptr;
+  std::string study_name;
+  core::UnitSystem units;  // the study's
   const coupling::SweepResult* result = nullptr;
   std::vector<double> values;  // the study's units, as given
+  std::string parameter_unit;  // the parameter's unit label
   int jobs = 1;
 };
 

@@ -10,7 +10,8 @@
 //     a batch resumed from a checkpoint gives the table of an uninterrupted one;
 //   - `framedyn batch` killed (SIGKILL) after a checkpoint and run again with --resume gives the
 //     uninterrupted batch's runs.csv and summary.json byte for byte, and leaves the user's files alone;
-//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives.
+//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives,
+//     in 2-D and in 3-D (where `sweep` runs on the batch engine as well), the reference run included;
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -37,6 +38,7 @@
 #include "batch/key_path.h"
 #include "batch/sampling.h"
 #include "batch/sensitivity.h"
+#include "core/number_text.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
 #include "tests/support/run_framedyn.h"
@@ -304,6 +306,56 @@ TEST(BatchEngine, GridOverOneParameterGivesTheNumbersOfFramedynSweep) {
     ++rows;
   }
   EXPECT_EQ(rows, 3);
+}
+
+// `framedyn sweep` on the 3-D offset plow (0.1 s): its rows and its reference run
+// (the study's own damping, 300, not among the values) are the batch grid's
+// runs of the same values, as text; the relative changes are (value - reference)
+// / reference of those numbers.
+TEST(BatchEngine, SweepOfA3DStudyGivesTheNumbersOfTheBatchGrid) {
+  TempDir dir;
+  std::string study = read_text(kPlow3D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.1,");
+  dir.write("study.yaml", study);
+  const auto sweep = framedyn::testing::framedyn(dir, "sweep study.yaml -p soil.damping --values 200,400 --no-figures --out sweep -j 2 -q");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "outputs:\n  - rigid.response.plow_vertical_pp\n  - rigid.response.peak_cutting_force\n");
+  batch::BatchOptions opt;
+  opt.out = dir / "grid";
+  batch::run_batch(batch::read_batch_design((dir / "design.yaml").string()), opt);
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> c;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) c.push_back(cell);
+    return c;
+  };
+  std::vector<std::vector<std::string>> sw, grid;
+  std::istringstream a(read_text(dir / "sweep" / "sweep.csv")), b(read_text(dir / "grid" / "runs.csv"));
+  for (std::string line; std::getline(a, line);) sw.push_back(cells(line));
+  for (std::string line; std::getline(b, line);) grid.push_back(cells(line));
+  ASSERT_EQ(sw.size(), 3u);    // header, 200, 400
+  ASSERT_EQ(grid.size(), 4u);  // header, 200, 300, 400
+  EXPECT_EQ(sw[0][0], "soil.damping [lbf*s/in]");
+  for (const auto& [row, run] : {std::pair{1, 1}, std::pair{2, 3}}) {
+    EXPECT_EQ(sw[row][0], grid[run][1]);  // the damping
+    EXPECT_EQ(sw[row][1], grid[run][2]);  // plow_vertical_pp
+    EXPECT_EQ(sw[row][2], grid[run][3]);  // peak_cutting_force
+    ASSERT_EQ(grid[run][4], "done");
+  }
+  const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "sweep" / "summary.json"));
+  const nlohmann::json& ref = summary["sweep"]["reference"];
+  EXPECT_EQ(ref["in_values"], false);
+  EXPECT_EQ(ref["parameter"]["value"], 300.0);
+  EXPECT_EQ(framedyn::core::format_number(ref["peak_cutting_force"]["value"].get<double>()), grid[2][3]);
+  EXPECT_EQ(framedyn::core::format_number(ref["plow_vertical_pp"]["value"].get<double>()), grid[2][2]);
+  for (int row : {1, 2}) {
+    const double v = std::stod(sw[row][2]), r = std::stod(grid[2][3]);
+    EXPECT_NEAR(std::stod(sw[row][7]), 100.0 * (v - r) / r, 1e-6) << "row " << row;  // peak_cutting_force_change [%], from 10-digit text
+  }
 }
 
 // ------------------------------------------------------------- kill and resume
