@@ -43,7 +43,7 @@ int run_sweep(const SweepOptions& opt) {
   const std::string out_dir =
       opt.out.empty() ? std::filesystem::path(opt.study).stem().string() + "_sweep_" + opt.parameter : opt.out;
   core::check_results_target(out_dir, {opt.study});  // before the run: a refusal costs no time
-  progress.stage("runs");
+  progress.stage("reading " + opt.study);  // then one line per run
   batch::OneParameterSweep request{opt.study, opt.parameter, opt.values, opt.jobs, progress.callback()};
   const batch::OneParameterSweepResult r = batch::run_one_parameter_sweep(request);
 
