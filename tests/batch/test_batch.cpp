@@ -8,6 +8,8 @@
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
 //   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
 //     a batch resumed from a checkpoint gives the table of an uninterrupted one;
+//   - `framedyn batch --figures` writes whole PNG files whose plotted numbers are runs.csv's
+//     (each output against each parameter; the mean per level of a grid);
 //   - `framedyn batch` killed (SIGKILL) after a checkpoint and run again with --resume gives the
 //     uninterrupted batch's runs.csv and summary.json byte for byte, and leaves the user's files alone;
 //   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives,
@@ -33,6 +35,7 @@
 #include <set>
 #include <thread>
 
+#include "batch/batch_figures.h"
 #include "batch/design.h"
 #include "batch/engine.h"
 #include "batch/key_path.h"
@@ -355,6 +358,84 @@ TEST(BatchEngine, SweepOfA3DStudyGivesTheNumbersOfTheBatchGrid) {
   for (int row : {1, 2}) {
     const double v = std::stod(sw[row][2]), r = std::stod(grid[2][3]);
     EXPECT_NEAR(std::stod(sw[row][7]), 100.0 * (v - r) / r, 1e-6) << "row " << row;  // peak_cutting_force_change [%], from 10-digit text
+  }
+}
+
+// ------------------------------------------------------------- figures
+
+// A PNG file that is whole: the signature, and the IEND chunk as its last 12 bytes.
+bool whole_png(const fs::path& p) {
+  const std::string b = read_text(p);
+  const std::string signature = "\x89PNG\r\n\x1a\n", iend = std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  return b.size() > 1000 && b.compare(0, 8, signature) == 0 && b.compare(b.size() - 12, 12, iend) == 0;
+}
+
+// A grid of 3 dampings x 2 stiffnesses of the 2-D plow (0.1 s each) with
+// --figures: one scatter and one main-effect figure per output, each a whole
+// PNG; each panel's points are runs.csv's columns (parsed here on their own),
+// each main-effect point the mean of the output over the runs at that level.
+TEST(BatchFigures, ScatterAndMainEffectFiguresPlotTheNumbersOfRunsCsv) {
+  TempDir dir;
+  std::string study = read_text(kPlow2D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.1,");
+  dir.write("study.yaml", study);
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "  - {key: soil.stiffness, values: [30000, 50000]}\noutputs:\n  - rigid.response.peak_cutting_force\n  - rigid.modes[0].frequency\n");
+  const auto r = framedyn::testing::framedyn(dir, "batch design.yaml --out results --figures -j 2 -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> files = {"scatter_1_rigid.response.peak_cutting_force.png", "scatter_2_rigid.modes_0_.frequency.png",
+                                          "main_effects_1_rigid.response.peak_cutting_force.png", "main_effects_2_rigid.modes_0_.frequency.png"};
+  for (const std::string& f : files) EXPECT_TRUE(whole_png(dir / "results" / f)) << f;
+
+  // runs.csv on its own: index, damping, stiffness, force, frequency, status, message.
+  std::vector<std::vector<double>> table;
+  std::istringstream csv(read_text(dir / "results" / "runs.csv"));
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    std::vector<std::string> c;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) c.push_back(cell);
+    ASSERT_GE(c.size(), 6u);
+    ASSERT_EQ(c[5], "done");
+    table.push_back({std::stod(c[1]), std::stod(c[2]), std::stod(c[3]), std::stod(c[4])});
+  }
+  ASSERT_EQ(table.size(), 6u);
+
+  const batch::BatchDesign d = batch::read_batch_design((dir / "design.yaml").string());
+  const auto figures = report::design_figures(batch::design_table(d, batch::read_runs_csv(d, dir / "results" / "runs.csv")));
+  ASSERT_EQ(figures.size(), files.size());
+  for (std::size_t k = 0; k < figures.size(); ++k) {
+    EXPECT_EQ(figures[k].file, files[k]);
+    const std::size_t o = k % 2;  // the output
+    const bool main_effects = k >= 2;
+    ASSERT_EQ(figures[k].figure.panels.size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) {
+      const report::PlotSeries& s = figures[k].figure.panels[p].series.at(0);
+      EXPECT_EQ(figures[k].figure.panels[p].x_label, p == 0 ? "soil.damping" : "soil.stiffness");
+      if (!main_effects) {
+        ASSERT_EQ(s.x.size(), table.size());
+        for (std::size_t i = 0; i < table.size(); ++i) {
+          EXPECT_EQ(s.x[i], table[i][p]);
+          EXPECT_EQ(s.y[i], table[i][2 + o]);
+        }
+        continue;
+      }
+      std::map<double, std::vector<double>> levels;
+      for (const auto& row : table) levels[row[p]].push_back(row[2 + o]);
+      ASSERT_EQ(s.x.size(), levels.size());
+      std::size_t i = 0;
+      for (const auto& [level, ys] : levels) {
+        double sum = 0.0;
+        for (double y : ys) sum += y;
+        EXPECT_EQ(s.x[i], level);
+        EXPECT_DOUBLE_EQ(s.y[i], sum / static_cast<double>(ys.size())) << "level " << level;
+        ++i;
+      }
+    }
   }
 }
 
