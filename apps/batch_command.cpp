@@ -2,8 +2,10 @@
 // of the design run in memory on threads (or MPI ranks: `mpirun -n N framedyn
 // batch ...`, batch/mpi_engine.cpp), DIR/runs.csv and DIR/summary.json written
 // through core/results_folder, checkpointed so that --resume continues a batch
-// that was stopped. Here the options, the progress and the console's lines.
+// that was stopped; with --figures, scatter and main-effect figures
+// (batch/batch_figures.h). Here the options, the progress and the console's lines.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <thread>
@@ -11,10 +13,12 @@
 #include "apps/command_line.h"
 #include "apps/commands.h"
 #include "apps/progress.h"
+#include "batch/batch_figures.h"
 #include "batch/design.h"
 #include "batch/engine.h"
 #include "batch/mpi_engine.h"
 #include "core/error.h"
+#include "report/plot.h"
 
 namespace framedyn::apps {
 
@@ -23,7 +27,7 @@ namespace {
 struct BatchCommandOptions {
   std::string design, out;
   int threads = 0;  // 0: one per core
-  bool resume = false, keep_runs = false, rebuild_models = false;
+  bool resume = false, keep_runs = false, rebuild_models = false, figures = false;
   int checkpoint = 0;
   ProgressFlags progress;
 };
@@ -31,6 +35,9 @@ struct BatchCommandOptions {
 int run_batch_command(const BatchCommandOptions& opt) {
   if (opt.threads < 0) throw core::InputError(command_line("--threads"), "at least 1 thread (or 0: one per core)", fmt::format("{}", opt.threads));
   if (opt.checkpoint < 0) throw core::InputError(command_line("--checkpoint"), "a number of runs >= 1 (or 0: every 5 % of the runs)", fmt::format("{}", opt.checkpoint));
+  if (opt.figures && !report::gnuplot_available())
+    throw report::PlotError("framedyn batch --figures draws figures with gnuplot (Debian package gnuplot-nox, installed by ./install-deps.sh), and 'gnuplot' cannot be run; "
+                            "install it or leave out --figures");
   Progress progress(opt.progress);
   batch::BatchOptions bo;
   bo.out = opt.out.empty() ? std::filesystem::path(opt.design).stem().string() + "_results" : opt.out;
@@ -53,6 +60,11 @@ int run_batch_command(const BatchCommandOptions& opt) {
   } else {
     c = batch::run_batch(design, bo);
   }
+  std::vector<std::string> figures;
+  if (opt.figures) {
+    progress.stage("figures");
+    figures = batch::write_batch_figures(design, bo);
+  }
   progress.done();
   if (progress.quiet()) {
     fmt::print("results in {}/\n", bo.out.string());
@@ -60,6 +72,7 @@ int run_batch_command(const BatchCommandOptions& opt) {
   }
   fmt::print("framedyn batch: {} ({} runs of {}: {} done, {} failed{})\n", opt.design, c.total, design.study_file.string(), c.done, c.failed,
              c.skipped ? fmt::format(", {} read back by --resume", c.skipped) : std::string());
+  if (!figures.empty()) fmt::print("figures: {}\n", fmt::join(figures, ", "));
   fmt::print("\nresults in {}/\n", bo.out.string());
   return c.failed == c.total && c.total > 0 ? 3 : 0;
 }
@@ -76,6 +89,7 @@ void add_batch_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--keep-runs", opt->keep_runs, "Also write each run's own results folder (<out>_runs/run_NNNNNN)");
   cmd->add_flag("--rebuild-models", opt->rebuild_models,
                 "Build every run's frame model anew instead of once per worker (the same results; for timing the reuse)");
+  cmd->add_flag("--figures", opt->figures, "Also draw scatter plots of each output against each parameter and, for a grid, main-effect plots (PNG, gnuplot)");
   cmd->add_option("--checkpoint", opt->checkpoint, "Write the results folder every N runs (0: every 5 % of the runs)")->capture_default_str();
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_batch_command(*opt); }; });

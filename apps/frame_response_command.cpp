@@ -7,6 +7,8 @@
 // fiber stresses of the element sets and the nodal histories of the node
 // sets, and writes DIR/summary.json (key "frame"), CSV tables and, with
 // a ParaView time series (frame.paraview: xdmf by default, vtu or none).
+// The summary is assembled in report/frame_response_summary.h; here the
+// options, the progress and the console's lines.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -19,8 +21,8 @@
 #include "core/results_folder.h"
 #include "core/units.h"
 #include "coupling/frame_study.h"
-#include "report/fatigue_outputs.h"
 #include "report/frame_outputs.h"
+#include "report/frame_response_summary.h"
 
 namespace framedyn::apps {
 
@@ -50,13 +52,7 @@ int run_frame_response(const FrameResponseOptions& opt) {
   progress.stage("writing results");
   core::ResultsFolder folder(out_dir, inputs);
   report::write_frame_outputs(r, q, folder, progress.step_callback());
-  nlohmann::ordered_json j;
-  j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "frame-response"}};
-  j["input"] = {{"study", opt.study}, {"name", q.name}, {"units", q.units.name()},
-                {"loads", q.loads ? q.loads->string() : std::string()}};
-  j["frame"] = report::frame_summary(r, q);
-  if (r.life) j["fatigue"] = report::fatigue_summary(r, q);
-  report::add_warnings(j, coupling::frame_warnings(r, q), print_warning);
+  const nlohmann::ordered_json j = report::frame_response_summary(opt.study, r, q, print_warning);
   folder.write_text("summary.json", j.dump(2) + "\n");
   folder.commit();
   progress.done();

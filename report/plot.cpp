@@ -233,7 +233,9 @@ std::string plot_commands(const LinePlot& plot, const fs::path& data_file, std::
     const std::string colour = ser.colour.empty() ? std::string(kColours[k]) : ser.colour;
     if (i > 0) s += ", \\\n     ";
     s += fmt::format("{} index {} using 1:2", quoted(fs::absolute(data_file).string()), first_block + i);
-    if (plot.mark_points)
+    if (ser.points_only)
+      s += fmt::format(" with points pt {} ps 1.1 lc rgb '{}'", kPointTypes[k], colour);
+    else if (plot.mark_points)
       s += fmt::format(" with linespoints lw 2 pt {} ps 1.3 lc rgb '{}'", kPointTypes[k], colour);
     else
       s += fmt::format(" with lines lw 1.5 lc rgb '{}'", colour);

@@ -23,6 +23,7 @@ struct PlotSeries {
   // an even number of points, no line from one pair to the next.
   bool segments = false;
   std::string colour = {};  // "#rrggbb"; empty: the plot's palette by position
+  bool points_only = false;  // markers and no line (a scatter plot)
 };
 
 struct LinePlot {

@@ -652,13 +652,13 @@ std::vector<Row> rows() {
       cli_row("CLI-10", "static frame.inp --out", "command line: --out"),
       cli_row("CLI-11", sweep + "-p soil.damping --values 100,200 --jobs 0", "command line: --jobs"),
       cli_row("CLI-12", sweep + "-p soil.viscosity --values 100,200", "study.yaml: --parameter"),
-      cli_row("CLI-13", sweep + "-p soil.damping --values 100,-200", "study.yaml: --values"),
+      cli_row("CLI-13", sweep + "-p soil.damping --values 100,-200", ""),
       cli_row("CLI-14", sweep + "-p soil.damping --values 100,lots", "command line: --values"),
-      cli_row("CLI-15", sweep + "-p cab.mass --values 0,2", "study.yaml: --values"),
+      cli_row("CLI-15", sweep + "-p cab.front_mount --values 0,2", "study.yaml: --parameter"),
       cli_row("CLI-16", sweep + "-p soil.damping", "command line: --values"),
       cli_row("CLI-17", "run nothere.yaml --out results", "nothere.yaml", false),
       {"CLI-18", {{"study.yaml", kFrameStudy}}, "run study.yaml --out results", "", true},
-      {"CLI-19", {{"study.yaml", kStudy3D}}, sweep + "-p soil.damping --values 100", "", true},
+      {"CLI-19", {{"study.yaml", kFrameStudy}}, sweep + "-p frame.damping.modal_ratio --values 0.01", "", true},
       {"CLI-20", {{"study.yaml", edit(kStudy2D, "  response: {duration: 0.12, output_interval: 0.001, method: rk4, rk4_step: 0.0005}\n", "")}},
        sweep + "-p soil.damping --values 100", "study.yaml: analysis.response", true},
       // ---- framedyn harmonic and framedyn random (apps/harmonic_command.cpp, apps/frequency_domain_input.cpp, fem/load_psd.cpp)
@@ -730,7 +730,8 @@ std::vector<Row> rows() {
   };
   for (Row row : cli) {
     if (row.id == "CLI-18") row.where = at("study.yaml", kFrameStudy, "model:", "model");
-    if (row.id == "CLI-19") row.where = at("study.yaml", kStudy3D, "model:", "model");
+    if (row.id == "CLI-19") row.where = at("study.yaml", kFrameStudy, "model:", "model");
+    if (row.id == "CLI-13") row.where = at("study.yaml", kStudy2D, "soil: {", "soil.damping");  // the study reader's own message
     r.push_back(row);
   }
 

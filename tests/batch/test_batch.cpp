@@ -10,8 +10,17 @@
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
 //   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
 //     a batch resumed from a checkpoint gives the table of an uninterrupted one;
-//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives.
+//   - `framedyn batch --figures` writes whole PNG files whose plotted numbers are runs.csv's
+//     (each output against each parameter; the mean per level of a grid);
+//   - `framedyn batch` killed (SIGKILL) after a checkpoint and run again with --resume gives the
+//     uninterrupted batch's runs.csv and summary.json byte for byte, and leaves the user's files alone;
+//   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives,
+//     in 2-D and in 3-D (where `sweep` runs on the batch engine as well), the reference run included;
 #include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
@@ -22,9 +31,13 @@
 #include <string>
 #include <utility>
 
+#include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
+#include <thread>
 
+#include "batch/batch_figures.h"
 #include "batch/design.h"
 #include "batch/engine.h"
 #include "batch/sampling.h"
@@ -32,6 +45,7 @@
 #include "core/error.h"
 #include "coupling/frame_model_cache.h"
 #include "coupling/study_key_path.h"
+#include "core/number_text.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
 #include "tests/support/run_framedyn.h"
@@ -364,6 +378,230 @@ TEST(BatchEngine, GridOverOneParameterGivesTheNumbersOfFramedynSweep) {
     ++rows;
   }
   EXPECT_EQ(rows, 3);
+}
+
+// `framedyn sweep` on the 3-D offset plow (0.1 s): its rows and its reference run
+// (the study's own damping, 300, not among the values) are the batch grid's
+// runs of the same values, as text; the relative changes are (value - reference)
+// / reference of those numbers.
+TEST(BatchEngine, SweepOfA3DStudyGivesTheNumbersOfTheBatchGrid) {
+  TempDir dir;
+  std::string study = read_text(kPlow3D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.1,");
+  dir.write("study.yaml", study);
+  const auto sweep = framedyn::testing::framedyn(dir, "sweep study.yaml -p soil.damping --values 200,400 --no-figures --out sweep -j 2 -q");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "outputs:\n  - rigid.response.plow_vertical_pp\n  - rigid.response.peak_cutting_force\n");
+  batch::BatchOptions opt;
+  opt.out = dir / "grid";
+  batch::run_batch(batch::read_batch_design((dir / "design.yaml").string()), opt);
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> c;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) c.push_back(cell);
+    return c;
+  };
+  std::vector<std::vector<std::string>> sw, grid;
+  std::istringstream a(read_text(dir / "sweep" / "sweep.csv")), b(read_text(dir / "grid" / "runs.csv"));
+  for (std::string line; std::getline(a, line);) sw.push_back(cells(line));
+  for (std::string line; std::getline(b, line);) grid.push_back(cells(line));
+  ASSERT_EQ(sw.size(), 3u);    // header, 200, 400
+  ASSERT_EQ(grid.size(), 4u);  // header, 200, 300, 400
+  EXPECT_EQ(sw[0][0], "soil.damping [lbf*s/in]");
+  for (const auto& [row, run] : {std::pair{1, 1}, std::pair{2, 3}}) {
+    EXPECT_EQ(sw[row][0], grid[run][1]);  // the damping
+    EXPECT_EQ(sw[row][1], grid[run][2]);  // plow_vertical_pp
+    EXPECT_EQ(sw[row][2], grid[run][3]);  // peak_cutting_force
+    ASSERT_EQ(grid[run][4], "done");
+  }
+  const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "sweep" / "summary.json"));
+  const nlohmann::json& ref = summary["sweep"]["reference"];
+  EXPECT_EQ(ref["in_values"], false);
+  EXPECT_EQ(ref["parameter"]["value"], 300.0);
+  EXPECT_EQ(framedyn::core::format_number(ref["peak_cutting_force"]["value"].get<double>()), grid[2][3]);
+  EXPECT_EQ(framedyn::core::format_number(ref["plow_vertical_pp"]["value"].get<double>()), grid[2][2]);
+  for (int row : {1, 2}) {
+    const double v = std::stod(sw[row][2]), r = std::stod(grid[2][3]);
+    EXPECT_NEAR(std::stod(sw[row][7]), 100.0 * (v - r) / r, 1e-6) << "row " << row;  // peak_cutting_force_change [%], from 10-digit text
+  }
+}
+
+// ------------------------------------------------------------- figures
+
+// A PNG file that is whole: the signature, and the IEND chunk as its last 12 bytes.
+bool whole_png(const fs::path& p) {
+  const std::string b = read_text(p);
+  const std::string signature = "\x89PNG\r\n\x1a\n", iend = std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  return b.size() > 1000 && b.compare(0, 8, signature) == 0 && b.compare(b.size() - 12, 12, iend) == 0;
+}
+
+// A grid of 3 dampings x 2 stiffnesses of the 2-D plow (0.1 s each) with
+// --figures: one scatter and one main-effect figure per output, each a whole
+// PNG; each panel's points are runs.csv's columns (parsed here on their own),
+// each main-effect point the mean of the output over the runs at that level.
+TEST(BatchFigures, ScatterAndMainEffectFiguresPlotTheNumbersOfRunsCsv) {
+  TempDir dir;
+  std::string study = read_text(kPlow2D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.1,");
+  dir.write("study.yaml", study);
+  dir.write("design.yaml",
+            "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [200, 300, 400]}\n"
+            "  - {key: soil.stiffness, values: [30000, 50000]}\noutputs:\n  - rigid.response.peak_cutting_force\n  - rigid.modes[0].frequency\n");
+  const auto r = framedyn::testing::framedyn(dir, "batch design.yaml --out results --figures -j 2 -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> files = {"scatter_1_rigid.response.peak_cutting_force.png", "scatter_2_rigid.modes_0_.frequency.png",
+                                          "main_effects_1_rigid.response.peak_cutting_force.png", "main_effects_2_rigid.modes_0_.frequency.png"};
+  for (const std::string& f : files) EXPECT_TRUE(whole_png(dir / "results" / f)) << f;
+
+  // runs.csv on its own: index, damping, stiffness, force, frequency, status, message.
+  std::vector<std::vector<double>> table;
+  std::istringstream csv(read_text(dir / "results" / "runs.csv"));
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    std::vector<std::string> c;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) c.push_back(cell);
+    ASSERT_GE(c.size(), 6u);
+    ASSERT_EQ(c[5], "done");
+    table.push_back({std::stod(c[1]), std::stod(c[2]), std::stod(c[3]), std::stod(c[4])});
+  }
+  ASSERT_EQ(table.size(), 6u);
+
+  const batch::BatchDesign d = batch::read_batch_design((dir / "design.yaml").string());
+  const auto figures = report::design_figures(batch::design_table(d, batch::read_runs_csv(d, dir / "results" / "runs.csv")));
+  ASSERT_EQ(figures.size(), files.size());
+  for (std::size_t k = 0; k < figures.size(); ++k) {
+    EXPECT_EQ(figures[k].file, files[k]);
+    const std::size_t o = k % 2;  // the output
+    const bool main_effects = k >= 2;
+    ASSERT_EQ(figures[k].figure.panels.size(), 2u);
+    for (std::size_t p = 0; p < 2; ++p) {
+      const report::PlotSeries& s = figures[k].figure.panels[p].series.at(0);
+      EXPECT_EQ(figures[k].figure.panels[p].x_label, p == 0 ? "soil.damping" : "soil.stiffness");
+      if (!main_effects) {
+        ASSERT_EQ(s.x.size(), table.size());
+        for (std::size_t i = 0; i < table.size(); ++i) {
+          EXPECT_EQ(s.x[i], table[i][p]);
+          EXPECT_EQ(s.y[i], table[i][2 + o]);
+        }
+        continue;
+      }
+      std::map<double, std::vector<double>> levels;
+      for (const auto& row : table) levels[row[p]].push_back(row[2 + o]);
+      ASSERT_EQ(s.x.size(), levels.size());
+      std::size_t i = 0;
+      for (const auto& [level, ys] : levels) {
+        double sum = 0.0;
+        for (double y : ys) sum += y;
+        EXPECT_EQ(s.x[i], level);
+        EXPECT_DOUBLE_EQ(s.y[i], sum / static_cast<double>(ys.size())) << "level " << level;
+        ++i;
+      }
+    }
+  }
+}
+
+// ------------------------------------------------------------- kill and resume
+
+// `framedyn ARGS...` started in `dir` as a child process (stdout and stderr to
+// /dev/null), so that the test can kill it at a moment of its choosing.
+pid_t start_framedyn(const fs::path& dir, std::vector<std::string> args) {
+  args.insert(args.begin(), FRAMEDYN_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    std::FILE* null = std::fopen("/dev/null", "w");
+    if (null) ::dup2(::fileno(null), 1), ::dup2(::fileno(null), 2);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The user's files below `folder` (relative path -> content): all but framedyn's
+// results folders "results" and "whole" and partial folders "results.partial-<pid>".
+std::map<std::string, std::string> user_files(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(folder)) {
+    const std::string rel = fs::relative(e.path(), folder).generic_string();
+    const std::string top = rel.substr(0, rel.find('/'));
+    if (top == "results" || top == "whole" || top.rfind("results.partial-", 0) == 0 || e.is_directory()) continue;
+    files[rel] = read_text(e.path());
+  }
+  return files;
+}
+
+// A grid of 20 runs of the 2-D plow (0.2 s each) on one thread, checkpointed
+// every 2 runs, is killed with SIGKILL as soon as its first checkpoint is in
+// place (nothing catches SIGKILL: the process stops between any two
+// instructions, possibly half-way through writing the next checkpoint). Run
+// again with --resume, it must read the checkpoint's runs back, do the others
+// and give the uninterrupted batch's runs.csv and summary.json byte for byte;
+// the user's files (the inputs and a note beside them) are as they were.
+TEST(BatchEngine, BatchKilledAfterACheckpointAndResumedGivesTheUninterruptedTable) {
+  TempDir dir;
+  std::string study = read_text(kPlow2D);
+  const std::size_t at = study.find("duration: 0.5,");
+  ASSERT_NE(at, std::string::npos) << "the shipped study's duration changed";
+  study.replace(at, 14, "duration: 0.2,");
+  dir.write("study.yaml", study);
+  std::string dampings;
+  for (int k = 0; k < 20; ++k) dampings += (k ? ", " : "") + std::to_string(150 + 20 * k);
+  dir.write("design.yaml", "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n  - {key: soil.damping, values: [" +
+                               dampings + "]}\noutputs:\n  - rigid.response.peak_cutting_force\n  - rigid.modes[0].frequency\n");
+  dir.write("notes.txt", "the user's own notes\n");
+  const std::map<std::string, std::string> before = user_files(dir.path());
+
+  const auto whole = framedyn::testing::framedyn(dir, "batch design.yaml --out whole -j 1 --checkpoint 2 -q");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+
+  const pid_t pid = start_framedyn(dir.path(), {"batch", "design.yaml", "--out", "results", "-j", "1", "--checkpoint", "2", "-q"});
+  ASSERT_GT(pid, 0);
+  const auto start = std::chrono::steady_clock::now();
+  bool killed = false;
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
+    if (fs::exists(dir / "results" / "runs.csv")) {  // a checkpoint is committed (one rename: whole or absent)
+      ::kill(pid, SIGKILL);
+      killed = true;
+      break;
+    }
+    int raw = 0;
+    if (::waitpid(pid, &raw, WNOHANG) == pid) break;  // ended before its first checkpoint: nothing to resume
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_TRUE(killed) << "the batch ended (or took 60 s) before its first checkpoint";
+  int raw = 0;
+  ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(raw) && WTERMSIG(raw) == SIGKILL) << "the batch finished before the kill reached it";
+  const nlohmann::json checkpoint = nlohmann::json::parse(read_text(dir / "results" / "summary.json"));
+  EXPECT_EQ(checkpoint["complete"], false);
+  const int kept = checkpoint["runs"]["done"].get<int>() + checkpoint["runs"]["failed"].get<int>();
+  EXPECT_GE(kept, 2);
+  EXPECT_LT(kept, 20);
+
+  const auto resumed = framedyn::testing::framedyn(dir, "batch design.yaml --out results -j 1 --checkpoint 2 --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find(std::to_string(kept) + " read back by --resume"), std::string::npos) << resumed.out;
+  EXPECT_EQ(read_text(dir / "results" / "runs.csv"), read_text(dir / "whole" / "runs.csv"));
+  EXPECT_EQ(read_text(dir / "results" / "summary.json"), read_text(dir / "whole" / "summary.json"));
+  // The user's files byte for byte; besides them only framedyn's folders: the two
+  // results and, at most, the partial checkpoint the kill interrupted.
+  EXPECT_EQ(user_files(dir.path()), before);
+  for (const auto& e : fs::directory_iterator(dir.path())) {
+    const std::string name = e.path().filename().string();
+    const bool framedyns = name == "results" || name == "whole" || name == "results.partial-" + std::to_string(pid);
+    EXPECT_TRUE(framedyns || before.count(name)) << "unexpected " << name;
+  }
 }
 
 }  // namespace
