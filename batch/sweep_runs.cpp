@@ -70,7 +70,7 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
                            model ? "'" + model_name + "'" : std::string("none"));
   // A key the study does not have, or one that holds no number: the key-path walker's own error
   // (coupling/study_key_path.h), naming the study's line, as Study.set and design files give it.
-  const double study_value = coupling::study_number(doc, q.key, q.study_file.string());
+  const double study_value = coupling::study_number(doc, q.key, q.study_file);
   if (calibrates(doc, q.key))
     throw core::InputError(where_parameter, "a parameter the study does not calibrate (calibration would overwrite each value)", "'" + q.key + "'");
   if (!doc["analysis"] || !doc["analysis"]["response"])
@@ -96,7 +96,7 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
           q.progress(fmt::format("run {} of {}: {} = {}", i + 1, n, q.key, run_values[i]));
         }
         YAML::Node copy = YAML::Load(text);  // with its marks: a refused value's error names the study's line
-        coupling::set_study_number(copy, q.key, run_values[i], q.study_file.string());
+        coupling::set_study_number(copy, q.key, run_values[i], q.study_file);
         runs[i] = report::run_study_document(copy, q.study_file);
       } catch (...) {
         errors[i] = std::current_exception();

@@ -206,8 +206,9 @@ TEST(SweepCommand, UnknownParameterFailsWithTheListAndLeavesNoFolder) {
   testing::TempDir dir("framedyn_test_sweep");
   EXPECT_EQ(framedyn(dir, "sweep '" + kPlowStudy + "' -p soil.viscosity --values 1 --out bad --no-figures"), 1);
   const std::string err = read_file(dir / "err.txt");
-  EXPECT_NE(err.find("--parameter"), std::string::npos) << err;
-  EXPECT_NE(err.find("soil.damping"), std::string::npos) << err;
+  // The key-path walker's message (coupling/study_key_path.h): the study's line, the key, what soil has.
+  EXPECT_NE(err.find("soil.viscosity: expected a key of the study"), std::string::npos) << err;
+  EXPECT_NE(err.find("stiffness, damping"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(dir / "bad"));
 }
 
