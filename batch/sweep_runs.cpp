@@ -12,10 +12,11 @@
 #include <sstream>
 #include <thread>
 
-#include "coupling/study_key_path.h"
 #include "core/error.h"
+#include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
+#include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
 #include "report/study_run_details.h"
@@ -23,22 +24,6 @@
 namespace framedyn::batch {
 
 namespace {
-
-// What one run gives the sweep (SI), from either model's results.
-coupling::SweepPoint point_of(const coupling::VehicleResults& r, double value) {
-  coupling::SweepPoint p;
-  p.value = value;
-  p.plow_vertical_pp = r.plow_vertical_peak_to_peak;
-  p.peak_cutting_force = r.peak_cutting_force;
-  p.peak_backing_force = r.peak_backing_force;
-  p.average_peak_cutting_force = r.average_peak_cutting_force;
-  p.average_peak_backing_force = r.average_peak_backing_force;
-  for (const rigid::RigidMode& m : r.modes) {
-    p.frequencies_hz.push_back(m.frequency_hz);
-    p.dominant.push_back(m.dominant);
-  }
-  return p;
-}
 
 std::string read_text(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
@@ -138,7 +123,7 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
   for (std::size_t i = 0; i < n; ++i) {
     const report::StudyRunDetails& d = *runs[i].details;
     const double value = known ? out.units.to_si(run_values[i], quantity) : run_values[i];
-    points.push_back(d.results_2d ? point_of(*d.results_2d, value) : point_of(*d.results_3d, value));
+    points.push_back(d.results_2d ? coupling::sweep_point(*d.results_2d, value) : coupling::sweep_point(*d.results_3d, value));
   }
   s.reference_index = reference_index;
   s.reference = reference_index >= 0 ? points[static_cast<std::size_t>(reference_index)] : points.back();

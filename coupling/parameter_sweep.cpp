@@ -14,7 +14,7 @@
 
 namespace framedyn::coupling {
 
-SweepPoint sweep_point(const RigidResults& r, double value) {
+SweepPoint sweep_point(const VehicleResults& r, double value) {
   SweepPoint p;
   p.value = value;
   p.plow_vertical_pp = r.plow_vertical_peak_to_peak;

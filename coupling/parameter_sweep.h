@@ -28,7 +28,8 @@ struct SweepPoint {
   std::vector<std::string> dominant;                // the dominant coordinate of each
 };
 
-SweepPoint sweep_point(const RigidResults& r, double value);
+// What one run of either model gives the sweep (SI): a 2-D or 3-D result is a VehicleResults.
+SweepPoint sweep_point(const VehicleResults& r, double value);
 
 struct SweepResult {
   std::string parameter;
