@@ -111,7 +111,7 @@ TEST(Cli, ModesOfTheShippedFrame) {
   const RunResult r = framedyn(dir, "modes " + quote(kFrame.string()) + " --modes 10 --mode-shapes-csv --paraview vtu --out " + quote(out.string()) + " -q");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");  // -q: no progress lines
-  for (const std::string& f : {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu", ".framedyn-manifest"}) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+  for (const char* f : {"summary.json", "modes.csv", "mode_shapes.csv", "modes.vtu", ".framedyn-manifest"}) EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
 
   const nlohmann::json j = nlohmann::json::parse(read_file(out / "summary.json"));
   EXPECT_EQ(j.at("framedyn").at("command"), "modes");

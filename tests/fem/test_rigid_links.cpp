@@ -157,7 +157,9 @@ TEST(RigidLinks, StiffBeamArmConvergesToTheRigidLinkByTheArmsOwnDeflection) {
     EXPECT_NEAR(u_beam - u_rigid, arm, 1e-8 * arm + 1e-13 * factor * u_rigid) << "factor " << factor;
     std::printf("arm stiffness factor %g: u_beam - u_rigid = %.6e m, P d^3/(3 f E I) = %.6e m, relative difference %.2e\n", factor,
                 u_beam - u_rigid, arm, (u_beam - u_rigid) / arm - 1.0);
-    if (previous > 0.0) EXPECT_LT(u_beam - u_rigid, previous / 5.0);
+    if (previous > 0.0) {
+      EXPECT_LT(u_beam - u_rigid, previous / 5.0);
+    }
     previous = u_beam - u_rigid;
   }
 }

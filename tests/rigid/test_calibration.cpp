@@ -48,7 +48,7 @@ rigid::ModesOfParameters two_springs() {
 // pulls the fit elsewhere: no regularisation unless asked for).
 TEST(Calibration, SingleSpringMassRecoversTheStiffnessOfTheTargetFrequency) {
   const double m = 3.0, target = 2.5;
-  const rigid::CalibrationResult r = rigid::calibrate(one_spring(m), {100.0}, {{target, "x"}});
+  const rigid::CalibrationResult r = rigid::calibrate(one_spring(m), {100.0}, {{target, "x", std::nullopt}});
   EXPECT_NEAR(r.fitted[0] / (m * std::pow(kTwoPi * target, 2)), 1.0, 1e-9);
   EXPECT_TRUE(r.labels_match);
   EXPECT_LT(r.max_relative_error, 1e-9);
@@ -61,7 +61,7 @@ TEST(Calibration, SingleSpringMassRecoversTheStiffnessOfTheTargetFrequency) {
 // is paired with the mode of its rank in frequency (b starts at 0.87 Hz, a
 // at 3.18 Hz), and both stiffnesses come out right.
 TEST(Calibration, TargetsArePairedWithModesByFrequency) {
-  const rigid::CalibrationResult r = rigid::calibrate(two_springs(), {400.0, 30.0}, {{1.0, "b"}, {3.0, "a"}});
+  const rigid::CalibrationResult r = rigid::calibrate(two_springs(), {400.0, 30.0}, {{1.0, "b", std::nullopt}, {3.0, "a", std::nullopt}});
   EXPECT_NEAR(std::sqrt(r.fitted[1]) / kTwoPi, 1.0, 1e-8);
   EXPECT_NEAR(std::sqrt(r.fitted[0]) / kTwoPi, 3.0, 1e-8);
   EXPECT_TRUE(r.labels_match);
@@ -110,7 +110,7 @@ TEST(Calibration, LabelsArePredictedNotFitted) {
     const Eigen::Matrix2d k = rot * Eigen::Vector2d(p[0], p[1]).asDiagonal() * rot.transpose();
     return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
   };
-  const rigid::CalibrationResult r = rigid::calibrate(modes_of, {30.0, 200.0}, {{1.0, "a"}, {2.0, "b"}});
+  const rigid::CalibrationResult r = rigid::calibrate(modes_of, {30.0, 200.0}, {{1.0, "a", std::nullopt}, {2.0, "b", std::nullopt}});
   EXPECT_LT(r.max_relative_error, 1e-9);
   EXPECT_NEAR(r.fitted[0], std::pow(kTwoPi * 1.0, 2), 1e-6 * r.fitted[0]);
   EXPECT_FALSE(r.labels_match);
@@ -146,7 +146,7 @@ TEST(Calibration, MeasuredShapeDeterminesTheStiffnessesOneFrequencyCannot) {
   const double w2 = std::pow(kTwoPi * truth[0].frequency_hz, 2);
   const double r = truth[0].shape(1) / truth[0].shape(0);
   ASSERT_NEAR(r * w2 / (r - 1), 250.0, 1e-9);  // the closed form the fit must reach
-  EXPECT_THROW(rigid::calibrate(chain, {300.0, 300.0}, {{truth[0].frequency_hz, ""}}), rigid::UnderdeterminedFit);
+  EXPECT_THROW(rigid::calibrate(chain, {300.0, 300.0}, {{truth[0].frequency_hz, "", std::nullopt}}), rigid::UnderdeterminedFit);
   rigid::FrequencyTarget target{truth[0].frequency_hz, "", rigid::ShapeTarget{Eigen::MatrixXd::Identity(2, 2), 2.5 * truth[0].shape, 1.0}};
   const rigid::CalibrationResult fit = rigid::calibrate(chain, {300.0, 300.0}, {target});
   EXPECT_NEAR(fit.fitted[0] / 400.0, 1.0, 1e-8);
@@ -173,7 +173,7 @@ TEST(Calibration, FitStoppedAtItsIterationLimitIsReported) {
     return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
   };
   const std::vector<rigid::RigidMode> truth = chain({400.0, 250.0});
-  const std::vector<rigid::FrequencyTarget> targets{{truth[0].frequency_hz, ""}, {truth[1].frequency_hz, ""}};
+  const std::vector<rigid::FrequencyTarget> targets{{truth[0].frequency_hz, "", std::nullopt}, {truth[1].frequency_hz, "", std::nullopt}};
   const double start = 400.0 * std::exp(-18.0);
   rigid::CalibrationOptions short_fit;
   short_fit.max_iterations = 1;
@@ -189,7 +189,7 @@ TEST(Calibration, FitStoppedAtItsIterationLimitIsReported) {
 
 // Fewer targets than parameters: refused before any fitting.
 TEST(Calibration, FewerTargetsThanParametersIsRefused) {
-  EXPECT_THROW(rigid::calibrate(two_springs(), {30.0, 50.0}, {{1.0, "a"}}), rigid::UnderdeterminedFit);
+  EXPECT_THROW(rigid::calibrate(two_springs(), {30.0, 50.0}, {{1.0, "a", std::nullopt}}), rigid::UnderdeterminedFit);
 }
 
 // Two targets that see only the product p0 p1 of two parameters (K =
@@ -206,7 +206,7 @@ TEST(Calibration, TargetsBlindToACombinationAreRefusedOrFlaggedWhenRegularised) 
     k(1, 1) = 900.0;
     return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
   };
-  const std::vector<rigid::FrequencyTarget> targets = {{1.0, "a"}, {std::sqrt(900.0) / kTwoPi, "b"}};
+  const std::vector<rigid::FrequencyTarget> targets = {{1.0, "a", std::nullopt}, {std::sqrt(900.0) / kTwoPi, "b", std::nullopt}};
   EXPECT_THROW(rigid::calibrate(modes_of, {4.0, 5.0}, targets), rigid::UnderdeterminedFit);
   rigid::CalibrationOptions o;
   o.regularization = 1e-4;
@@ -227,7 +227,7 @@ TEST(Calibration, ParameterEndingOnItsBoundIsReported) {
   rigid::CalibrationOptions o;
   o.lower = {100.0};
   o.upper = {0.5 * needed};
-  const rigid::CalibrationResult r = rigid::calibrate(one_spring(m), {100.0}, {{target, "x"}}, o);
+  const rigid::CalibrationResult r = rigid::calibrate(one_spring(m), {100.0}, {{target, "x", std::nullopt}}, o);
   EXPECT_DOUBLE_EQ(r.fitted[0], 0.5 * needed);
   EXPECT_TRUE(r.at_bound[0]);
   const double achieved = one_spring(m)(r.fitted)[0].frequency_hz;
@@ -250,14 +250,14 @@ TEST(Calibration, UncertaintyIsTheLinearisedSpreadOfTheResidual) {
     return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
   };
   const double t1 = 1.0, t2 = 2.1;  // the model's ratio is 2
-  const rigid::CalibrationResult r = rigid::calibrate(modes_of, {30.0}, {{t1, "a"}, {t2, "b"}});
+  const rigid::CalibrationResult r = rigid::calibrate(modes_of, {30.0}, {{t1, "a", std::nullopt}, {t2, "b", std::nullopt}});
   const double half = 0.5 * std::log(t2 / t1 / 2.0);
   EXPECT_NEAR(std::log(r.fitted[0]) / 2, std::log(kTwoPi * t1) + half, 1e-7);
   const double sigma2 = 2 * half * half / 1.0;
   EXPECT_NEAR(r.uncertainty[0] / r.fitted[0], std::sqrt(2 * sigma2), 1e-6);
   // The target the model overshoots; its error moves by half the fit's error in ln p (1e-7 above).
   EXPECT_NEAR(r.max_relative_error, std::exp(std::abs(half)) - 1, 1e-7);
-  const rigid::CalibrationResult one = rigid::calibrate(one_spring(3.0), {100.0}, {{2.5, "x"}});
+  const rigid::CalibrationResult one = rigid::calibrate(one_spring(3.0), {100.0}, {{2.5, "x", std::nullopt}});
   EXPECT_NEAR(one.uncertainty[0] / one.fitted[0], 2e-3, 1e-6);
 }
 
@@ -268,7 +268,7 @@ TEST(Calibration, UncertaintyIsTheLinearisedSpreadOfTheResidual) {
 // shows the model cannot meet both: each missed by the closed form
 // e^{|ln(2.1/2)|/2} - 1 = 2.47 %. A measured shape of m components adds m - 1.
 TEST(Calibration, AgreementIsGuaranteedWithoutSurplusTargetsAndTestedWithThem) {
-  const rigid::CalibrationResult exact = rigid::calibrate(one_spring(3.0), {100.0}, {{2.5, "x"}});
+  const rigid::CalibrationResult exact = rigid::calibrate(one_spring(3.0), {100.0}, {{2.5, "x", std::nullopt}});
   EXPECT_EQ(exact.information, 1);
   EXPECT_EQ(exact.degrees_of_freedom, 0);
   EXPECT_TRUE(exact.agreement_guaranteed);
@@ -279,7 +279,7 @@ TEST(Calibration, AgreementIsGuaranteedWithoutSurplusTargetsAndTestedWithThem) {
     k(1, 1) = 4 * p[0];
     return rigid::rigid_modes(Eigen::MatrixXd::Identity(2, 2), k, {"a", "b"});
   };
-  const rigid::CalibrationResult tested = rigid::calibrate(scale, {30.0}, {{1.0, "a"}, {2.1, "b"}});
+  const rigid::CalibrationResult tested = rigid::calibrate(scale, {30.0}, {{1.0, "a", std::nullopt}, {2.1, "b", std::nullopt}});
   EXPECT_EQ(tested.information, 2);
   EXPECT_EQ(tested.degrees_of_freedom, 1);
   EXPECT_FALSE(tested.agreement_guaranteed);
