@@ -5,13 +5,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <fstream>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
+#include "batch/engine.h"
 #include "core/error.h"
 #include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
@@ -71,28 +70,24 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
   const std::size_t n = run_values.size();
   std::vector<report::StudyRun> runs(n);
   std::vector<std::exception_ptr> errors(n);
-  std::atomic<std::size_t> next{0};
+  // On the batch engine's workers, each with its frame model reused across its runs (batch/engine.h);
+  // a failed run is kept in its slot, so the error reported is the first in the order of the values.
   std::mutex progress_mutex;
-  const auto worker = [&]() {
-    for (std::size_t i = next++; i < n; i = next++) {
-      try {
-        if (q.progress) {
-          const std::lock_guard<std::mutex> lock(progress_mutex);
-          q.progress(fmt::format("run {} of {}: {} = {}", i + 1, n, q.key, run_values[i]));
-        }
-        YAML::Node copy = YAML::Load(text);  // with its marks: a refused value's error names the study's line
-        coupling::set_study_number(copy, q.key, run_values[i], q.study_file);
-        runs[i] = report::run_study_document(copy, q.study_file);
-      } catch (...) {
-        errors[i] = std::current_exception();
+  run_on_threads(n, q.threads, true, [&](std::size_t i, coupling::FrameModelCache* frame_cache) {
+    try {
+      if (q.progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        q.progress(fmt::format("run {} of {}: {} = {}", i + 1, n, q.key, run_values[i]));
       }
+      YAML::Node copy = YAML::Load(text);  // with its marks: a refused value's error names the study's line
+      coupling::set_study_number(copy, q.key, run_values[i], q.study_file);
+      report::StudyRunOptions options;
+      options.frame_cache = frame_cache;
+      runs[i] = report::run_study_document(copy, q.study_file, options);
+    } catch (...) {
+      errors[i] = std::current_exception();
     }
-  };
-  const std::size_t workers = std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, q.threads)));
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  });
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);  // the first failed run, in the order of the values
 
