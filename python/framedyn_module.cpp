@@ -37,11 +37,54 @@ namespace fatigue = framedyn::fatigue;
 
 namespace {
 
-// A mesh as read: the model (SI inside, as the library keeps it) and its file.
+// A mesh as read: the model (SI inside, as the library keeps it), its file and
+// the dialect it was read in (unset: Abaqus's reading, with a warning where the two differ).
 struct Mesh {
   fem::FrameModel model;
   std::string path;
+  std::optional<std::string> dialect;
 };
+
+// A keyword argument framedyn refuses (docs/errors.md, "Python module": PY-06,
+// PY-07): raised as framedyn.Error with key = the argument's name, file None.
+struct ArgumentError : std::runtime_error {
+  ArgumentError(std::string argument, const std::string& message) : std::runtime_error(argument + ": " + message), key(std::move(argument)) {}
+  std::string key;
+};
+
+// dialect= as the command line's --inp-dialect (PY-06 for another value).
+std::optional<fem::InpDialect> parse_dialect(const std::optional<std::string>& dialect) {
+  if (!dialect) return std::nullopt;
+  if (*dialect == "abaqus") return fem::InpDialect::abaqus;
+  if (*dialect == "calculix") return fem::InpDialect::calculix;
+  throw ArgumentError("dialect", "expected 'abaqus' (SECTION=CIRC values are radii) or 'calculix' (diameters), found '" + *dialect + "'");
+}
+
+// The reader's warnings as summary.json lists them: {code, message, figures: {name: {value, unit}}}.
+py::list warning_list(const std::vector<core::Warning>& warnings) {
+  py::list l;
+  for (const core::Warning& w : warnings) {
+    py::dict d, figures;
+    d["code"] = w.code, d["message"] = w.message;
+    for (const core::WarningFigure& f : w.figures) {
+      py::dict v;
+      v["value"] = f.value, v["unit"] = f.unit;
+      figures[py::str(f.name)] = v;
+    }
+    d["figures"] = figures;
+    l.append(d);
+  }
+  return l;
+}
+
+// Each reader warning once, as a Python UserWarning, when a mesh is read
+// (the command line prints them on stderr once): with the GIL held.
+void warn_python(const fem::FrameModel& model) {
+  for (const core::Warning& w : model.reader_warnings) {
+    const std::string text = "[" + w.code + "] " + w.message;
+    if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();  // warnings turned into errors
+  }
+}
 
 struct ModesResult {
   Eigen::VectorXd frequencies_hz;
@@ -52,6 +95,7 @@ struct ModesResult {
   Eigen::VectorXd total_mass;         // 6, input units
   bool certified = false;
   py::dict units;
+  py::list warnings;  // the mesh reader's, as summary.json's
 };
 
 struct StaticResult {
@@ -63,6 +107,7 @@ struct StaticResult {
   py::dict section_forces;            // column name -> array, one row per station
   int free_rigid_motions = 0;
   py::dict units;
+  py::list warnings;  // the mesh reader's, as summary.json's
 };
 
 struct RainflowResult {
@@ -73,24 +118,37 @@ struct RainflowResult {
   std::string unit;
 };
 
-fem::FrameModel load_model(const std::string& path, const std::optional<std::string>& units) {
+// Read without the GIL; the caller warns (warn_python) once it holds it again.
+fem::FrameModel load_model(const std::string& path, const std::optional<std::string>& units, std::optional<fem::InpDialect> dialect) {
   fem::InpReadOptions o;
   o.units = units;
+  o.dialect = dialect;
+  o.dialect_key = "dialect=";  // the warning names the keyword, not the command line's option
   return fem::read_inp(path, o);
 }
 
-// A Mesh, or a path read with `units`.
-fem::FrameModel model_of(const std::variant<Mesh, std::string>& mesh_or_path, const std::optional<std::string>& units, std::string& source) {
+// A Mesh, or a path read with `units` and `dialect` (a path's reader warnings raised as UserWarning).
+fem::FrameModel model_of(const std::variant<Mesh, std::string>& mesh_or_path, const std::optional<std::string>& units,
+                         const std::optional<std::string>& dialect, std::string& source) {
+  const std::optional<fem::InpDialect> d = parse_dialect(dialect);
   if (const Mesh* m = std::get_if<Mesh>(&mesh_or_path)) {
     if (units && core::UnitSystem::from_name(*units).name() != m->model.units.name())
       throw std::invalid_argument("units='" + *units + "' for a mesh already read in " + m->model.units.name() +
                                   " (read_mesh(path, units=...) sets a mesh's units)");
+    if (dialect && dialect != m->dialect)
+      throw ArgumentError("dialect", "expected no dialect or the one the mesh was read in (read_mesh(path, dialect=...) sets how a mesh is read), found '" +
+                                         *dialect + "' for a mesh read " + (m->dialect ? "as " + *m->dialect : std::string("without a dialect")));
     source = m->path;
     return m->model;
   }
   source = std::get<std::string>(mesh_or_path);
-  py::gil_scoped_release release;
-  return load_model(source, units);
+  fem::FrameModel model;
+  {
+    py::gil_scoped_release release;
+    model = load_model(source, units, d);
+  }
+  warn_python(model);
+  return model;
 }
 
 Eigen::MatrixXd node_positions(const fem::FrameModel& model) {
@@ -139,9 +197,9 @@ py::list six_units(const core::UnitSystem& u, Quantity translation, Quantity rot
 }
 
 ModesResult compute_modes(const std::variant<Mesh, std::string>& mesh_or_path, std::optional<int> n, const std::optional<std::string>& units,
-                          bool lumped, double shift_hz) {
+                          bool lumped, double shift_hz, const std::optional<std::string>& dialect) {
   std::string source;
-  const fem::FrameModel model = fem::with_frequency_step(model_of(mesh_or_path, units, source));
+  const fem::FrameModel model = fem::with_frequency_step(model_of(mesh_or_path, units, dialect, source));
   fem::ModalOptions mo;  // as `framedyn modes`
   mo.mode_count = n ? *n : model.requested_modes.value_or(10);
   mo.mass = lumped ? fem::MassFormulation::lumped : fem::MassFormulation::consistent;
@@ -180,14 +238,15 @@ ModesResult compute_modes(const std::variant<Mesh, std::string>& mesh_or_path, s
   out.units["effective_masses"] = six_units(u, Quantity::mass, Quantity::rotary_inertia);
   out.units["total_mass"] = six_units(u, Quantity::mass, Quantity::rotary_inertia);
   out.units["system"] = u.name();
+  out.warnings = warning_list(model.reader_warnings);
   return out;
 }
 
 py::object solve_static(const std::variant<Mesh, std::string>& mesh_or_path, const std::optional<std::string>& units, int stations,
-                        bool inertia_relief) {
+                        bool inertia_relief, const std::optional<std::string>& dialect) {
   if (stations < 2 || stations > 101) throw std::invalid_argument("stations: expected 2 to 101 stations (the element's ends and points between), found " + std::to_string(stations));
   std::string source;
-  const fem::FrameModel model = model_of(mesh_or_path, units, source);
+  const fem::FrameModel model = model_of(mesh_or_path, units, dialect, source);
   std::vector<fem::StaticLoadCase> cases = fem::static_load_cases(model, source);
   std::vector<fem::FrameModel> models;
   for (const fem::StaticLoadCase& c : cases) models.push_back(c.model);
@@ -258,6 +317,7 @@ py::object solve_static(const std::variant<Mesh, std::string>& mesh_or_path, con
     sec["fiber_stress_max"] = S, sec["fiber_stress_min"] = S;
     out.units["section_forces"] = sec;
     out.units["system"] = u.name();
+    out.warnings = warning_list(model.reader_warnings);
     list.append(py::cast(std::move(out)));
   }
   if (list.size() == 1) return list[0];
@@ -326,6 +386,10 @@ PYBIND11_MODULE(_framedyn, m) {
       py::object exc = py::handle(error.ptr())(e.what());
       exc.attr("file") = py::none(), exc.attr("line") = 0, exc.attr("key") = py::none();
       PyErr_SetObject(error.ptr(), exc.ptr());
+    } catch (const ArgumentError& e) {
+      py::object exc = py::handle(error.ptr())(e.what());
+      exc.attr("file") = py::none(), exc.attr("line") = 0, exc.attr("key") = e.key;
+      PyErr_SetObject(error.ptr(), exc.ptr());
     }
   });
 
@@ -348,6 +412,9 @@ PYBIND11_MODULE(_framedyn, m) {
       .def_property_readonly("node_sets", [](const Mesh& s) { return node_sets(s.model); })
       .def_property_readonly("element_sets", [](const Mesh& s) { return element_sets(s.model); })
       .def_property_readonly("dof_count", [](const Mesh& s) { return s.model.dof_count(); })
+      .def_readonly("dialect", &Mesh::dialect, "the dialect= it was read in, or None (Abaqus's reading, with a warning where CalculiX reads otherwise)")
+      .def_property_readonly("warnings", [](const Mesh& s) { return warning_list(s.model.reader_warnings); },
+                             "what the reader noticed that may change the answer, as summary.json's warnings: {code, message, figures}")
       .def("__repr__", [](const Mesh& s) {
         return "<framedyn.Mesh " + s.path + ": " + std::to_string(s.model.nodes.size()) + " nodes, " + std::to_string(s.model.beams.size()) +
                " beam elements, units " + s.model.units.name() + ">";
@@ -361,7 +428,8 @@ PYBIND11_MODULE(_framedyn, m) {
       .def_readonly("rigid_body", &ModesResult::rigid_body)
       .def_readonly("total_mass", &ModesResult::total_mass)
       .def_readonly("certified", &ModesResult::certified)
-      .def_readonly("units", &ModesResult::units);
+      .def_readonly("units", &ModesResult::units)
+      .def_readonly("warnings", &ModesResult::warnings, "the mesh reader's warnings, as summary.json's");
 
   py::class_<StaticResult>(m, "StaticResult", "Static displacements, reactions and section forces (as `framedyn static`)")
       .def_readonly("step", &StaticResult::step)
@@ -371,7 +439,8 @@ PYBIND11_MODULE(_framedyn, m) {
       .def_readonly("reactions", &StaticResult::reactions, "supported nodes x 6 (fx, fy, fz, mx, my, mz), rows in reaction_nodes' order")
       .def_readonly("section_forces", &StaticResult::section_forces, "column -> array, one entry per station of every element")
       .def_readonly("free_rigid_motions", &StaticResult::free_rigid_motions)
-      .def_readonly("units", &StaticResult::units);
+      .def_readonly("units", &StaticResult::units)
+      .def_readonly("warnings", &StaticResult::warnings, "the mesh reader's warnings, as summary.json's");
 
   py::class_<RainflowResult>(m, "RainflowResult", "Rainflow cycles (ASTM E1049-85) and Miner damage (as `framedyn rainflow`)")
       .def_readonly("range", &RainflowResult::range)
@@ -387,17 +456,26 @@ PYBIND11_MODULE(_framedyn, m) {
 
   m.def(
       "read_mesh",
-      [](const std::string& path, const std::optional<std::string>& units) {
+      [](const std::string& path, const std::optional<std::string>& units, const std::optional<std::string>& dialect) {
+        const std::optional<fem::InpDialect> d = parse_dialect(dialect);
         Mesh mesh;
         mesh.path = path;
-        py::gil_scoped_release release;
-        mesh.model = load_model(path, units);
+        mesh.dialect = dialect;
+        {
+          py::gil_scoped_release release;
+          mesh.model = load_model(path, units, d);
+        }
+        warn_python(mesh.model);
         return mesh;
       },
-      py::arg("path"), py::arg("units") = py::none(), "Reads a frame mesh (.inp); units as --units (default: the mesh's '** units:' line)");
+      py::arg("path"), py::arg("units") = py::none(), py::arg("dialect") = py::none(),
+      "Reads a frame mesh (.inp); units as --units (default: the mesh's '** units:' line), dialect as --inp-dialect ('abaqus' or 'calculix'; "
+      "default Abaqus's reading, with a UserWarning where CalculiX reads the deck otherwise)");
   m.def("modes", &compute_modes, py::arg("mesh_or_path"), py::arg("n") = py::none(), py::arg("units") = py::none(), py::arg("lumped") = false,
-        py::arg("shift_hz") = 1.0, "Natural frequencies and mode shapes, as `framedyn modes` (n: default the *FREQUENCY count, else 10)");
+        py::arg("shift_hz") = 1.0, py::arg("dialect") = py::none(),
+        "Natural frequencies and mode shapes, as `framedyn modes` (n: default the *FREQUENCY count, else 10; dialect as read_mesh's)");
   m.def("static", &solve_static, py::arg("mesh_or_path"), py::arg("units") = py::none(), py::arg("stations") = 3, py::arg("inertia_relief") = false,
+        py::arg("dialect") = py::none(),
         "Linear static response, as `framedyn static`: a StaticResult, or a list of them (one per step) for a deck with several static steps");
   m.def("rainflow", &count, py::arg("history"), py::arg("unit") = "MPa", py::arg("sn") = py::none(), py::arg("repeat") = false,
         "Rainflow counting of a stress history in `unit`; with an S-N curve (sn, as --sn: FAT90, EN71, ...) its Miner damage");

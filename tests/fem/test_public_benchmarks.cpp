@@ -314,4 +314,47 @@ TEST(CodeAsterV205400PinnedFreeBeam, RigidRotationAboutThePinAndFiveBendingRoots
   }
 }
 
+// code_aster SDLL02 (Validation Manual V2.02.002, after VPCS SDLL02/89;
+// tests/data/benchmarks/code_aster_sdll02_folded_beam*.inp): a slender steel
+// cantilever of two 0.5 m legs folded back on each other at B, in-plane
+// bending. Published reference (analytic, Euler-Bernoulli, dynamic stiffness):
+// double frequencies with cos(lambda) = 0, lambda_i = (2i - 1) pi / 2,
+// f_i = lambda_i^2 / (2 pi L^2) sqrt(E Iz / (rho A)); the eight lowest are the
+// reference results: 11.7642, 105.878, 294.104, 576.445 Hz, each twice. The
+// pairs are the case certified mode sets exist for: a request for 8 must
+// return both copies of every root. The formula is exact (no rounding to
+// allow for); the tolerance is the discretisation error left after Richardson
+// extrapolation (20 and 40 B33 per leg, h^4), bounded by the correction.
+TEST(CodeAsterSdll02FoldedBeam, EightLowestAreTheFourPublishedDoubleRoots) {
+  const double length = 0.5, h = 0.005, E = 2.1e11, rho = 7800.0;
+  const double bending = std::sqrt(E * h * h / 12.0 / rho);  // sqrt(E Iz / (rho A)) for a rectangle, m^2/s
+  std::array<std::vector<fem::Mode>, 2> modes;
+  const std::array<const char *, 2> decks = {"code_aster_sdll02_folded_beam.inp", "code_aster_sdll02_folded_beam_fine.inp"};
+  for (std::size_t d = 0; d < 2; ++d) {
+    const fem::FrameModel model = fem::read_inp(kBenchmarks + decks[d]);
+    ASSERT_EQ(model.requested_modes, 8) << decks[d];  // the deck's *FREQUENCY step, as code_aster's 8 reference values
+    fem::ModalOptions options;
+    options.mode_count = 8;
+    const fem::ModalResult r = fem::compute_modes(model, options);
+    EXPECT_TRUE(r.certified) << decks[d];
+    EXPECT_EQ(r.rigid_body_modes_expected, 0) << decks[d];
+    modes[d] = r.modes;
+    ASSERT_EQ(modes[d].size(), 8u) << decks[d];
+  }
+  std::printf("mode  lambda     reference [Hz]  20 B33/leg (ratio)      40 B33/leg (ratio)      extrapolated\n");
+  for (std::size_t m = 0; m < 8; ++m) {
+    const double lambda = (2.0 * static_cast<double>(m / 2) + 1.0) * kPi / 2.0;
+    const double reference = bending * std::pow(lambda / length, 2) / (2.0 * kPi);
+    const double coarse = modes[0][m].frequency_hz, fine = modes[1][m].frequency_hz;
+    const double correction = (fine - coarse) / 15.0;  // h^4: (2^4 - 1)
+    const double extrapolated = fine + correction;
+    std::printf("%4zu  %-9.6f  %14.6f  %10.6f (%.8f)  %10.6f (%.9f)  %10.6f\n", m + 1, lambda, reference, coarse, coarse / reference, fine,
+                fine / reference, extrapolated);
+    // + 1e-9: ten times the eigensolver's convergence tolerance (EigenOptions::tolerance, 1e-10).
+    EXPECT_NEAR(extrapolated, reference, std::abs(correction) + 1e-9 * reference) << "mode " << m + 1;
+    // The fine deck alone, as a user would run it: within twice the correction (fine - reference = -correction where the error goes as h^4).
+    EXPECT_NEAR(fine, reference, 2.0 * std::abs(correction) + 1e-9 * reference) << "mode " << m + 1;
+  }
+}
+
 }  // namespace

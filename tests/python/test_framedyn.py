@@ -340,9 +340,17 @@ def python_error_rows():
     return rows
 
 
+# The keyword arguments' rows: each call on the CIRC cantilever saved as frame.inp; the error names
+# the argument (key) and no file (the file is not at fault).
+DIALECT_ERROR_CASES = {
+    "PY-06": lambda: framedyn.read_mesh("frame.inp", dialect="nastran"),
+    "PY-07": lambda: framedyn.modes(framedyn.read_mesh("frame.inp", dialect="abaqus"), 2, dialect="calculix"),
+}
+
+
 def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
     rows = python_error_rows()
-    assert sorted(rows) == sorted(ERROR_CASES)
+    assert sorted(rows) == sorted(list(ERROR_CASES) + list(DIALECT_ERROR_CASES))
     monkeypatch.chdir(tmp_path)
     short_copy(tmp_path)
     for error_id, case in ERROR_CASES.items():
@@ -351,6 +359,12 @@ def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
             case(study)
         assert str(caught.value) == rows[error_id], error_id
         assert caught.value.file == "study.yaml" and caught.value.key
+    (tmp_path / "frame.inp").write_text(circ_cantilever_text())
+    for error_id, case in DIALECT_ERROR_CASES.items():
+        with pytest.raises(framedyn.Error) as caught:
+            case()
+        assert str(caught.value) == rows[error_id], error_id
+        assert caught.value.file is None and caught.value.key == "dialect" and isinstance(caught.value, RuntimeError)
 
 
 # ------------------------------------------------------------------ 3-D tire forces (issue 20)
@@ -382,3 +396,171 @@ def test_3d_tire_forces_are_series_equal_to_the_command_lines_response_csv(tmp_p
         assert min(vertical) == pytest.approx(contact["min_force"]["value"], rel=1e-12)
         assert max(vertical) == pytest.approx(contact["max_force"]["value"], rel=1e-12)
         assert vertical[0] == pytest.approx(r.summary["rigid"]["static"]["contact_forces"][tire]["value"], rel=1e-9)
+
+
+# ------------------------------------------------------------------ dialect= and the reader's warnings (issue 20)
+
+CIRC_RADIUS = 0.03  # the value on the CIRC line: a radius for Abaqus, a diameter for CalculiX 2.20
+
+
+def circ_cantilever_text(load=True):
+    text = cantilever_text(load=load)
+    rect = "SECTION=RECT\n%g, %g\n" % (A_SIDE, B_SIDE)
+    assert rect in text
+    return text.replace(rect, "SECTION=CIRC\n%g\n" % CIRC_RADIUS)
+
+
+@pytest.fixture
+def circ_cantilever(tmp_path):
+    path = tmp_path / "circ.inp"
+    path.write_text(circ_cantilever_text())
+    return str(path)
+
+
+def circle_bending_frequency(radius):
+    # f1 = (beta1 L)^2 / (2 pi) sqrt(E I / (rho A L^4)), I = pi r^4 / 4, A = pi r^2: sqrt(I / A) = r / 2.
+    return 1.875104069 ** 2 / (2 * math.pi) * math.sqrt(E / RHO) * (radius / 2) / L ** 2
+
+
+def test_a_circ_section_read_without_a_dialect_is_a_user_warning_and_listed_on_the_results(circ_cantilever):
+    with pytest.warns(UserWarning, match=r"\[circ_radius_or_diameter\].*give dialect= abaqus or calculix") as caught:
+        mesh = framedyn.read_mesh(circ_cantilever)
+    assert len([w for w in caught if "circ_radius_or_diameter" in str(w.message)]) == 1  # once per read
+    assert mesh.dialect is None
+    [w] = mesh.warnings
+    assert w["code"] == "circ_radius_or_diameter" and circ_cantilever + ":" in w["message"]
+    assert w["figures"]["radius_read"] == {"value": CIRC_RADIUS, "unit": "m"}
+    assert w["figures"]["radius_calculix"] == {"value": CIRC_RADIUS / 2, "unit": "m"}
+    # A path read by modes/static warns the same, and the result carries the list as summary.json does.
+    with pytest.warns(UserWarning, match="circ_radius_or_diameter"):
+        r = framedyn.modes(circ_cantilever, 2)
+    assert [x["code"] for x in r.warnings] == ["circ_radius_or_diameter"]
+    with pytest.warns(UserWarning, match="circ_radius_or_diameter"):
+        s = framedyn.static(circ_cantilever)
+    assert s.warnings == r.warnings
+    # Abaqus's reading (the default): the value is the radius; the bending pair at the closed form.
+    np.testing.assert_allclose(r.frequencies_hz, [circle_bending_frequency(CIRC_RADIUS)] * 2, rtol=1e-6)
+
+
+def test_the_dialect_keyword_reads_circ_values_as_the_command_line_does_and_warns_nothing(circ_cantilever, tmp_path):
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # any warning fails the test
+        calculix = framedyn.modes(circ_cantilever, 2, dialect="calculix")
+        abaqus = framedyn.modes(framedyn.read_mesh(circ_cantilever, dialect="abaqus"), 2, dialect="abaqus")
+        static_ccx = framedyn.static(circ_cantilever, dialect="calculix")
+        static_abq = framedyn.static(circ_cantilever, dialect="abaqus")
+        mesh = framedyn.read_mesh(circ_cantilever, dialect="calculix")
+    assert calculix.warnings == [] and abaqus.warnings == [] and static_ccx.warnings == [] and mesh.warnings == []
+    assert mesh.dialect == "calculix"
+    # CalculiX's reading: the value is the diameter, a circle of radius 0.015 m (closed form, Euler-Bernoulli).
+    np.testing.assert_allclose(calculix.frequencies_hz, [circle_bending_frequency(CIRC_RADIUS / 2)] * 2, rtol=1e-6)
+    np.testing.assert_allclose(abaqus.frequencies_hz, [circle_bending_frequency(CIRC_RADIUS)] * 2, rtol=1e-6)
+    # Tip deflection P L^3 / (3 E I), I = pi r^4 / 4: 16 times larger for the half radius.
+    for result, radius in ((static_ccx, CIRC_RADIUS / 2), (static_abq, CIRC_RADIUS)):
+        i = math.pi * radius ** 4 / 4
+        assert result.displacements[-1, 2] == pytest.approx(-P * L ** 3 / (3 * E * i), rel=1e-9)
+    # The same numbers as `framedyn modes --inp-dialect calculix` and `framedyn static --inp-dialect calculix`.
+    out = tmp_path / "modes_cli"
+    run = run_cli("modes", circ_cantilever, "-n", "2", "--inp-dialect", "calculix", "-o", str(out), "--paraview", "none", "-q",
+                  cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    _, rows = read_csv(out / "modes.csv")
+    close_to_printed(calculix.frequencies_hz, [row[1] for row in rows])
+    assert json.loads((out / "summary.json").read_text())["warnings"] == []
+    out = tmp_path / "static_cli"
+    run = run_cli("static", circ_cantilever, "--inp-dialect", "calculix", "-o", str(out), "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    _, rows = read_csv(out / "displacements.csv")
+    for k in range(6):
+        close_to_printed(static_ccx.displacements[:, k], [row[1 + k] for row in rows])
+    # The warning's list equals summary.json's without a dialect.
+    out = tmp_path / "plain_cli"
+    run = run_cli("static", circ_cantilever, "-o", str(out), "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    with pytest.warns(UserWarning):
+        plain = framedyn.static(circ_cantilever)
+    cli_warnings = json.loads((out / "summary.json").read_text())["warnings"]
+    assert [w["code"] for w in cli_warnings] == [w["code"] for w in plain.warnings]
+    assert cli_warnings[0]["figures"] == plain.warnings[0]["figures"]
+
+
+# ------------------------------------------------------------------ installing, pandas, the build check (issue 20)
+
+def test_batch_without_pandas_is_a_dict_of_arrays_and_with_pandas_a_dataframe(tmp_path, monkeypatch):
+    import types
+    study = framedyn.load_study(short_copy(tmp_path))
+    samples = [{"soil.damping": d} for d in (200, 300)]
+    monkeypatch.setitem(sys.modules, "pandas", None)  # `import pandas` raises ImportError, as without pandas
+    table = framedyn.batch(study, samples)
+    assert type(table) is dict
+    assert list(table)[0] == "soil.damping" and list(table)[-1] == "error"
+    for column, values in table.items():
+        assert len(values) == len(samples), column
+        if column != "error":
+            assert isinstance(values, np.ndarray) and values.dtype == np.float64, column
+    assert list(table["error"]) == ["", ""]
+    # With pandas importable the same dict goes to pandas.DataFrame (a stand-in module records the call).
+    calls = []
+    fake = types.ModuleType("pandas")
+    fake.DataFrame = lambda d: calls.append(d) or "a DataFrame"
+    monkeypatch.setitem(sys.modules, "pandas", fake)
+    assert framedyn.batch(study, samples) == "a DataFrame"
+    assert list(calls[0]) == list(table)
+    for column in table:
+        if column != "error":
+            np.testing.assert_array_equal(calls[0][column], table[column])
+
+
+@pytest.fixture(scope="module")
+def installed(tmp_path_factory):
+    """`cmake --install BUILD --prefix STAGE` with DESTDIR=STAGE too, so that an absolute
+    FRAMEDYN_PYTHON_INSTALL_DIR (the default: the interpreter's site-packages) is staged as well:
+    nothing outside the temporary folder is written. The folder holding the installed package framedyn/."""
+    stage = tmp_path_factory.mktemp("install") / "stage"
+    env = dict(os.environ, DESTDIR=str(stage))
+    run = subprocess.run([os.environ.get("FRAMEDYN_CMAKE", "cmake"), "--install", os.environ["FRAMEDYN_BUILD_DIR"], "--prefix",
+                          str(stage / "prefix")], capture_output=True, text=True, env=env)
+    assert run.returncode == 0, run.stdout + run.stderr
+    found = sorted(p.parent.parent for p in stage.rglob("framedyn/__init__.py"))
+    assert len(found) == 1, found
+    return found[0]
+
+
+def import_in_subprocess(path, code, tmp_path):
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["PYTHONPATH"] = str(path)
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path)
+
+
+@pytest.mark.skipif("FRAMEDYN_BUILD_DIR" not in os.environ, reason="needs the build tree (ctest sets FRAMEDYN_BUILD_DIR)")
+def test_cmake_install_gives_an_importable_module_with_the_build_trees_results(tmp_path, cantilever, installed):
+    site = installed
+    code = "import framedyn; r = framedyn.modes(%r, 4); print(framedyn.__file__); print(repr(list(r.frequencies_hz)))" % cantilever
+    run = import_in_subprocess(site, code, tmp_path)
+    assert run.returncode == 0, run.stderr
+    where, frequencies = run.stdout.strip().splitlines()
+    assert where.startswith(str(site))  # the installed copy, not the build tree's
+    assert eval(frequencies) == list(framedyn.modes(cantilever, 4).frequencies_hz)  # bit for bit
+
+
+@pytest.mark.skipif("FRAMEDYN_BUILD_DIR" not in os.environ, reason="needs the build tree (ctest sets FRAMEDYN_BUILD_DIR)")
+def test_a_copy_built_for_another_processor_says_so_on_import(tmp_path, installed):
+    # The installed package with one vector extension this processor lacks added to the build's list
+    # (_build.cpu_features): `import framedyn` must refuse with the build's flags and the missing
+    # extension named, before the extension (which would stop with SIGILL) is loaded.
+    import shutil
+    site = tmp_path / "site"
+    shutil.copytree(installed / "framedyn", site / "framedyn")  # a copy: the installed one stays as built
+    build_py = site / "framedyn" / "_build.py"
+    text = build_py.read_text()
+    assert "cpu_features = [" in text
+    build_py.write_text(text.replace("cpu_features = [", "cpu_features = [\"avx_from_the_future\", "))
+    run = import_in_subprocess(site, "import framedyn", tmp_path)
+    assert run.returncode != 0
+    assert "ImportError: framedyn: this copy was built with" in run.stderr
+    assert "this processor lacks avx_from_the_future" in run.stderr
+    assert "Rebuild framedyn on this machine" in run.stderr
+    run = import_in_subprocess(site, "import sys\ntry:\n    import framedyn\nexcept ImportError:\n    pass\n"
+                               "print('framedyn._framedyn' in sys.modules)", tmp_path)
+    assert run.stdout.strip() == "False"
