@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "coupling/frame_loads_2d.h"
 #include "coupling/study_blocks.h"
@@ -27,11 +30,41 @@ double inertia_of(const YamlMap& m, double mass, const std::string& what) {
   return mass * k * k;
 }
 
-// The mass and pitch inertia (about Y) of a declared added mass (DeclaredBodySize::body) of the machine.
+// The mass and pitch inertia (about Y) of a declared body (DeclaredBodySize::body) of the
+// machine: an added mass of the frame, the cab or the plow (docs/theory/rigid.md, section 16).
 BodyInertia body_inertia_2d(const rigid::Machine2DParameters& p, const DeclaredBodySize& b) {
   for (const rigid::AddedMass& a : p.frame.added_masses)
     if (b.body == "frame.added_masses[" + a.name + "]") return {a.mass, Eigen::Vector3d(0.0, a.inertia, 0.0)};
+  if (b.body == "cab") return {p.cab.mass, Eigen::Vector3d(0.0, p.cab.inertia, 0.0)};
+  if (b.body == "plow") return {p.plow.mass, Eigen::Vector3d(0.0, p.plow.inertia, 0.0)};
   return {};
+}
+
+// A 2-D body's declared box must hold the points the model puts on the body
+// (its c.g., its mounts, pins and contact points, [X, Z]): a declared length
+// (X) or height (Z) shorter than their span along it describes no body
+// (STUDY-146, at the body's dimensions key; docs/theory/rigid.md, section 16).
+void check_box_holds_points(const DeclaredBodySize& b, const std::vector<std::pair<const char*, Eigen::Vector2d>>& points,
+                            const core::UnitSystem& units) {
+  const std::string L = units.label(Quantity::length);
+  for (const auto& [side, along, name] : {std::tuple(0, 0, "length (X)"), std::tuple(2, 1, "height (Z)")}) {
+    if (!b.box.side[static_cast<std::size_t>(side)]) continue;
+    const double declared = *b.box.side[static_cast<std::size_t>(side)];
+    std::size_t lo = 0, hi = 0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      if (points[i].second[along] < points[lo].second[along]) lo = i;
+      if (points[i].second[along] > points[hi].second[along]) hi = i;
+    }
+    const double span = points[hi].second[along] - points[lo].second[along];
+    if (span <= declared * (1 + 1e-9)) continue;
+    throw core::InputError(b.where,
+                           fmt::format("a {} of at least {:.4g} {} for {} (the span of its own points, from its {} at {:.4g} to its {} at {:.4g} {}: "
+                                       "the box holds the whole body; docs/theory/rigid.md, section 16)",
+                                       name, units.from_si(span, Quantity::length), L, b.body, points[lo].first,
+                                       units.from_si(points[lo].second[along], Quantity::length), points[hi].first,
+                                       units.from_si(points[hi].second[along], Quantity::length), L),
+                           fmt::format("{:.4g} {}", units.from_si(declared, Quantity::length), L));
+  }
 }
 
 rigid::Tire2D tire(const YamlMap& m) {
@@ -221,7 +254,7 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
                      "a frame with mass (a positive mass or weight per length, or frame.added_masses)", "0 and no added masses");
 
   const YamlMap cab = root.map("cab");
-  cab.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "position", "front_mount", "rear_mount"});
+  cab.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "position", "front_mount", "rear_mount", "dimensions", "distributed"});
   p.cab.mass = cab.mass(kGravity);
   p.cab.inertia = inertia_of(cab, p.cab.mass, "cab");
   // theta_v has no other inertia: a zero one would leave M singular.
@@ -230,6 +263,10 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
   p.cab.cg = cab.point("position");
   p.cab.front = mount(cab.map("front_mount"));
   p.cab.rear = mount(cab.map("rear_mount"));
+  const std::size_t sizes_before_cab = s.body_sizes.size();
+  read_body_size(cab, "cab", "cab.", {1}, s.body_sizes);
+  if (s.body_sizes.size() > sizes_before_cab)
+    check_box_holds_points(s.body_sizes.back(), {{"c.g.", p.cab.cg}, {"front mount", p.cab.front.position}, {"rear mount", p.cab.rear.position}}, s.units);
 
   const YamlMap tires = root.map("tires");
   tires.allow_only({"front", "rear"});
@@ -244,7 +281,8 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
 
   if (auto plow_block = attachment_block(root, "plow", p.attachment == rigid::Attachment::plow, "no plow data unless attachment is plow", "a plow map")) {
     const YamlMap& plow = *plow_block;
-    plow.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder"});
+    plow.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder",
+                     "dimensions", "distributed"});
     rigid::Plow2D& pl = p.plow;
     pl.mass = plow.mass(kGravity);
     pl.inertia = inertia_of(plow, pl.mass, "plow");
@@ -257,6 +295,14 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
     if (pl.cylinder_arm_point == pl.cylinder_frame_point)
       throw cyl.error("arm_point", "a point apart from frame_point (a lift cylinder of nonzero length)", "frame_point's point");
     pl.lift_cylinder = {cyl.non_negative("stiffness", Quantity::translational_stiffness), cyl.non_negative_or("damping", Quantity::translational_damping, 0.0)};
+    // The plow body is the shank (link l2) with what it carries: pins 9 and 10, the blade, the shaker, the bounce tire.
+    const std::size_t sizes_before_plow = s.body_sizes.size();
+    read_body_size(plow, "plow", "plow.", {1}, s.body_sizes);
+    if (s.body_sizes.size() > sizes_before_plow)
+      check_box_holds_points(s.body_sizes.back(),
+                             {{"c.g.", pl.cg}, {"upper joint", pl.linkage.upper_joint}, {"lower joint", pl.linkage.lower_joint},
+                              {"blade point", pl.blade_point}, {"shaker point", pl.shaker_point}, {"bounce tire point", pl.bounce_tire_point}},
+                             s.units);
   }
   if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
     read_chain(*chain, p.chain);

@@ -590,6 +590,20 @@ int body_inertia_axis(const DeclaredBodySize& b, const std::string& name) {
 }
 }  // namespace
 
+namespace {
+// Whether calibration parameter `name` is the body's own mass or inertia
+// ("<prefix>mass", "<prefix>inertia[.xx|.yy|.zz]", the frame parts'
+// "mass_scale" and "inertia_scale.*"): a sub-part's parameter under the body's
+// prefix (the cab's mounts, the plow's bounce tire, lift cylinder or swing
+// spring) moves neither, so it does not make the body fitted
+// (docs/theory/rigid.md, section 16).
+bool fits_body_mass_or_inertia(const DeclaredBodySize& b, const std::string& name) {
+  if (name.rfind(b.parameter_prefix, 0) != 0) return false;
+  const std::string rest = name.substr(b.parameter_prefix.size());
+  return rest == "mass" || rest == "mass_scale" || rest == "inertia" || rest.rfind("inertia.", 0) == 0 || rest.rfind("inertia_scale.", 0) == 0;
+}
+}  // namespace
+
 void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
                                   const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of) {
   for (std::size_t i = 0; i < c.parameters.size() && i < c.bounds.size(); ++i) {
@@ -641,7 +655,7 @@ std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize
   for (const DeclaredBodySize& b : sizes) {
     bool fitted = false;
     if (calibration)
-      for (const std::string& name : calibration->parameters) fitted = fitted || name.rfind(b.parameter_prefix, 0) == 0;
+      for (const std::string& name : calibration->parameters) fitted = fitted || fits_body_mass_or_inertia(b, name);
     const BodyInertia m = inertia_of(b);
     if (!(m.mass > 0)) continue;
     for (int axis : b.axes) {

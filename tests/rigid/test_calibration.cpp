@@ -7,6 +7,9 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "coupling/rigid_study.h"
@@ -571,6 +574,175 @@ TEST(BodySize, FittedMassThatTakesAStatedInertiaOutOfItsBoxIsWarnedOf) {
   EXPECT_EQ(r.warnings[0].code, "calibration_outside_physical_range");
   EXPECT_NEAR(r.warnings[0].figures[1].value, 24 * std::sqrt(m0 / m), 1e-9 * 24);
   EXPECT_NEAR(r.warnings[0].figures[2].value, std::hypot(20.0, 44.0) / 2, 1e-9 * 24);
+}
+
+// A shipped 2-D study (`example`, under examples/) with every (from, to) edit
+// applied in order (each `from` must be there), read.
+coupling::RigidStudy edited_study(const std::string& example, const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR "/examples/") + example);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = s.find(from);
+    if (at == std::string::npos) throw std::runtime_error("test edit: '" + from + "' not in " + example);
+    s.replace(at, from.size(), to);
+  }
+  static framedyn::testing::TempDir dir("framedyn_body_size_2d");
+  const std::string file = (dir / "variant.yaml").string();
+  std::ofstream(file) << s;
+  return coupling::read_rigid_study(file);
+}
+
+// Case 1 (thesis) with the cab's radius of gyration `k` in, `extra` keys on
+// the cab's map and the calibration block `calibration` (case 1's own if "keep").
+coupling::RigidStudy case1_with_cab(const std::string& k, const std::string& extra, const std::string& calibration = "keep") {
+  std::vector<std::pair<std::string, std::string>> edits{
+      {"  radius_of_gyration: 16\n  position: [36, 32]\n", "  radius_of_gyration: " + k + "\n  position: [36, 32]\n" + extra}};
+  if (calibration != "keep") {
+    std::ifstream in(FRAMEDYN_SOURCE_DIR "/examples/thesis/case1.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    const std::size_t a = s.find("\ncalibration:"), b = s.find("\nanalysis:");
+    edits.emplace_back(s.substr(a + 1, b - a), calibration);
+  }
+  return edited_study("thesis/case1.yaml", edits);
+}
+
+// The 2-D cab and plow declare their boxes as the 3-D bodies do
+// (docs/theory/rigid.md, section 16), and a calibrated pitch inertia takes its
+// default bounds from them (Eqs. 15.1-15.2), the closed forms of a box of
+// sides a (X) and b (Z): the cab, 650 lb at k = 24 in in a 48 x 60 in side
+// view, distributed: k from sqrt((48^2 + 60^2)/12) = 22.18 in (the uniform
+// block) to sqrt(48^2 + 60^2)/2 = 38.42 in (all the mass at the corners); the
+// plow (r100_plow_2d, k = 12 in) in its shipped 20 x 48 in side view, not distributed:
+// from k / 1.5 = 8 in to sqrt(20^2 + 48^2)/2 = 26 in.
+TEST(BodySize2D, CabAndPlowBoxesBoundTheirCalibratedPitchInertiaByTheBoxsClosedForms) {
+  const double in = 0.0254;
+  const coupling::RigidStudy cab = case1_with_cab("24", "  dimensions: {length: 48, height: 60}\n  distributed: true\n",
+                                                  "calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {frequency_hz: 6.268, dominant: theta_v}\n");
+  ASSERT_EQ(cab.body_sizes.size(), 1u);
+  EXPECT_EQ(cab.body_sizes[0].body, "cab");
+  const double m_cab = cab.machine.cab.mass, d2 = (48.0 * 48 + 60 * 60) * in * in;
+  EXPECT_NEAR(m_cab, 650 * 4.4482216152605 / 9.80665, 1e-9 * m_cab);  // 650 lbf over standard gravity
+  const coupling::ParameterBound& bc = cab.calibration->bounds[0];
+  EXPECT_NEAR(bc.lower, m_cab * d2 / 12, 1e-12 * m_cab * d2);
+  EXPECT_NEAR(bc.upper, m_cab * d2 / 4, 1e-12 * m_cab * d2);
+  EXPECT_EQ(bc.basis.rfind("dimensions of cab", 0), 0u) << bc.basis;
+
+  const coupling::RigidStudy plow = edited_study(
+      "r100_plow_2d.yaml", {{"\nanalysis:", "\ncalibration:\n  parameters: [plow.inertia]\n  targets:\n    - {frequency_hz: 5.0}\nanalysis:"}});
+  ASSERT_EQ(plow.body_sizes.size(), 2u);  // the shipped cab's and plow's
+  EXPECT_EQ(plow.body_sizes[1].body, "plow");
+  const double m_plow = plow.machine.plow.mass, p2 = (20.0 * 20 + 48 * 48) * in * in;
+  const coupling::ParameterBound& bp = plow.calibration->bounds[0];
+  EXPECT_NEAR(bp.lower, m_plow * std::pow(12 * in / 1.5, 2), 1e-12 * m_plow * p2);
+  EXPECT_NEAR(bp.upper, m_plow * p2 / 4, 1e-12 * m_plow * p2);
+  EXPECT_EQ(bp.basis.rfind("dimensions of plow", 0), 0u) << bp.basis;
+}
+
+// A box that cannot hold its own body is refused where it is declared: the
+// cab's mounts are 32 in apart along X (20 and 52 in), so no 30 in long cab
+// carries them (STUDY-146); the plow's points span 43.97 in in Z (the blade
+// at -50 in to pin 9 at -6.03 in), so no 40 in high plow holds them
+// (STUDY-146); a cab in its smallest box (32 x 29 in, its mounts and c.g.) has
+// k at most sqrt(32^2 + 29^2)/2 = 21.59 in, so a stated 22 in is refused
+// (STUDY-167, Eq. 15.1).
+TEST(BodySize2D, BoxThatCannotHoldItsBodyIsRefusedAtItsDimensions) {
+  try {
+    case1_with_cab("16", "  dimensions: {length: 30, height: 40}\n");
+    ADD_FAILURE() << "a 30 in cab on mounts 32 in apart was read";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().key, "cab.dimensions");
+    EXPECT_NE(std::string(e.what()).find("a length (X) of at least 32 in for cab"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("found 30 in"), std::string::npos) << e.what();
+  }
+  try {
+    edited_study("r100_plow_2d.yaml", {{"  dimensions: {length: 20, height: 48}", "  dimensions: {length: 20, height: 40}"}});
+    ADD_FAILURE() << "a 40 in high plow spanning 43.97 in was read";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().key, "plow.dimensions");
+    EXPECT_NE(std::string(e.what()).find("a height (Z) of at least 43.97 in for plow"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("blade point"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(case1_with_cab("21.5", "  dimensions: {length: 32, height: 29}\n"));
+  try {
+    case1_with_cab("22", "  dimensions: {length: 32, height: 29}\n");
+    ADD_FAILURE() << "a 22 in radius of gyration in a 32 x 29 in box was read";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.where().key, "cab.dimensions");
+    EXPECT_NE(std::string(e.what()).find("at most 21.59 in for cab"), std::string::npos) << e.what();
+  }
+}
+
+// A fit that needs more than the box allows ends on the box and says so: the
+// cab's pitch mode asked 40 % lower needs k near 24 / 0.6 = 40 in; the 48 x
+// 60 in cab holds at most 38.42 in, so the fit stops there, at_bound, with the
+// remaining miss reported (its largest relative error above zero).
+TEST(BodySize2D, FitEndingOnTheCabsBoxIsReportedAtItsBound) {
+  const std::string box = "  dimensions: {length: 48, height: 60}\n  distributed: true\n";
+  const coupling::RigidStudy nominal = case1_with_cab("24", box, "");
+  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine);
+  double f0 = 0;
+  for (const rigid::RigidMode& m : rigid::rigid_modes(model.m, rigid::modal_stiffness(model, nominal.modal_soil), model.multibody.coordinate_names()))
+    if (m.dominant == "theta_v") f0 = m.frequency_hz;
+  ASSERT_GT(f0, 0);
+  const coupling::RigidStudy fit = case1_with_cab(
+      "24", box, fmt::format("calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {{frequency_hz: {:.17g}, dominant: theta_v}}\n", 0.6 * f0));
+  const coupling::RigidResults r = coupling::run_rigid_study(fit);
+  ASSERT_TRUE(r.calibration.has_value());
+  ASSERT_EQ(r.calibration->at_bound.size(), 1u);
+  EXPECT_TRUE(r.calibration->at_bound[0]);
+  const double k = std::sqrt(r.calibration->fitted[0] / fit.machine.cab.mass) / 0.0254;
+  EXPECT_NEAR(k, std::hypot(48.0, 60.0) / 2, 1e-6 * k);
+  EXPECT_GT(r.calibration->max_relative_error, 0.01);
+  EXPECT_EQ(r.calibration->achieved_dominant[0], "theta_v");
+}
+
+// Fitting a sub-part under a body's name (case 1 fits the cab's two mounts,
+// "cab.front_mount.stiffness" and "cab.rear_mount.stiffness") leaves the body
+// itself as stated: a cab declared distributed in a 48 x 60 in side view with
+// a stated k of 16 in, below the uniform block's 22.18 in, is warned of as a
+// stated inertia (inertia_below_uniform_body, figure `inertia`), not as a
+// fitted one (calibration_outside_physical_range), and the inertia reported is
+// the stated one.
+TEST(BodySize2D, FittedCabMountsLeaveTheCabAsStated) {
+  const coupling::RigidStudy s = case1_with_cab("16", "  dimensions: {length: 48, height: 60}\n  distributed: true\n");
+  ASSERT_TRUE(s.calibration.has_value());
+  ASSERT_NE(std::find(s.calibration->parameters.begin(), s.calibration->parameters.end(), "cab.front_mount.stiffness"),
+            s.calibration->parameters.end());
+  const coupling::RigidResults r = coupling::run_rigid_study(s);
+  int below = 0;
+  for (const core::Warning& w : r.warnings) {
+    EXPECT_NE(w.code, "calibration_outside_physical_range") << w.message;
+    if (w.code != "inertia_below_uniform_body") continue;
+    ++below;
+    ASSERT_EQ(w.figures.size(), 3u);
+    EXPECT_EQ(w.figures[0].name, "inertia");
+    EXPECT_NEAR(w.figures[1].value, 16.0, 1e-9 * 16);
+    EXPECT_NEAR(w.figures[2].value, std::hypot(48.0, 60.0) / std::sqrt(12.0), 1e-9 * 22);
+  }
+  EXPECT_EQ(below, 1);
+}
+
+// The shipped 2-D machine's cab and plow declare their boxes (48 x 60 in and
+// 20 x 48 in side views, docs/validation.md C3): each stated pitch radius of
+// gyration lies inside what its box allows (Eq. 16.1: cab 16 in <= 38.42 in,
+// plow 12 in <= 26 in), and each box holds the body's own points (Eq. 16.2).
+TEST(ShippedMachine, TwoDimensionalCabAndPlowRadiiOfGyrationAreInsideTheirDeclaredBoxes) {
+  const coupling::RigidStudy s = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
+  ASSERT_EQ(s.body_sizes.size(), 2u);
+  const double in = 0.0254;
+  for (const coupling::DeclaredBodySize& b : s.body_sizes) {
+    const bool cab = b.body == "cab";
+    const double m = cab ? s.machine.cab.mass : s.machine.plow.mass, i = cab ? s.machine.cab.inertia : s.machine.plow.inertia;
+    const rigid::GyrationRange g = rigid::gyration_range(b.box, 1);
+    const double k = std::sqrt(i / m);
+    EXPECT_NEAR(k / in, cab ? 16.0 : 12.0, 1e-9);
+    EXPECT_NEAR(g.largest / in, cab ? std::hypot(48.0, 60.0) / 2 : std::hypot(20.0, 48.0) / 2, 1e-9);
+    EXPECT_EQ(rigid::judge_gyration(k, g), rigid::GyrationVerdict::inside) << b.body;
+  }
 }
 
 // The labels cannot be fitted: fit_labels is refused, naming the key.
