@@ -41,6 +41,9 @@ std::string frame_build_key(const FrameStudyRequest& q) {
   key += fmt::format("\n-- mesh {} units {} convert {} supports {} method {} modes {} sets", q.mesh.string(), q.units.name(), q.convert_units,
                      static_cast<int>(q.supports), static_cast<int>(q.method), q.modes);
   for (const std::string& s : q.support_sets) key += " " + s;
+  // How the mesh is read: the CIRC dialect and the study's section dimensions (frame.sections) change the model.
+  key += fmt::format("\n-- inp_dialect {}", q.inp_dialect ? (*q.inp_dialect == fem::InpDialect::calculix ? "calculix" : "abaqus") : "unset");
+  key += section_overrides_key(q.sections);
   for (const FramePart& p : q.parts) {
     const rigid::RigidPart3D& b = p.part;
     key += fmt::format("\n-- part {} mass {} cg {} {} {} inertia", b.name, b.mass, b.cg.x(), b.cg.y(), b.cg.z());

@@ -8,8 +8,9 @@
 // objects from the same inputs; tests/batch/test_batch.cpp checks whole
 // summaries). The key is the mesh file's bytes and every request field the
 // build depends on, as exact text (supports, support sets, modes, method,
-// units, and each part's mass, c.g., inertia and mounts): a batch parameter
-// that changes a part's weight makes a new build. A mesh with *INCLUDE is never
+// units, inp_dialect, the section dimensions of frame.sections, and each
+// part's mass, c.g., inertia and mounts): a batch parameter that changes a
+// part's weight or a section's wall makes a new build. A mesh with *INCLUDE is never
 // reused (the included files are not in the key). One cache per worker thread
 // (fem::FrameDynamics shares work buffers: not for concurrent use).
 #pragma once

@@ -5,6 +5,8 @@
 
 #include <chrono>
 #include <exception>
+#include <fstream>
+#include <sstream>
 #include <thread>
 #include <cctype>
 #include <cmath>
@@ -125,10 +127,10 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
   if (pipeline)
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
                   "direct_substeps", "convert_units", "inp_dialect", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "dead_load",
-                  "compare_supports", "fatigue"});
+                  "compare_supports", "fatigue", "sections"});
   else
     f.allow_only({"mesh", "loads", "supports", "support_set", "modes", "method", "damping", "output_interval", "stations", "outputs", "paraview", "pvd",
-                  "direct_substeps", "convert_units", "inp_dialect", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "fatigue"});
+                  "direct_substeps", "convert_units", "inp_dialect", "mesh_loads", "steady_from", "stress_histories", "yield_strength", "fatigue", "sections"});
   FrameStudyRequest r;
   r.file = f.file();
   r.units = f.units();
@@ -219,6 +221,7 @@ FrameStudyRequest read_frame_block(const YamlMap& f, const std::filesystem::path
     else  // STUDY-155
       throw f.error("inp_dialect", "abaqus (SECTION=CIRC values are radii) or calculix (diameters)", quoted(dialect));
   }
+  if (f.has("sections")) r.sections = read_section_overrides(f.map("sections"));  // STUDY-152, 154; 150, 151, 153 once the mesh is read
   const std::string mesh_loads = f.text_or("mesh_loads", pipeline ? "none" : "constant");
   if (mesh_loads != "constant" && mesh_loads != "none")
     throw f.error("mesh_loads", "constant (the mesh's *CLOAD and *DLOAD act throughout, from their static equilibrium) or none", quoted(mesh_loads));
@@ -339,7 +342,16 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& q) {
   fem::InpReadOptions o;
   o.dialect = q.inp_dialect;
   o.dialect_key = q.where("inp_dialect").key;  // the warning names the study's key, not the command line's option
-  fem::FrameModel model = fem::read_inp(q.mesh, o);
+  fem::FrameModel model;
+  if (q.sections.empty()) {
+    model = fem::read_inp(q.mesh, o);
+  } else {  // the mesh text with the study's section dimensions on its *BEAM SECTION lines
+    std::ifstream in(q.mesh, std::ios::binary);
+    if (!in) throw core::InputError(q.where("mesh"), "a readable .inp mesh file", quoted(q.mesh.string()));
+    std::stringstream text;
+    text << in.rdbuf();
+    model = fem::read_inp_text(apply_section_overrides(text.str(), q.mesh.string(), q.sections, q.units), q.mesh.string(), q.mesh.parent_path(), o);
+  }
   // A mesh in other units than the study is most often the wrong file (a
   // metric copy of an inch frame): converted only when the study says so.
   if (!q.convert_units && model.units.name() != q.units.name())

@@ -52,6 +52,7 @@
 #include "coupling/frame_dead_load.h"
 #include "coupling/frame_fatigue.h"
 #include "coupling/frame_parts.h"
+#include "coupling/frame_sections.h"
 #include "coupling/hot_spots.h"
 #include "coupling/load_history.h"
 #include "coupling/load_mapping.h"
@@ -116,6 +117,8 @@ struct FrameStudyRequest {
   // for abaqus, diameter for calculix; docs/theory/fem.md section 23). Unset:
   // Abaqus's reading, and the circ_radius_or_diameter warning in the summary.
   std::optional<fem::InpDialect> inp_dialect;
+  // frame.sections: section dimensions by element set, written into the mesh text before it is read (coupling/frame_sections.h).
+  std::vector<SectionOverride> sections;
   // The mesh's own *CLOAD and *DLOAD (gravity) as constant loads acting
   // throughout, the response starting from the static equilibrium under them
   // (frame-response's default; the pipeline's loads come from the vehicle model).
