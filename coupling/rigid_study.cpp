@@ -205,6 +205,13 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
     if (model == "frame_transient")
       throw top.error("model", "a rigid-body study (rigid_2d; rigid_3d with framedyn run)", "'frame_transient' (a frame study: run it with framedyn frame-response)");
     if (model == "rigid_3d") throw top.error("model", "rigid_2d (framedyn sweep varies the 2-D machine)", "'rigid_3d'");
+    // The frame pipeline takes the 3-D model's six load components at the load points; the 2-D model
+    // has no lateral force and no roll or yaw moment to give it (docs/theory/coupling.md section 17).
+    if (model == "rigid_2d" && top.has("frame_response"))
+      throw top.error("frame_response",
+                      "model: rigid_3d for the frame pipeline (it loads the frame with lateral forces and roll and yaw moments, which the "
+                      "2-D model does not have; docs/theory/coupling.md section 17), or frame_output for the 2-D frame loads and resultants",
+                      "a frame_response block in a rigid_2d study");
   }
   const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires",
                                                           "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_output"});

@@ -179,15 +179,6 @@ void read_part_mounts(const YamlMap& a, StudyFramePart& sp) {
 
 }  // namespace
 
-std::vector<RoadDelay> road_delays(const rigid::Machine3DParameters& machine) {
-  std::vector<RoadDelay> out;
-  for (const auto& t : named_tires(machine))
-    for (const auto& [suffix, input] : {std::pair("", &t.tire->vertical_input), std::pair(" (longitudinal)", &t.tire->longitudinal_input)})
-      if (input->kind == rigid::GroundInput::Kind::road)
-        out.push_back({std::string(t.name) + suffix, input->behind, input->behind / input->speed, input->behind_given});  // F.31
-  return out;
-}
-
 std::string study_model(const std::string& file) { return study_model(load_yaml_file(file), file); }
 
 std::string study_model(const YAML::Node& doc, const std::string& file) {
@@ -529,13 +520,15 @@ RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
   if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
   r.frame_loads = frame_loads_3d(model, study.machine, state, tr);
   r.static_frame_loads = static_frame_loads_3d(model, study.machine);
-  assess_response(study, model, r);  // steady operation, validity warnings (issue 15)
   // The tires' forces, vertical, longitudinal and lateral, as the 2-D model's tire normal and
   // tractive forces (Eq. 2.42, compression positive): response.csv's last columns (issue 20).
-  // After assess_response, so that rigid.steady's peaks stay those of the blade, soil and chain.
+  // Before assess_response, so that rigid.steady.peaks holds each tire's peaks as the 2-D model
+  // holds its contacts' (issue 15); the detector watches only the blade and the frame loads, so
+  // reached_at does not depend on them.
   for (const char* tire : {"front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire"})
     for (const char* direction : {"_vertical", "_longitudinal", "_lateral"})
       r.series.push_back(element_force_series(model, state, tr, model.multibody.element_index(std::string(tire) + direction)));
+  assess_response(study, model, r);  // steady operation, validity warnings (issue 15)
   return r;
 }
 

@@ -16,6 +16,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
+#include "coupling/road_delays.h"
 #include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/machine_3d.h"
@@ -54,17 +55,9 @@ RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file)
 
 // The rear tires' delay (docs/theory/fatigue.md section 11, F.30-F.31): a tire's road input
 // (kind: road) without `behind` runs behind = x_tire - x_front behind the front axle, x_front
-// the mean X of the front tires' contacts (X grows rearward), and so sees the front's profile
-// delay = behind / speed later; `behind` in the study overrides the derived value. The
-// reader fills GroundInput::behind so; a tire ahead of the front axle is refused (STUDY-141).
-struct RoadDelay {
-  std::string tire;       // "front left", ..., with "(longitudinal)" for a longitudinal input
-  double behind = 0.0;    // m
-  double delay = 0.0;     // s
-  bool given = false;     // from the study's `behind`, else derived
-};
-// Every road input of the machine's tires, front left, front right, rear left, rear right.
-std::vector<RoadDelay> road_delays(const rigid::Machine3DParameters& machine);
+// the mean X of the front tires' contacts (X grows rearward); `behind` in the study overrides the
+// derived value. The reader fills GroundInput::behind so; a tire ahead of the front axle is refused
+// (STUDY-141). coupling::road_delays (coupling/road_delays.h, shared with 2-D) lists them.
 
 // Parameters a 3-D calibration may adjust (SI values). Names:
 //   tires.<front|rear>.<vertical|longitudinal|lateral>.stiffness  (both tires of the axle)

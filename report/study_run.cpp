@@ -17,6 +17,7 @@
 #include "core/results_folder.h"
 #include "coupling/frame_loads_3d.h"
 #include "coupling/load_history.h"
+#include "coupling/road_delays.h"
 #include "coupling/validity_warnings.h"
 #include "coupling/yaml_input.h"
 #include "report/calibration_output.h"
@@ -170,18 +171,19 @@ std::string running_stage(const coupling::RigidStudy3D& s) {
   return s.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)";
 }
 
-// The model's keys after rigid.fixed_coordinates: 3-D, the road inputs' delays behind the front axle
-// (docs/theory/fatigue.md section 11); 2-D, none.
-void add_model_keys(nlohmann::ordered_json&, const coupling::RigidStudy&) {}
-void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy3D& study) {
-  const core::UnitSystem& u = study.units;
+// The model's keys after rigid.fixed_coordinates: the road inputs' delays behind the front axle
+// (docs/theory/fatigue.md section 11), the same in 2-D and 3-D (coupling::road_delays).
+template <class Machine>
+void add_road_inputs(nlohmann::ordered_json& rigid, const Machine& machine, const core::UnitSystem& u) {
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
   nlohmann::ordered_json road = nlohmann::ordered_json::array();
-  for (const coupling::RoadDelay& d : coupling::road_delays(study.machine))
+  for (const coupling::RoadDelay& d : coupling::road_delays(machine))
     road.push_back({{"tire", d.tire}, {"behind", report::quantity(d.behind * lf, u.label(Quantity::length))},
                     {"delay", report::quantity(d.delay, "s")}, {"source", d.given ? "behind (given)" : "derived from the tire positions"}});
   if (!road.empty()) rigid["road_inputs"] = road;
 }
+void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy& study) { add_road_inputs(rigid, study.machine, study.units); }
+void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy3D& study) { add_road_inputs(rigid, study.machine, study.units); }
 
 // The summary's rigid block up to the response: model, dofs, coordinates, fixed coordinates, the
 // model's keys, modes (rigid_modes.csv), modes by contact state, the static contacts, the calibration.

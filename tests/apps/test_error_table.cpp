@@ -513,6 +513,8 @@ std::vector<Row> rows() {
                 "tires.rear.left.vertical_input", kStudy3D),
       study_row("STUDY-160", "    contact: [72, -26]\n", "    contact: [-10, -26]\n    normal_input: {kind: road, class: D, speed: 78.74}\n", "normal_input:",
                 "tires.rear.normal_input"),
+      // ---- the frame pipeline asked of the 2-D model (docs/theory/coupling.md section 17)
+      study_row("STUDY-142", "name: error table, 2-D\n", "name: error table, 2-D\nframe_response: {mesh: frame.inp}\n", "frame_response:", "frame_response"),
       // ---- duty cycles (coupling/duty_cycle.cpp)
       Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
       Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
