@@ -53,6 +53,7 @@ int run_batch_command(const BatchCommandOptions& opt) {
   const batch::BatchDesign design = batch::read_batch_design(opt.design);
   progress.stage("runs");
   bo.progress = [&](std::size_t done, std::size_t total) { progress.step(static_cast<long long>(done), static_cast<long long>(total)); };
+  bo.stage = [&](const std::string& what) { progress.stage(what); };
   batch::BatchCounts c;
   if (batch::mpi_world_size() > 1) {
     c = batch::run_batch_mpi(design, bo);

@@ -51,16 +51,18 @@ report::DesignTable design_table(const BatchDesign& design, const std::vector<Ru
 }
 
 std::vector<std::string> write_batch_figures(const BatchDesign& design, const BatchOptions& options) {
-  const std::string csv = read_text(options.out / "runs.csv"), summary = read_text(options.out / "summary.json");
+  const std::string csv = read_text(options.out / "runs.csv");
+  nlohmann::ordered_json summary = nlohmann::ordered_json::parse(read_text(options.out / "summary.json"));
   const std::vector<RunRecord> rows = read_runs_csv(design, options.out / "runs.csv");
   core::ResultsFolder folder(options.out, batch_inputs(design));
   folder.write_text("runs.csv", csv);
-  folder.write_text("summary.json", summary);
   std::vector<std::string> files;
   for (const report::DesignFigure& f : report::design_figures(design_table(design, rows))) {
     report::write_png(f.figure, folder.path_of(f.file));
     files.push_back(f.file);
   }
+  summary["figures"] = files;  // the figure files, relative to the folder
+  folder.write_text("summary.json", summary.dump(2) + "\n");
   folder.commit();
   return files;
 }

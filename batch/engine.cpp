@@ -309,6 +309,7 @@ nlohmann::ordered_json batch_summary(const BatchDesign& d, const std::vector<Run
     sens[d.outputs[o]] = js;
   }
   j["sensitivity"] = sens;
+  j["figures"] = nlohmann::ordered_json::array();  // the figure files in the folder (batch --figures: write_batch_figures lists them)
   return j;
 }
 
@@ -390,6 +391,7 @@ BatchCounts run_batch(const BatchDesign& design, const BatchOptions& options) {
     }
   });
   if (failure) std::rethrow_exception(failure);
+  if (options.stage) options.stage("writing results");
   write_batch_folder(design, rows, options);
   for (const RunRecord& r : rows) {
     counts.done += r.present && r.done;

@@ -60,6 +60,7 @@ struct BatchOptions {
   bool reuse_models = true;        // each worker builds its frame models once (coupling/frame_model_cache.h); false: every run builds its own
   std::size_t checkpoint_runs = 0;  // write the folder every so many runs (0: every 5 % of the runs)
   std::function<void(std::size_t, std::size_t)> progress;  // (runs finished, runs to do)
+  std::function<void(const std::string&)> stage;            // called with "writing results" once the runs are done
 };
 
 struct BatchCounts {

@@ -133,6 +133,7 @@ BatchCounts run_batch_mpi(const BatchDesign& design, const BatchOptions& options
       write_batch_folder(design, rows, options);
     }
   }
+  if (options.stage) options.stage("writing results");
   write_batch_folder(design, rows, options);
   for (const RunRecord& r : rows) {
     counts.done += r.present && r.done;

@@ -1,9 +1,15 @@
 // Whole-or-absent results folders that replace only what framedyn wrote:
-// write beside the target, list the files in a manifest, rename into place,
-// then delete the old folder's listed files (and the folder once empty).
+// write beside the target, list the files in a manifest, swap it with the old
+// folder in one step (or rename into place), then delete the old folder's
+// listed files (and the folder once empty).
 #include "core/results_folder.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <stdio.h>  // renameat2, RENAME_EXCHANGE (glibc >= 2.28, with _GNU_SOURCE)
+
+#include <cerrno>
 
 #include <fmt/format.h>
 
@@ -94,6 +100,23 @@ bool remove_listed(const fs::path& folder, const std::set<std::string>& listed) 
   std::sort(ordered.begin(), ordered.end(), [](const fs::path& a, const fs::path& b) { return a.string().size() > b.string().size(); });
   for (const fs::path& d : ordered) fs::remove(folder / d, ec);  // removes only an empty folder
   return fs::remove(folder, ec);
+}
+
+// Swaps two existing folders in one step (renameat2 RENAME_EXCHANGE, Linux >= 3.15).
+// False, changing nothing, where the file system or kernel cannot (EINVAL,
+// ENOSYS, EOPNOTSUPP): the caller then falls back to two renames. Throws on
+// any other failure (the old results then stay in place).
+bool exchange_folders(const fs::path& a, const fs::path& b) {
+#ifdef RENAME_EXCHANGE
+  if (::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0) return true;
+  const int e = errno;
+  if (e == EINVAL || e == ENOSYS || e == EOPNOTSUPP) return false;
+  throw std::runtime_error("cannot swap the new results into " + b.string() + ": " + std::generic_category().message(e));
+#else
+  (void)a;
+  (void)b;
+  return false;
+#endif
 }
 
 }  // namespace
@@ -196,9 +219,23 @@ void ResultsFolder::commit() {
     if (!out) throw std::runtime_error("cannot write " + (partial_ / kManifestName).string());
   }
   std::set<std::string> old_files;
-  fs::path old;
   if (fs::exists(fs::symlink_status(target_, ec))) {
     read_manifest(target_, old_files);  // none: an empty folder (check_results_target)
+    // One atomic swap: the target holds the old results, then the new ones, and is
+    // never absent, whenever the process stops (SIGKILL included). The old results
+    // are then at the partial folder's name, deleted below file by listed file.
+    if (exchange_folders(partial_, target_)) {
+      committed_ = true;
+      unregister_temporary(partial_);
+      note_results_written(target_);
+      if (!remove_listed(partial_, old_files))
+        std::fprintf(stderr, "framedyn: warning: the earlier results were moved to %s and not all of it could be deleted\n", partial_.string().c_str());
+      return;
+    }
+  }
+  fs::path old;
+  if (fs::exists(fs::symlink_status(target_, ec))) {
+    // A file system without the atomic swap: the old folder aside, then the new one in.
     for (int attempt = 0;; ++attempt) {
       old = target_;
       old += ".old-" + std::to_string(::getpid()) + (attempt ? "-" + std::to_string(attempt) : std::string());

@@ -1,9 +1,15 @@
 // A results folder that is whole or absent, and that never costs the user a
 // file. Files are written into a sibling folder "<target>.partial-<pid>";
 // commit() writes the manifest (kManifestName: the list of the files of the
-// run) and moves the folder into place in one rename, so a run that stops
-// half-way (an error, an exception, Ctrl-C or SIGTERM: core/interrupt.h)
-// leaves any previous results untouched and no partial folder behind.
+// run) and moves the folder into place in one rename, or, over earlier
+// results, swaps the two folders in one step (renameat2 RENAME_EXCHANGE), so
+// the target is never absent; a run that stops half-way (an error, an
+// exception, Ctrl-C or SIGTERM: core/interrupt.h) leaves any previous results
+// untouched and no partial folder behind, and even SIGKILL, at any moment,
+// leaves at the target either the old results or the new ones, whole (and at
+// most a "<target>.partial-<pid>" beside it). Where the file system cannot
+// swap, the old folder is renamed aside first (a SIGKILL between the two
+// renames then leaves it in "<target>.old-<pid>").
 //
 // framedyn replaces only what it made: a target that does not exist, an empty
 // folder, or a folder whose manifest lists every file in it. Anything else at
@@ -49,7 +55,8 @@ class ResultsFolder {
   // Throws NumericalError, writing nothing, if the content holds a NaN or an
   // infinity (check_finite_output, core/finite_output.h).
   void write_text(const std::string& file_name, const std::string& content) const;
-  // Replace the target by the partial folder. Throws InputError if the target
+  // Replace the target by the partial folder (an atomic swap over earlier
+  // results, see above). Throws InputError if the target
   // changed into something framedyn may not replace since the run began,
   // std::runtime_error on a failed rename (the old results then stay).
   void commit();

@@ -1,12 +1,11 @@
-// Parameter sweeps: one study run once per value of a named machine parameter
-// (the thesis's Chapter V studies of the ground stiffness K5, 20,000 to
-// 60,000 lbf/in, and damping C5, 100 to 500 lbf*s/in: Figures 9 and 10).
-// Each run is run_rigid_study on a copy of the study with the parameter set;
-// nothing else changes, so the runs are independent and may run on several
-// threads with results identical to a sequential run. No files are touched.
+// Parameter sweeps' typed results: one point per run of a vehicle study (the
+// thesis's Chapter V studies of the ground stiffness K5, 20,000 to 60,000
+// lbf/in, and damping C5, 100 to 500 lbf*s/in: Figures 9 and 10). The runs
+// themselves are the batch engine's (batch/sweep_runs.h,
+// batch::run_one_parameter_sweep: the study run once per value of a key path,
+// on the engine's workers); report/sweep_outputs.h writes the tables and figures.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,18 +41,7 @@ struct SweepResult {
   int reference_index = -1;
 };
 
-// Parameters a sweep may change: the calibratable ones and soil.damping.
-std::vector<std::string> sweepable_parameters();
-
 // (value - reference) / reference, or nothing if either is missing or the reference is 0.
 std::optional<double> relative_change(const std::optional<double>& value, const std::optional<double>& reference);
-
-// Runs `study` once per value (SI) of `parameter`, on up to `threads` threads.
-// `progress`, if given, is called (from any thread, one call at a time) as each
-// run starts. Throws core::InputError (key "--parameter" or "--values") for an
-// unknown parameter, one the study calibrates, no values, a negative or
-// non-finite value, or a study without analysis.response; run errors pass through.
-SweepResult run_parameter_sweep(const RigidStudy& study, const std::string& parameter, const std::vector<double>& values, int threads = 1,
-                                const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace framedyn::coupling

@@ -122,7 +122,6 @@ ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCyc
   const std::size_t ws = life.worst_station;
   const int wp = life.worst_point;
   const double d_cycle = life.damage_per_cycle.at(ws).empty() ? 0.0 : life.damage_per_cycle[ws][static_cast<std::size_t>(wp)];
-  const double min_life = life.life_hours(ws, wp);
   const auto where = [&](std::size_t s, int p) {
     const coupling::StressStation& st = h.stations[s];
     return ordered_json{{"output", st.set}, {"element", st.element_id}, {"station", st.station}, {"point", point_name(h, s, p)},
@@ -132,7 +131,7 @@ ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCyc
   fat["stress"] = kStressDescription;
   fat["combination"] = coupling::combination_rule(first.frame.life->code_id);
   fat["cycle_hours"] = life.cycle_hours;
-  ordered_json ml = {{"value", std::isfinite(min_life) ? ordered_json(min_life) : ordered_json(nullptr)}, {"unit", "h"}};
+  ordered_json ml = life_json(life.cycle_hours, d_cycle);
   ml.update(where(ws, wp));
   ml["dominant"] = r.scenarios[static_cast<std::size_t>(life.dominant[ws][static_cast<std::size_t>(wp)])].name;
   fat["min_life"] = ml;
@@ -167,7 +166,7 @@ ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCyc
                       {"damage_at_min_life_location", sc.hours * lm.damage_per_hour[ws][static_cast<std::size_t>(wp)]},
                       {"share_at_min_life_location", scenario_share(r, i, ws, wp)},
                       {"locations_dominated", dominated[i]},
-                      {"min_life_alone", {{"value", own > 0.0 ? ordered_json(1.0 / own) : ordered_json(nullptr)}, {"unit", "h"}}}};
+                      {"min_life_alone", life_json(1.0, own)}};
     o["min_life_alone"].update(where(lm.worst_station, lm.worst_point));
     scen.push_back(o);
   }

@@ -23,11 +23,12 @@ double life_of(double damage_per_hour) { return damage_per_hour > 0.0 ? 1.0 / da
 // An empty cell for a point without damage (every cycle below the cut-off): framedyn writes no "inf".
 std::string life_text(double life) { return std::isfinite(life) ? fmt::format("{:.6g}", life) : ""; }
 
-ordered_json life_value(double hours_per_damage, double damage) {
-  return damage > 0.0 ? ordered_json(hours_per_damage / damage) : ordered_json(nullptr);
-}
-
 }  // namespace
+
+ordered_json life_json(double hours_per_damage, double damage) {
+  if (damage > 0.0) return {{"value", hours_per_damage / damage}, {"unit", "h"}};
+  return {{"unit", "h"}, {"none", kUnlimitedLifeReason}};
+}
 
 std::string life_text(double hours_per_damage, double damage) { return damage > 0.0 ? life_text(hours_per_damage / damage) : std::string(); }
 
@@ -41,10 +42,15 @@ ordered_json proportionality_summary(coupling::FatigueCode code, double r, doubl
   ordered_json j;
   j["measure"] = coupling::proportionality_rule(code);
   j["correlation"] = r;
-  j["comparison_value"] = code == coupling::FatigueCode::iiw ? ordered_json(cv) : ordered_json(nullptr);
+  // EN 1993-1-9 has no comparison value (it adds the damage sums, F.29): no comparison_value and
+  // no lives under IIW's two CVs, only the correlation and why; a null would be refused as a broken-down number.
+  if (code == coupling::FatigueCode::iiw) j["comparison_value"] = cv;
   j["why"] = comparison_value_reason(code, r, cv);
-  j["life_proportional"] = {{"value", life_value(hours_per_damage, d_prop)}, {"unit", "h"}, {"comparison_value", coupling::kIiwProportionalComparisonValue}};
-  j["life_non_proportional"] = {{"value", life_value(hours_per_damage, d_non)}, {"unit", "h"}, {"comparison_value", coupling::kIiwNonProportionalComparisonValue}};
+  if (code != coupling::FatigueCode::iiw) return j;
+  j["life_proportional"] = life_json(hours_per_damage, d_prop);
+  j["life_proportional"]["comparison_value"] = coupling::kIiwProportionalComparisonValue;
+  j["life_non_proportional"] = life_json(hours_per_damage, d_non);
+  j["life_non_proportional"]["comparison_value"] = coupling::kIiwNonProportionalComparisonValue;
   return j;
 }
 
@@ -105,18 +111,16 @@ ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const couplin
   const core::UnitSystem& u = q.units;
   const coupling::StressStation& st = r.stress.stations.at(m.worst_station);
   const double d = m.max_damage_per_hour();
-  const double life = life_of(d);
   j["code"] = m.code;
   j["stress"] = kStressDescription;
   j["combination"] = coupling::combination_rule(m.code_id);
   j["hours"] = q.fatigue->hours;
-  j["min_life"] = {{"value", std::isfinite(life) ? ordered_json(life) : ordered_json(nullptr)},
-                   {"unit", "h"},
-                   {"element", st.element_id},
+  j["min_life"] = life_json(1.0, d);
+  j["min_life"].update(ordered_json{{"element", st.element_id},
                    {"station", st.station},
                    {"point", r.stress.points[static_cast<std::size_t>(st.section)][static_cast<std::size_t>(m.worst_point)].name},
                    {"output", st.set},
-                   {"X", {{"value", u.from_si(st.point.x(), Quantity::length)}, {"unit", u.label(Quantity::length)}}}};
+                   {"X", {{"value", u.from_si(st.point.x(), Quantity::length)}, {"unit", u.label(Quantity::length)}}}});
   j["damage_per_hour"] = {{"value", d}, {"unit", "1/h"}};
   j["damage_per_hour_parts"] = damage_parts(m.normal_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)],
                                             m.shear_damage_per_hour[m.worst_station][static_cast<std::size_t>(m.worst_point)], d, "1/h");

@@ -30,6 +30,13 @@ nlohmann::ordered_json proportionality_summary(coupling::FatigueCode code, doubl
                                                double damage_non_proportional, double hours_per_damage);
 // "CV 1 (|r| = 0.998 >= 0.95: proportional)": why a CV was applied.
 std::string comparison_value_reason(coupling::FatigueCode code, double correlation, double comparison_value);
+// Why a life is unlimited: no cycle at any point of the life map does damage.
+inline constexpr const char* kUnlimitedLifeReason =
+    "unlimited: no cycle does damage (every stress range below its S-N curve's cut-off, or no stress range)";
+// A life of `hours_per_damage` / `damage` hours as {value, unit: h}; an unlimited life (no
+// damage) as {unit: h, none: kUnlimitedLifeReason}, the summaries' shape for a quantity without a
+// value (framedyn writes no null, infinity or NaN).
+nlohmann::ordered_json life_json(double hours_per_damage, double damage);
 // An empty cell for an unlimited life (no damage): framedyn writes no "inf".
 std::string life_text(double hours_per_damage, double damage);
 

@@ -4,7 +4,7 @@
 // results folder; with -v it lists its stages, "writing results" among them,
 // each with its time. The commands run as a user runs them: modes, static,
 // harmonic, random and frame-response on small frames, and run (2-D, 3-D,
-// the pipeline) and sweep on the shipped studies cut to 0.05 s.
+// the pipeline), sweep and batch on the shipped studies cut to 0.05 s.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -61,6 +61,8 @@ class EveryCommand : public ::testing::TestWithParam<Case> {
     std::ofstream(dir_ / "plow_3d.yaml") << shipped("r100_plow_offset.yaml");
     std::ofstream(dir_ / "pipeline.yaml") << shipped("offset_plowing.yaml");
     std::ofstream(dir_ / "portal.yaml") << shipped("portal_frame_sway.yaml");
+    std::ofstream(dir_ / "design.yaml") << "framedyn_batch: 1\nstudy: plow_2d.yaml\nsampling: {method: grid}\n"
+                                           "parameters:\n  - {key: soil.damping, values: [200, 300]}\noutputs:\n  - rigid.response.peak_cutting_force\n";
   }
   TempDir dir_{"console"};
 };
@@ -100,7 +102,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"random", "random frame.inp --psd psd.csv -z 0.02 --no-figures"},
                       Case{"frame_response", "frame-response portal.yaml"}, Case{"run_2d", "run plow_2d.yaml"},
                       Case{"run_3d", "run plow_3d.yaml"}, Case{"pipeline", "run pipeline.yaml"},
-                      Case{"sweep", "sweep plow_2d.yaml -p soil.damping --values 100,200 --no-figures"}),
+                      Case{"sweep", "sweep plow_2d.yaml -p soil.damping --values 100,200 --no-figures"},
+                      Case{"batch", "batch design.yaml -j 1"}),
     [](const ::testing::TestParamInfo<Case>& p) { return p.param.name; });
 
 TEST(Verbosity, QuietAndVerboseTogetherAreRefused) {

@@ -15,10 +15,14 @@
 // no /tmp/framedyn_plot_<pid>_* of the run; no process left in the run's
 // process group (the gnuplot children).
 // A second campaign interrupts the XDMF series' one .h5 file while it grows.
+// A third kills runs into existing results with SIGKILL, which nothing can
+// catch, at random moments and at the commit: the results folder is there
+// after every kill, holding the earlier run or the new one, whole.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -30,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -325,6 +330,88 @@ TEST_F(InterruptCampaign, InterruptsWhileTheHdf5FileGrowsLeaveEarlierResultsAndN
   }
   std::printf("[ campaign ] .h5 of %ju bytes; %d interrupted while it grew, %d finished first\n", full, interrupted, finished);
   EXPECT_GE(interrupted, 6) << "the .h5 grows over most of the writing: most of these moments fall inside it";
+}
+
+// SIGKILL (no clean-up can run) at 18 moments of runs into existing results
+// (the VTU series: 200 files, so the swap's old folder takes a while to delete):
+//   - 6 at random delays over the length of an uninterrupted run (seeded);
+//   - 6 once the new folder's manifest exists (the commit has begun: the swap is next);
+//   - 6 once `results` is another folder (just after the swap, while the old one is deleted).
+// After each kill `results` exists and holds either the earlier results or the
+// new run, whole: byte for byte the files of an uninterrupted run (the same study
+// gives the same files); its inode says which; no `results.old-*` (the swap is one step); a
+// `results.partial-<pid>` may be left (SIGKILL). At the end a plain re-run into
+// `results` succeeds beside that litter.
+TEST_F(InterruptCampaign, SigkillAtAnyMomentLeavesTheEarlierOrTheNewResultsWhole) {
+  dir_.write("study.yaml", study_text());
+  const auto start = Clock::now();
+  const pid_t first = start_run(dir_.path(), false);
+  int status = -1000;
+  while ((status = poll_exit(first)) == -1000) std::this_thread::sleep_for(1ms);
+  const double run_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  ASSERT_EQ(status, 0) << read_text(dir_ / "stderr.txt");
+  const fs::path results = dir_ / "results";
+  const std::map<std::string, std::string> whole = contents(results);
+  const std::set<std::string> all_names = names(results);
+  ASSERT_TRUE(all_names.count("frame_response_00200.vtu"));
+  const auto inode = [&results]() -> long long {
+    struct stat st {};
+    return ::stat(results.c_str(), &st) == 0 ? static_cast<long long>(st.st_ino) : -1;
+  };
+  std::mt19937 random(20261204);
+  std::uniform_real_distribution<double> moment(0.0, run_seconds);
+  int kept_old = 0, kept_new = 0, finished = 0;
+  for (int t = 0; t < 18; ++t) {
+    const int kind = t % 3;  // 0 random delay, 1 commit begun, 2 just swapped
+    const double delay = moment(random);
+    SCOPED_TRACE("kill " + std::to_string(t + 1) + (kind == 0 ? " after " + std::to_string(delay) + " s" : kind == 1 ? " at the commit" : " after the swap"));
+    const long long before = inode();
+    ASSERT_GE(before, 0);
+    const pid_t pid = start_run(dir_.path(), false);
+    const auto begin = Clock::now();
+    for (;;) {
+      if ((status = poll_exit(pid)) != -1000) break;  // finished before the moment came
+      bool now = false;
+      if (kind == 0) {
+        now = std::chrono::duration<double>(Clock::now() - begin).count() >= delay;
+      } else if (kind == 1) {
+        std::error_code ec;
+        now = fs::exists(dir_ / ("results.partial-" + std::to_string(pid)) / ".framedyn-manifest", ec);
+      } else {
+        now = inode() != before;
+      }
+      if (now) {
+        ::kill(pid, SIGKILL);
+        while ((status = poll_exit(pid)) == -1000) std::this_thread::sleep_for(1ms);
+        break;
+      }
+      std::this_thread::sleep_for(kind == 0 ? 1ms : 50us);
+    }
+    ASSERT_TRUE(fs::is_directory(results)) << "the results folder is absent after the kill";
+    if (status == 0) {
+      ++finished;
+    } else {
+      EXPECT_EQ(status, -SIGKILL);
+    }
+    // The same study gives the same files byte for byte (same input, same output), so the
+    // earlier results and a new run's are both exactly `whole`; which one is there, the
+    // folder's inode tells (the swap puts another folder at the path).
+    EXPECT_TRUE(contents(results) == whole) << "the results folder is not a whole run";
+    if (inode() == before) ++kept_old;
+    else ++kept_new;
+    EXPECT_TRUE(entries_containing(dir_.path(), ".old-").empty());
+  }
+  const std::size_t litter = entries_containing(dir_.path(), "results.partial-").size();
+  // The way on after any of them: run again into the same folder.
+  const pid_t again = start_run(dir_.path(), false);
+  while ((status = poll_exit(again)) == -1000) std::this_thread::sleep_for(1ms);
+  EXPECT_EQ(status, 0) << read_text(dir_ / "stderr.txt");
+  EXPECT_TRUE(contents(results) == whole);
+  std::printf("[ campaign ] SIGKILL 18 times (run %.2f s): %d left the earlier results, %d the new ones whole, %d finished first; "
+              "%zu partial folders left by the kills; results never absent\n",
+              run_seconds, kept_old, kept_new, finished, litter);
+  EXPECT_GE(kept_old, 1);
+  EXPECT_GE(kept_new, 1);
 }
 
 }  // namespace

@@ -264,6 +264,40 @@ TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
   EXPECT_NEAR(duty["min_life"]["value"].get<double>(), 1.0 / d, 1e-12 / d);
 }
 
+// The pipeline with EN 1993-1-9's curves (fatigue.code: EN1993) runs to the end (it exited 2:
+// the summary's comparison_value was null, refused as a broken-down number). EN 1993-1-9 has
+// no comparison value: the shortest life's damage is the normal and shear sums added (F.29),
+// and the life is 1 / that damage per hour.
+TEST(Pipeline, En1993LifeMapIsTheSumOfNormalAndShearDamageAndItsSummaryHasNoNull) {
+  framedyn::testing::TempDir dir("framedyn_test_pipeline_en1993");
+  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
+  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
+  ASSERT_NE(text.find(mesh), std::string::npos);
+  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
+  const std::size_t support = text.find("\n  supports: none");
+  ASSERT_NE(support, std::string::npos);
+  text.insert(support + 1, "  fatigue: {code: EN1993, default: 71}\n");
+  const std::string series = "paraview: xdmf";
+  ASSERT_NE(text.find(series), std::string::npos);
+  text.replace(text.find(series), series.size(), "paraview: none");  // the series plays no part here
+  const fs::path study = dir / "en1993.yaml";
+  std::ofstream(study) << text;
+  ASSERT_EQ(run("run " + study.string() + " -q -o " + (dir / "out").string(), dir / "run.log"), 0) << slurp(dir / "run.log");
+  const nlohmann::json f = nlohmann::json::parse(slurp(dir / "out" / "summary.json"))["fatigue"];
+  EXPECT_NE(f["code"].get<std::string>().find("EN 1993-1-9"), std::string::npos) << f["code"];
+  const nlohmann::json& parts = f["damage_per_hour_parts"];
+  const double normal = parts["normal"].get<double>(), shear = parts["shear"].get<double>(), d = f["damage_per_hour"]["value"].get<double>();
+  ASSERT_GT(d, 0.0);
+  EXPECT_NEAR(parts["combined"].get<double>(), normal + shear, 1e-12 * d);
+  EXPECT_NEAR(d, normal + shear, 1e-12 * d);
+  EXPECT_NEAR(f["min_life"]["value"].get<double>(), 1.0 / d, 1e-12 / d);
+  EXPECT_EQ(f["min_life"]["unit"], "h");
+  EXPECT_FALSE(f["proportionality"].contains("comparison_value")) << f["proportionality"].dump();
+  EXPECT_NE(f["proportionality"]["why"].get<std::string>().find("EN 1993-1-9"), std::string::npos);
+  std::cout << "[ measured ] EN 1993-1-9: shortest life " << 1.0 / d << " h at " << f["min_life"]["output"] << " element "
+            << f["min_life"]["element"] << " (normal " << normal << " + shear " << shear << " per hour)\n";
+}
+
 // frame_response.compare_supports (issue 17; theory/coupling.md section 12; STUDY-126..128 for its
 // errors): the same run's loads on every support. axle_pins is inertia relief with statically
 // determinate auxiliary supports at the pins, so its stresses and moments are those of none to

@@ -11,11 +11,15 @@
 //   - the table is byte-identical on 1 and 2 threads; a failed run is recorded and the rest complete;
 //     a batch resumed from a checkpoint gives the table of an uninterrupted one;
 //   - `framedyn batch --figures` writes whole PNG files whose plotted numbers are runs.csv's
-//     (each output against each parameter; the mean per level of a grid);
+//     (each output against each parameter; the mean per level of a grid), and summary.json lists them;
 //   - `framedyn batch` killed (SIGKILL) after a checkpoint and run again with --resume gives the
 //     uninterrupted batch's runs.csv and summary.json byte for byte, and leaves the user's files alone;
 //   - `sweep` is a special case: a grid over one parameter gives the numbers `framedyn sweep` gives,
 //     in 2-D and in 3-D (where `sweep` runs on the batch engine as well), the reference run included;
+//   - the sweep under `framedyn sweep` (batch::run_one_parameter_sweep) is nothing but the study run
+//     with one number set by hand, whatever the number of threads; the soil damping leaves the
+//     undamped natural frequencies alone but changes the response; K5 raises the soil modes;
+//     bad requests are input errors naming the key;
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -42,8 +46,11 @@
 #include "batch/engine.h"
 #include "batch/sampling.h"
 #include "batch/sensitivity.h"
+#include "batch/sweep_runs.h"
 #include "core/error.h"
 #include "coupling/frame_model_cache.h"
+#include "coupling/parameter_sweep.h"
+#include "coupling/rigid_study.h"
 #include "coupling/study_key_path.h"
 #include "core/number_text.h"
 #include "coupling/yaml_input.h"
@@ -320,6 +327,7 @@ TEST(BatchEngine, TableIsByteIdenticalOnOneAndTwoThreadsAndAFailedRunIsRecorded)
   const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "one" / "summary.json"));
   EXPECT_EQ(summary["runs"]["failed"], c1.failed);
   EXPECT_EQ(summary["complete"], true);
+  EXPECT_EQ(summary["figures"], nlohmann::json::array());  // no --figures: an empty list
 }
 
 TEST(BatchEngine, BatchResumedFromACheckpointGivesTheUninterruptedTable) {
@@ -458,6 +466,13 @@ TEST(BatchFigures, ScatterAndMainEffectFiguresPlotTheNumbersOfRunsCsv) {
   const std::vector<std::string> files = {"scatter_1_rigid.response.peak_cutting_force.png", "scatter_2_rigid.modes_0_.frequency.png",
                                           "main_effects_1_rigid.response.peak_cutting_force.png", "main_effects_2_rigid.modes_0_.frequency.png"};
   for (const std::string& f : files) EXPECT_TRUE(whole_png(dir / "results" / f)) << f;
+  // summary.json names the figure files it wrote, relative to the folder, and nothing else is in it.
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "results" / "summary.json"))["figures"], nlohmann::json(files));
+  std::set<std::string> in_folder;
+  for (const auto& e : fs::directory_iterator(dir / "results")) in_folder.insert(e.path().filename().string());
+  std::set<std::string> expected(files.begin(), files.end());
+  expected.insert({"runs.csv", "summary.json", ".framedyn-manifest"});
+  EXPECT_EQ(in_folder, expected);
 
   // runs.csv on its own: index, damping, stiffness, force, frequency, status, message.
   std::vector<std::vector<double>> table;
@@ -506,6 +521,138 @@ TEST(BatchFigures, ScatterAndMainEffectFiguresPlotTheNumbersOfRunsCsv) {
       }
     }
   }
+}
+
+// ------------------------------------------------------------- one-parameter sweeps
+
+// The shipped 2-D plow (0.5 s, cut-face reading), as `framedyn sweep` runs it.
+const fs::path kSweepStudy = kExamples / "r100_plow_2d.yaml";
+
+// lbf*s/in of the study file into SI, as the reader converts them.
+double damping_si(const framedyn::coupling::RigidStudy& s, double v) {
+  return s.units.to_si(v, framedyn::core::Quantity::translational_damping);
+}
+
+batch::OneParameterSweepResult sweep(const fs::path& study, const std::string& key, const std::vector<double>& values, int threads) {
+  batch::OneParameterSweep q;
+  q.study_file = study.string();
+  q.key = key;
+  q.values = values;
+  q.threads = threads;
+  return batch::run_one_parameter_sweep(q);
+}
+
+void expect_same(const framedyn::coupling::SweepPoint& p, const framedyn::coupling::RigidResults& r) {
+  ASSERT_TRUE(r.plow_vertical_peak_to_peak && r.peak_cutting_force && r.peak_backing_force);
+  ASSERT_TRUE(p.plow_vertical_pp && p.peak_cutting_force && p.peak_backing_force);
+  // Exact: the same computation on the same data, on whichever thread.
+  EXPECT_EQ(*p.plow_vertical_pp, *r.plow_vertical_peak_to_peak);
+  EXPECT_EQ(*p.peak_cutting_force, *r.peak_cutting_force);
+  EXPECT_EQ(*p.peak_backing_force, *r.peak_backing_force);
+  ASSERT_EQ(p.frequencies_hz.size(), r.modes.size());
+  for (std::size_t m = 0; m < r.modes.size(); ++m) {
+    EXPECT_EQ(p.frequencies_hz[m], r.modes[m].frequency_hz);
+    EXPECT_EQ(p.dominant[m], r.modes[m].dominant);
+  }
+}
+
+TEST(OneParameterSweep, SoilDampingSweepEqualsSeparateRunsWithTheParameterSetByHand) {
+  namespace coupling = framedyn::coupling;
+  const coupling::RigidStudy study = coupling::read_rigid_study(kSweepStudy.string());
+  const batch::OneParameterSweepResult out = sweep(kSweepStudy, "soil.damping", {200, 400}, 2);
+  const coupling::SweepResult& s = out.result;
+  EXPECT_EQ(s.parameter, "soil.damping");
+  EXPECT_EQ(s.quantity, framedyn::core::Quantity::translational_damping);
+  EXPECT_EQ(out.parameter_unit, "lbf*s/in");
+  ASSERT_EQ(s.points.size(), 2u);
+  const std::vector<double> values = {damping_si(study, 200), damping_si(study, 400)};
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    coupling::RigidStudy by_hand = study;
+    coupling::set_parameter(by_hand.machine, "soil.damping", values[i]);
+    SCOPED_TRACE(i);
+    EXPECT_EQ(s.points[i].value, values[i]);
+    expect_same(s.points[i], coupling::run_rigid_study(by_hand));
+  }
+  // The study's own C5 = 300 is not among the values: run on its own as the reference.
+  EXPECT_EQ(s.reference_index, -1);
+  EXPECT_EQ(s.reference.value, damping_si(study, 300));
+  expect_same(s.reference, coupling::run_rigid_study(study));
+}
+
+TEST(OneParameterSweep, ThreadsGiveTheSameResultsAsASequentialSweep) {
+  const std::vector<double> values = {100, 200, 300, 400, 500};
+  const framedyn::coupling::SweepResult one = sweep(kSweepStudy, "soil.damping", values, 1).result;
+  const framedyn::coupling::SweepResult two = sweep(kSweepStudy, "soil.damping", values, 2).result;
+  const framedyn::coupling::SweepResult many = sweep(kSweepStudy, "soil.damping", values, 8).result;
+  for (const framedyn::coupling::SweepResult* other : {&two, &many}) {
+    ASSERT_EQ(other->points.size(), one.points.size());
+    for (std::size_t i = 0; i < one.points.size(); ++i) {
+      EXPECT_EQ(other->points[i].plow_vertical_pp, one.points[i].plow_vertical_pp) << i;
+      EXPECT_EQ(other->points[i].peak_cutting_force, one.points[i].peak_cutting_force) << i;
+      EXPECT_EQ(other->points[i].peak_backing_force, one.points[i].peak_backing_force) << i;
+      EXPECT_EQ(other->points[i].frequencies_hz, one.points[i].frequencies_hz) << i;
+    }
+    EXPECT_EQ(other->reference_index, 2);
+  }
+}
+
+TEST(OneParameterSweep, SoilDampingChangesTheResponseButNotTheNaturalFrequencies) {
+  // The modes are those of M and K; C5 is in C only. The response, driven at
+  // 18.33 Hz through the soil, does feel C5 (thesis: plowing is mainly
+  // velocity-dependent), so the C5 sweep must move the amplitude and forces.
+  namespace coupling = framedyn::coupling;
+  const coupling::SweepResult s = sweep(kSweepStudy, "soil.damping", {100, 300, 500}, 2).result;
+  ASSERT_EQ(s.reference_index, 1);
+  EXPECT_EQ(s.points[0].frequencies_hz, s.points[1].frequencies_hz);
+  EXPECT_EQ(s.points[2].frequencies_hz, s.points[1].frequencies_hz);
+  EXPECT_EQ(coupling::relative_change(s.points[1].plow_vertical_pp, s.reference.plow_vertical_pp), 0.0);
+  EXPECT_GT(std::abs(*coupling::relative_change(s.points[0].plow_vertical_pp, s.reference.plow_vertical_pp)), 0.01);
+  EXPECT_GT(std::abs(*coupling::relative_change(s.points[2].peak_backing_force, s.reference.peak_backing_force)), 0.01);
+}
+
+TEST(OneParameterSweep, SoilStiffnessRaisesTheSoilModes) {
+  // K5 stiffens the plow on the ground: no natural frequency may fall as K5 rises.
+  // The modes are those of the state the response cuts in (docs/theory/rigid.md
+  // section 11), so the sweep is made in Eq. 2.37's printed reading
+  // (spring_reference: equilibrium), where a cutting blade is held by K5 (the
+  // shipped cut-face reading has no spring while cutting).
+  TempDir dir;
+  std::string study = read_text(kSweepStudy);
+  const std::string cut_face = "spring_reference: cut_face";
+  const std::size_t at = study.find(cut_face);
+  ASSERT_NE(at, std::string::npos) << "the shipped study's soil reading changed";
+  study.replace(at, cut_face.size(), "spring_reference: equilibrium");
+  dir.write("study.yaml", study);
+  const framedyn::coupling::SweepResult s = sweep(dir / "study.yaml", "soil.stiffness", {20000, 60000}, 2).result;
+  ASSERT_EQ(s.points[0].frequencies_hz.size(), s.points[1].frequencies_hz.size());
+  bool one_rises = false;
+  for (std::size_t m = 0; m < s.points[0].frequencies_hz.size(); ++m) {
+    EXPECT_GE(s.points[1].frequencies_hz[m], s.points[0].frequencies_hz[m]) << "mode " << m + 1;
+    one_rises = one_rises || s.points[1].frequencies_hz[m] > 1.05 * s.points[0].frequencies_hz[m];
+  }
+  EXPECT_TRUE(one_rises);
+}
+
+TEST(OneParameterSweep, BadRequestsAreInputErrorsNamingTheKey) {
+  TempDir dir;
+  const auto expect_error = [&](const fs::path& study, const std::string& key, const std::vector<double>& values, const std::string& text) {
+    try {
+      (void)sweep(study, key, values, 1);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const framedyn::core::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+    }
+  };
+  expect_error(kSweepStudy, "soil.viscosity", {1.0}, "soil.viscosity: expected a key of the study");
+  expect_error(kSweepStudy, "soil.viscosity", {1.0}, "stiffness, damping");  // the message names what soil has
+  expect_error(kSweepStudy, "soil.damping", {}, "--values: expected at least one value");
+  expect_error(kSweepStudy, "soil.damping", {-1.0}, "soil.damping");  // the study reader refuses the run's value, naming the key
+  std::string study = read_text(kSweepStudy);
+  const std::size_t at = study.find("  response: {");
+  ASSERT_NE(at, std::string::npos);
+  study.erase(at, study.find('\n', at) + 1 - at);
+  dir.write("no_response.yaml", study);
+  expect_error(dir / "no_response.yaml", "soil.damping", {1.0}, "analysis.response: expected a forced response to sweep");
 }
 
 // ------------------------------------------------------------- kill and resume

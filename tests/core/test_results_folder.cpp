@@ -3,8 +3,15 @@
 // replaces it deleting only the listed files; a file, a folder of the user's,
 // results the user added a file to, the working directory, a folder above it
 // and a folder holding an input are refused, and left byte for byte as they
-// were.
+// were; a re-run swaps the new folder with the old one in one step, so a
+// watcher never finds the results folder absent.
 #include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <atomic>
+#include <cstdio>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -151,6 +158,34 @@ TEST(ResultsFolder, AnUncommittedRunLeavesNoPartialFolder) {
     folder.write_text("summary.json", "{}\n");
   }
   EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+// Runs replacing their results 300 times while a second thread stats the
+// results folder as fast as it can: the folder is there at every look (the
+// swap is one renameat2(RENAME_EXCHANGE); two renames would leave a moment
+// with nothing at the path), and each run leaves no partial or old folder.
+TEST(ResultsFolder, ARerunSwapsTheFoldersSoTheResultsFolderIsNeverAbsent) {
+  TempDir dir;
+  const fs::path out = dir / "out";
+  write_run(out, "{\"run\": 0}\n");
+  std::atomic<bool> stop{false};
+  std::atomic<long> looks{0}, absent{0};
+  std::thread watcher([&] {
+    struct stat st {};
+    while (!stop) {
+      if (::stat(out.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) ++absent;
+      ++looks;
+    }
+  });
+  constexpr int kRuns = 300;
+  for (int run = 1; run <= kRuns; ++run) write_run(out, "{\"run\": " + std::to_string(run) + "}\n");
+  stop = true;
+  watcher.join();
+  std::printf("[ measured ] %d replacements, %ld looks at the results folder, %ld found it absent\n", kRuns, looks.load(), absent.load());
+  EXPECT_EQ(absent.load(), 0);
+  EXPECT_GT(looks.load(), kRuns);  // the watcher ran through the replacements
+  EXPECT_EQ(read(out / "summary.json"), "{\"run\": " + std::to_string(kRuns) + "}\n");
+  EXPECT_EQ(tree(dir.path()).size(), 4u);  // out, its two files and the manifest: the swapped-out folders are gone
 }
 
 }  // namespace

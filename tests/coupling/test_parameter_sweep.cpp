@@ -1,8 +1,8 @@
-// Parameter sweeps (coupling/parameter_sweep.h) and `framedyn sweep`: a sweep
-// is nothing but run_rigid_study with one parameter set by hand, whatever the
-// number of threads; the soil damping leaves the undamped natural frequencies
-// alone but changes the response; bad requests are input errors; the program
-// writes sweep.csv, summary.json and the figures.
+// `framedyn sweep`: the program writes sweep.csv, summary.json and the
+// figures, with the numbers of `framedyn run`; an unknown key is refused with
+// the key-path walker's message and leaves no folder. The sweep itself
+// (batch::run_one_parameter_sweep, the batch engine's) is tested in
+// tests/batch/test_batch.cpp (OneParameterSweep.*).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -16,9 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
 #include "report/plot.h"
-#include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
 #include "tests/support/temp_dir.h"
 
@@ -26,119 +24,8 @@ namespace framedyn {
 namespace {
 
 namespace fs = std::filesystem;
-using core::Quantity;
 
 const std::string kPlowStudy = FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml";
-
-// lbf*s/in of the study file into SI, as the reader and `framedyn sweep` convert them.
-double damping_si(const coupling::RigidStudy& s, double v) { return s.units.to_si(v, Quantity::translational_damping); }
-
-void expect_same(const coupling::SweepPoint& p, const coupling::RigidResults& r) {
-  ASSERT_TRUE(r.plow_vertical_peak_to_peak && r.peak_cutting_force && r.peak_backing_force);
-  ASSERT_TRUE(p.plow_vertical_pp && p.peak_cutting_force && p.peak_backing_force);
-  // Exact: the same computation on the same data, on whichever thread.
-  EXPECT_EQ(*p.plow_vertical_pp, *r.plow_vertical_peak_to_peak);
-  EXPECT_EQ(*p.peak_cutting_force, *r.peak_cutting_force);
-  EXPECT_EQ(*p.peak_backing_force, *r.peak_backing_force);
-  ASSERT_EQ(p.frequencies_hz.size(), r.modes.size());
-  for (std::size_t m = 0; m < r.modes.size(); ++m) {
-    EXPECT_EQ(p.frequencies_hz[m], r.modes[m].frequency_hz);
-    EXPECT_EQ(p.dominant[m], r.modes[m].dominant);
-  }
-}
-
-TEST(ParameterSweep, SoilDampingSweepEqualsSeparateRunsWithTheParameterSetByHand) {
-  const coupling::RigidStudy study = coupling::read_rigid_study(kPlowStudy);
-  const std::vector<double> values = {damping_si(study, 200), damping_si(study, 400)};
-  const coupling::SweepResult s = coupling::run_parameter_sweep(study, "soil.damping", values, 2);
-  EXPECT_EQ(s.parameter, "soil.damping");
-  EXPECT_EQ(s.quantity, Quantity::translational_damping);
-  ASSERT_EQ(s.points.size(), 2u);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    coupling::RigidStudy by_hand = study;
-    coupling::set_parameter(by_hand.machine, "soil.damping", values[i]);
-    SCOPED_TRACE(i);
-    EXPECT_EQ(s.points[i].value, values[i]);
-    expect_same(s.points[i], coupling::run_rigid_study(by_hand));
-  }
-  // The study's own C5 = 300 is not among the values: run on its own as the reference.
-  EXPECT_EQ(s.reference_index, -1);
-  EXPECT_EQ(s.reference.value, damping_si(study, 300));
-  expect_same(s.reference, coupling::run_rigid_study(study));
-}
-
-TEST(ParameterSweep, ThreadsGiveTheSameResultsAsASequentialSweep) {
-  const coupling::RigidStudy study = coupling::read_rigid_study(kPlowStudy);
-  std::vector<double> values;
-  for (double c : {100, 200, 300, 400, 500}) values.push_back(damping_si(study, c));
-  const coupling::SweepResult one = coupling::run_parameter_sweep(study, "soil.damping", values, 1);
-  const coupling::SweepResult two = coupling::run_parameter_sweep(study, "soil.damping", values, 2);
-  const coupling::SweepResult many = coupling::run_parameter_sweep(study, "soil.damping", values, 8);
-  for (const coupling::SweepResult* other : {&two, &many}) {
-    ASSERT_EQ(other->points.size(), one.points.size());
-    for (std::size_t i = 0; i < one.points.size(); ++i) {
-      EXPECT_EQ(other->points[i].plow_vertical_pp, one.points[i].plow_vertical_pp) << i;
-      EXPECT_EQ(other->points[i].peak_cutting_force, one.points[i].peak_cutting_force) << i;
-      EXPECT_EQ(other->points[i].peak_backing_force, one.points[i].peak_backing_force) << i;
-      EXPECT_EQ(other->points[i].frequencies_hz, one.points[i].frequencies_hz) << i;
-    }
-  }
-}
-
-TEST(ParameterSweep, SoilDampingChangesTheResponseButNotTheNaturalFrequencies) {
-  // The modes are those of M and K; C5 is in C only. The response, driven at
-  // 18.33 Hz through the soil, does feel C5 (thesis: plowing is mainly
-  // velocity-dependent), so the C5 sweep must move the amplitude and forces.
-  const coupling::RigidStudy study = coupling::read_rigid_study(kPlowStudy);
-  const coupling::SweepResult s =
-      coupling::run_parameter_sweep(study, "soil.damping", {damping_si(study, 100), damping_si(study, 300), damping_si(study, 500)}, 2);
-  ASSERT_EQ(s.reference_index, 1);
-  EXPECT_EQ(s.points[0].frequencies_hz, s.points[1].frequencies_hz);
-  EXPECT_EQ(s.points[2].frequencies_hz, s.points[1].frequencies_hz);
-  EXPECT_EQ(coupling::relative_change(s.points[1].plow_vertical_pp, s.reference.plow_vertical_pp), 0.0);
-  EXPECT_GT(std::abs(*coupling::relative_change(s.points[0].plow_vertical_pp, s.reference.plow_vertical_pp)), 0.01);
-  EXPECT_GT(std::abs(*coupling::relative_change(s.points[2].peak_backing_force, s.reference.peak_backing_force)), 0.01);
-}
-
-TEST(ParameterSweep, SoilStiffnessRaisesTheSoilModes) {
-  // K5 stiffens the plow on the ground: no natural frequency may fall as K5 rises.
-  // The modes are those of the state the response cuts in (docs/theory/rigid.md
-  // section 11), so the sweep is made in Eq. 2.37's printed reading, where a
-  // cutting blade is held by K5 (the shipped cut-face reading has no spring
-  // while cutting: SoilReference.CutFaceResponseAndModesAreIndependentOfK5).
-  coupling::RigidStudy study = coupling::read_rigid_study(kPlowStudy);
-  study.machine.soil.cut_face = false;
-  study.machine.soil.spring_from_contact = false;
-  study.machine.soil.contact_moves_with_soil = false;
-  const double f = study.units.to_si_factor(Quantity::translational_stiffness);
-  const coupling::SweepResult s = coupling::run_parameter_sweep(study, "soil.stiffness", {20000 * f, 60000 * f}, 2);
-  ASSERT_EQ(s.points[0].frequencies_hz.size(), s.points[1].frequencies_hz.size());
-  bool one_rises = false;
-  for (std::size_t m = 0; m < s.points[0].frequencies_hz.size(); ++m) {
-    EXPECT_GE(s.points[1].frequencies_hz[m], s.points[0].frequencies_hz[m]) << "mode " << m + 1;
-    one_rises = one_rises || s.points[1].frequencies_hz[m] > 1.05 * s.points[0].frequencies_hz[m];
-  }
-  EXPECT_TRUE(one_rises);
-}
-
-TEST(ParameterSweep, BadRequestsAreInputErrors) {
-  const coupling::RigidStudy study = coupling::read_rigid_study(kPlowStudy);
-  const auto expect_error = [&](const std::string& parameter, const std::vector<double>& values, const std::string& text) {
-    try {
-      (void)coupling::run_parameter_sweep(study, parameter, values);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const core::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-    }
-  };
-  expect_error("soil.viscosity", {1.0}, "--parameter: expected one of");
-  expect_error("soil.viscosity", {1.0}, "soil.damping");  // the list names what can be swept
-  expect_error("soil.damping", {}, "--values: expected at least one value");
-  expect_error("soil.damping", {-1.0}, "finite non-negative values");
-  coupling::RigidStudy no_response = study;
-  no_response.response.reset();
-  EXPECT_THROW((void)coupling::run_parameter_sweep(no_response, "soil.damping", {1.0}), core::InputError);
-}
 
 // ---- the program ----
 
