@@ -3,12 +3,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/error.h"
 #include "fem/beam_element.h"
+#include "fem/beam_section.h"
 #include "fem/section_forces.h"
 
 namespace framedyn::coupling {
@@ -17,6 +19,30 @@ namespace {
 
 void update(RailPeak& p, double v, double t, int element, int station, const Eigen::Vector3d& x, int fiber = -1) {
   if (std::abs(v) > std::abs(p.value) || (p.element_id == 0 && p.value == 0.0)) p = {v, t, element, station, x, fiber};
+}
+
+// What an element of the set needs at every output time, built once: a
+// two-node beam's local stiffness and transformation (fem::element_end_forces
+// builds both at each call) and the section whose corners are stressed.
+struct ElementRecovery {
+  fem::BeamGeometry geometry;              // two-node beams
+  fem::Matrix12d stiffness, transformation;  // two-node beams: beam_local_stiffness, beam_transformation
+  fem::SectionProperties section;
+};
+
+// fem::element_end_forces with the element's matrices built once: the same
+// products in the same order, k (T u_e), so the same numbers.
+fem::Vector12d end_forces(const ElementRecovery& r, const fem::BeamElement& beam, const Eigen::MatrixXd& u, Eigen::Index j) {
+  fem::Vector12d ue;
+  ue.head<6>() = u.col(j).segment<6>(fem::kDofsPerNode * beam.node_a);
+  ue.tail<6>() = u.col(j).segment<6>(fem::kDofsPerNode * beam.node_b);
+  return r.stiffness * (r.transformation * ue);
+}
+
+// fem::fiber_stresses into a buffer kept across calls (the same expression per point).
+void fiber_stresses(const fem::SectionProperties& sec, const fem::SectionForces& f, std::vector<double>& out) {
+  out.clear();
+  for (const Eigen::Vector2d& p : sec.stress_points) out.push_back(f.n / sec.area + f.my * p.y() / sec.i11 - f.mz * p.x() / sec.i22);
 }
 
 }  // namespace
@@ -43,18 +69,23 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
       throw core::InputError({"", 0, "rails." + spec.name}, "an element set with beam elements", "'" + spec.element_set + "' without any");
     RailRecovery r;
     r.spec = spec;
-    std::vector<fem::BeamGeometry> geometry;
-    for (int b : beams) {
+    std::vector<ElementRecovery> elements(beams.size());
+    for (std::size_t i = 0; i < beams.size(); ++i) {
+      const int b = beams[i];
       const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(b)];
       if (beam.is_quadratic()) {  // B32, B32R: stations evenly in arc length along the (possibly curved) element
-        geometry.emplace_back();
+        elements[i].section = fem::section_geometry(model, beam.section, fem::BeamTheory::timoshenko).data.section;
         for (const fem::StationResult& st : fem::beam_stations(model, b, Eigen::VectorXd::Zero(model.dof_count()), stations)) {
           r.station_element_ids.push_back(beam.id);
           r.station_points.push_back(st.point);
         }
         continue;
       }
-      geometry.push_back(fem::beam_geometry(model, beam));
+      ElementRecovery& er = elements[i];
+      er.geometry = fem::beam_geometry(model, beam);
+      er.stiffness = fem::beam_local_stiffness(er.geometry.data);
+      er.transformation = fem::beam_transformation(er.geometry.axes);
+      er.section = er.geometry.data.section;
       const Eigen::Vector3d& a = model.nodes[static_cast<std::size_t>(beam.node_a)].position;
       const Eigen::Vector3d& e = model.nodes[static_cast<std::size_t>(beam.node_b)].position;
       for (int s = 0; s < stations; ++s) {
@@ -73,23 +104,26 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
         for (double v : (*statics)[static_cast<std::size_t>(k)]) r.static_normal_stress(k) = std::max(r.static_normal_stress(k), std::abs(v));
       total = Eigen::MatrixXd::Zero(ns, times.size());
     }
+    const bool quadratic = std::any_of(beams.begin(), beams.end(), [&](int b) { return model.beams[static_cast<std::size_t>(b)].is_quadratic(); });
+    std::vector<fem::SectionForces> forces;  // one element's stations at one time
+    std::vector<double> sigma;               // one station's corner stresses
+    Eigen::VectorXd u_now;                   // the displacements at one time (three-node beams' statics)
     for (Eigen::Index j = 0; j < times.size(); ++j) {
-      const Eigen::VectorXd uj = u.col(j);
+      if (quadratic) u_now = u.col(j);
       const double t = times(j);
       for (std::size_t e = 0; e < beams.size(); ++e) {
         const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(beams[e])];
         // Section forces at the element's stations: from the two end forces of a
         // two-node beam, by statics of the nodal forces on a three-node one.
-        const fem::BeamGeometry& g = geometry[e];
-        std::vector<fem::SectionForces> forces;
-        fem::SectionProperties sec;
+        const ElementRecovery& er = elements[e];
+        const fem::SectionProperties& sec = er.section;
+        forces.clear();
         if (beam.is_quadratic()) {
-          for (const fem::StationResult& st : fem::beam_stations(model, beams[e], uj, stations)) forces.push_back(st.forces);
-          sec = fem::section_geometry(model, beam.section, fem::BeamTheory::timoshenko).data.section;
+          for (const fem::StationResult& st : fem::beam_stations(model, beams[e], u_now, stations)) forces.push_back(st.forces);
         } else {
-          const fem::Vector12d f = fem::element_end_forces(g, beam, uj);
-          for (int s = 0; s < stations; ++s) forces.push_back(fem::section_forces_at(f, (static_cast<double>(s) / (stations - 1)) * g.data.length));
-          sec = g.data.section;
+          const fem::Vector12d f = end_forces(er, beam, u, j);
+          for (int s = 0; s < stations; ++s)
+            forces.push_back(fem::section_forces_at(f, (static_cast<double>(s) / (stations - 1)) * er.geometry.data.length));
         }
         for (int s = 0; s < stations; ++s) {
           const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;
@@ -107,7 +141,7 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
           update(r.peak_torque, sf.t, t, beam.id, s, x);
           update(r.peak_my, sf.my, t, beam.id, s, x);
           update(r.peak_mz, sf.mz, t, beam.id, s, x);
-          const std::vector<double> sigma = fem::fiber_stresses(sec, sf);
+          fiber_stresses(sec, sf, sigma);
           for (std::size_t c = 0; c < sigma.size(); ++c) {
             if (statics) total(k, j) = std::max(total(k, j), std::abs((*statics)[static_cast<std::size_t>(k)].at(c) + sigma[c]));
             const double a = std::abs(sigma[c]);
@@ -147,7 +181,7 @@ std::vector<RailRecovery> recover_rails(const fem::FrameModel& model, const Eige
             sf = fem::beam_stations(model, beams[e], uj, stations)[static_cast<std::size_t>(s_index)].forces;
             sec = fem::section_geometry(model, beam.section, fem::BeamTheory::timoshenko).data.section;
           } else {
-            const fem::BeamGeometry& g = geometry[e];
+            const fem::BeamGeometry& g = elements[e].geometry;
             sf = fem::section_forces_at(fem::element_end_forces(g, beam, uj), (static_cast<double>(s_index) / (stations - 1)) * g.data.length);
             sec = g.data.section;
           }

@@ -10,14 +10,25 @@ namespace framedyn::rigid {
 
 namespace {
 
-// Linear interpolation of `values` at time t (t within the samples).
-double value_at(const std::vector<double>& time, const std::vector<double>& values, double t) {
+// Linear interpolation at time t (t within the samples) on one time axis:
+// where t falls is found once and serves every signal sampled at those times.
+struct Bracket {
+  std::size_t i = 0;    // the first sample at or after t
+  bool beyond = false;  // t after the last sample: the last value
+  bool exact = true;    // t is a sample time or before the first: values[i] itself
+  double w = 0.0;       // else the weight of values[i] against values[i - 1]
+};
+Bracket bracket_at(const std::vector<double>& time, double t) {
   auto it = std::lower_bound(time.begin(), time.end(), t);
-  if (it == time.end()) return values.back();
+  if (it == time.end()) return {0, true, true, 0.0};
   const auto i = static_cast<std::size_t>(it - time.begin());
-  if (i == 0 || *it == t) return values[i];
-  const double w = (t - time[i - 1]) / (time[i] - time[i - 1]);
-  return values[i - 1] + w * (values[i] - values[i - 1]);
+  if (i == 0 || *it == t) return {i, false, true, 0.0};
+  return {i, false, false, (t - time[i - 1]) / (time[i] - time[i - 1])};
+}
+double value_at(const Bracket& b, const std::vector<double>& values) {
+  if (b.beyond) return values.back();
+  if (b.exact) return values[b.i];
+  return values[b.i - 1] + b.w * (values[b.i] - values[b.i - 1]);
 }
 
 // The shaker period a sample falls in; the 1e-9 keeps a sample written at
@@ -73,10 +84,11 @@ CycleChanges cycle_changes(const std::vector<double>& time, const std::vector<Wa
   for (std::size_t i = 0; i < time.size(); ++i) {
     const long k = period_index(time[i], t0, period);
     if (k < 0 || k >= periods) continue;
+    const Bracket later = bracket_at(time, time[i] + lag);  // the same for every signal (one time axis)
     for (std::size_t s = 0; s < signals.size(); ++s) {
       if (!(scale[s] > 0)) continue;  // a signal that is zero throughout never changes
       const std::vector<double>& x = *signals[s].values;
-      const double d = std::abs(value_at(time, x, time[i] + lag) - x[i]) / scale[s];
+      const double d = std::abs(value_at(later, x) - x[i]) / scale[s];
       double& m = per_signal[static_cast<std::size_t>(k)][s];
       if (d > m) m = d;
     }
