@@ -154,6 +154,7 @@ RunRecord run_sample(const BatchDesign& design, std::size_t index, const std::ve
     for (std::size_t j = 0; j < values.size(); ++j) coupling::set_study_number(doc, design.parameters[j].key, values[j], design.study_file.string());
     report::StudyRunOptions opt;
     if (keep) opt.out = *keep;
+    else opt.summary_outputs = design.outputs;  // only what the outputs read (the row is the same)
     opt.frame_cache = frame_cache;
     const report::StudyRun run = report::run_study_document(doc, design.study_file, opt);
     std::string notes;

@@ -3,13 +3,15 @@
 // outputs only): a Monte Carlo design over the soil's damping, on 1 and 2
 // threads through the library, and on 2 and 3 MPI ranks through mpirun (rank 0
 // manages only). Usage: batch_benchmark [RUNS] (default 16). Issue 19's target:
-// 1,000 pipeline runs in 30 s on 2 cores (33 runs/s).
+// 1,000 pipeline runs in 30 s on 2 cores (33 runs/s). Prints the load average
+// at the start and the end, and checks that every engine gives 1 thread's runs.csv.
 #include <fmt/format.h>
 
 #include <chrono>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <stdlib.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -33,6 +35,8 @@ int main(int argc, char** argv) {
   const framedyn::batch::BatchDesign d = framedyn::batch::read_batch_design(design.string());
   // Each engine twice in the same run, its workers building their frame models once (new) and every
   // run building its own (old, --rebuild-models): the ratio new/old is measured under the same load.
+  double load[3] = {0.0, 0.0, 0.0};
+  if (::getloadavg(load, 3) == 3) fmt::print("load average at the start: {:.2f} {:.2f} {:.2f}\n", load[0], load[1], load[2]);
   double one = 0.0;
   for (int threads : {1, 2}) {
     double seconds[2] = {0.0, 0.0};
@@ -64,18 +68,23 @@ int main(int argc, char** argv) {
       seconds[reuse] = s;
       fmt::print("{} MPI ranks ({} worker(s)), {}: {} in {:.2f} s: {:.2f} runs/s (mpirun start-up included)", ranks, ranks - 1,
                  reuse ? "models reused" : "models rebuilt", rc == 0 ? "done" : "FAILED", s, runs / s);
-      if (reuse == 1) fmt::print(", speed new/old {:.3f}", seconds[0] / seconds[1]);
+      if (reuse == 1)
+        fmt::print(", parallel efficiency {:.0f} % against 1 thread, speed new/old {:.3f}", 100.0 * one / (s * (ranks - 1)), seconds[0] / seconds[1]);
       fmt::print("\n");
     }
   }
-  // The tables do not depend on the reuse.
-  for (const char* pair : {"threads_1", "threads_2", "mpi_2", "mpi_3"}) {
-    const auto text = [&](int reuse) {
-      std::ifstream in(dir / fmt::format("{}_{}", pair, reuse) / "runs.csv", std::ios::binary);
-      return std::string(std::istreambuf_iterator<char>(in), {});
-    };
-    fmt::print("{}: runs.csv with and without reuse {}\n", pair, text(0) == text(1) && !text(0).empty() ? "identical" : "DIFFER");
+  // The tables depend neither on the reuse nor on the engine.
+  const auto table = [&](const std::string& folder) {
+    std::ifstream in(dir / folder / "runs.csv", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string reference = table("threads_1_1");
+  for (const char* engine : {"threads_1", "threads_2", "mpi_2", "mpi_3"}) {
+    const std::string old_table = table(fmt::format("{}_0", engine)), new_table = table(fmt::format("{}_1", engine));
+    fmt::print("{}: runs.csv with and without reuse {}, and {} to 1 thread's\n", engine,
+               old_table == new_table && !old_table.empty() ? "identical" : "DIFFER", new_table == reference ? "identical" : "DIFFERENT");
   }
+  if (::getloadavg(load, 3) == 3) fmt::print("load average at the end: {:.2f} {:.2f} {:.2f}\n", load[0], load[1], load[2]);
   fs::remove_all(dir);
   return 0;
 }

@@ -601,6 +601,12 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
   }
   out.rails = recover_rails(model, out.response.times, out.response.displacement, q.rails, q.stations, q.dead_load ? &static_stress : nullptr);
   for (const NodeOutputSpec& o : q.node_outputs) out.nodal.push_back(nodal_history(model, o, out.response, rates ? &*rates : nullptr));
+  // Without hot spots (request.hot_spots off: a summary that reads none of what follows), the run ends here.
+  if (!q.hot_spots) {
+    out.solver_counts = fem::solver_counts() - counts_before;
+    out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
   for (const RailSpec& rail : q.rails)
     out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations) : SectionHistory{});
   // Stress histories at every station and section point, and the hot spots (docs/theory/coupling.md section 10).

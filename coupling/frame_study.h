@@ -156,6 +156,13 @@ struct FrameStudyRequest {
   std::optional<double> yield_strength;
   // The fatigue life map (coupling/frame_fatigue.h): FAT classes per element set, hours.
   std::optional<FatigueRequest> fatigue;
+  // The stress histories at every station and section point with their hot
+  // spots and (with `fatigue`) the life map, and the section-force histories of
+  // the outputs with `history`. Off for a run whose summary is read only where
+  // none of them shows (a design study's outputs, report::StudyRunOptions::
+  // summary_outputs): results.stress, static_forces, hot_spots, life and
+  // sections stay empty; the rails' peaks, envelopes and series are the same.
+  bool hot_spots = true;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
   core::InputLocation where(const std::string& key) const;
@@ -178,7 +185,7 @@ struct FrameStudyResults {
   fem::TransientResult response;
   std::vector<RailRecovery> rails;           // the element-set outputs, in request.rails' order
   std::vector<NodalHistory> nodal;           // the node-set outputs, in request.node_outputs' order
-  std::vector<SectionHistory> sections;      // per element-set output with history (empty entries otherwise)
+  std::vector<SectionHistory> sections;      // per element-set output with history (empty entries otherwise; none without request.hot_spots)
   double wall_seconds = 0.0;
   // Assemblies and factorisations during the run (fem/solver_counters.h): one
   // assembly of K and M, one mass-only assembly (the rigid-body mass) and one

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/load_history.h"
 #include "coupling/road_delays.h"
+#include "coupling/study_key_path.h"
 #include "coupling/validity_warnings.h"
 #include "coupling/yaml_input.h"
 #include "report/calibration_output.h"
@@ -345,6 +347,32 @@ void finish_model(const coupling::RigidStudy& study, const coupling::RigidResult
   details.results_2d = r;
 }
 
+// The frame block's keys that come from the frame's modes, loads and rails (report::frame_summary and
+// frame.steady), none from its stress histories or hot spots.
+bool frame_key_without_hot_spots(const std::string& key) {
+  static const std::set<std::string> keys = {"model", "mesh", "supports", "method", "nodes", "elements", "output_times", "modes",
+                                             "support", "load_points", "constant_loads", "free_rigid_motions", "parts", "total_mass",
+                                             "structure", "peak_bending_moment", "peak_bending_moment_components", "peak_normal_stress",
+                                             "rails", "static", "peak_total_normal_stress", "outputs", "steady"};
+  return keys.count(key) > 0;
+}
+
+// Whether a summary read only at `paths` (StudyRunOptions::summary_outputs) needs the frame's hot spots:
+// a path outside input, rigid and those frame keys does (frame.hot_spots, frame.peak_von_mises,
+// frame.compared_supports, fatigue, warnings, and any path this does not recognise).
+bool summary_needs_hot_spots(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    const std::optional<std::vector<coupling::KeyPathStep>> steps = coupling::parse_key_path(path);
+    if (!steps || steps->size() < 2 || steps->front().is_item) return true;
+    const std::string& top = steps->front().key;
+    if (top == "input" || top == "rigid") continue;
+    const coupling::KeyPathStep& second = (*steps)[1];  // frame.KEY, or frame[KEY] (a map's item by name)
+    const std::string key = !second.is_item ? second.key : second.by_name ? second.name : std::string();
+    if (top != "frame" || !frame_key_without_hot_spots(key)) return true;
+  }
+  return false;
+}
+
 // After the rigid block and its warnings, 3-D: the pipeline, this run's frame loads into the beam model
 // of the frame (summary frame and fatigue blocks, the frame's files and figures).
 void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options, const Stage& stage,
@@ -357,7 +385,15 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
   const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
   stage("frame transient (pipeline)");
   const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
-  details.frame = coupling::run_frame_study(*study.frame_response, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache);
+  // A summary read only where no hot spot shows, in memory: the frame's stress histories are skipped.
+  const bool hot_spots = options.out || !options.summary_outputs || summary_needs_hot_spots(*options.summary_outputs);
+  std::optional<coupling::FrameStudyRequest> summary_only;
+  if (!hot_spots) {
+    summary_only = *study.frame_response;
+    summary_only->hot_spots = false;
+  }
+  details.frame = coupling::run_frame_study(summary_only ? *summary_only : *study.frame_response, &loads, &static_loads, r.steady.operation.reached_at,
+                                            options.frame_cache);
   const coupling::FrameStudyResults& frame = *details.frame;
   stage("writing results (frame)");
   if (!folder.in_memory()) report::write_frame_outputs(frame, *study.frame_response, folder, options.step);
@@ -376,6 +412,7 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
     cq.paraview = coupling::ParaviewOutput::none;
     cq.fatigue.reset();  // the life map is the run's own support's
     cq.stress_histories = coupling::FrameStudyRequest::StressHistoryOutput::none;
+    cq.hot_spots = hot_spots;
     compared.push_back(coupling::run_frame_study(cq, &loads, &static_loads, r.steady.operation.reached_at, options.frame_cache));
     const nlohmann::ordered_json full = report::frame_summary(compared.back(), cq);
     nlohmann::ordered_json c = {{"support", full["support"]}, {"rails", full["rails"]}};

@@ -40,6 +40,15 @@ struct StudyRunOptions {
   // the summary only, in memory, and no file is written at all.
   std::optional<std::filesystem::path> out;
   bool figures = false;  // PNG figures (needs `out` and gnuplot)
+  // The summary's key paths the caller reads (a design study's outputs,
+  // batch/engine), or none: the whole summary. With them and without `out`, a
+  // pipeline run computes only what those paths can read: unless one of them
+  // lies outside `input`, `rigid` and the frame block's keys from its modes,
+  // loads and rails (a hot spot, the von Mises peak, compared supports,
+  // fatigue, warnings), the frame's stress histories, hot spots and life map
+  // are skipped (coupling::FrameStudyRequest::hot_spots). Every listed path
+  // reads the same value either way; the rest of the summary may be missing.
+  std::optional<std::vector<std::string>> summary_outputs;
   // Progress: a stage begins ("reading ...", "modes and forced response", ...); a stage's loop advances.
   std::function<void(const std::string&)> stage;
   std::function<void(int, int)> step;

@@ -5,6 +5,8 @@
 //   - key paths (the one walker, coupling/study_key_path) set exactly the number they name and refuse
 //     what is not one with Study.set's messages, from a design file too;
 //   - a pipeline run with its worker's frame model reused gives the summary of a run that builds its own;
+//   - a summary computed only for a design's outputs gives the whole run's numbers, its hot spots
+//     skipped when no output reads them and kept when one does;
 //   - the inverse normal CDF against tabulated quantiles; Latin hypercube strata each sampled once;
 //   - standardised regression coefficients of an exactly linear output equal their closed form,
 //     Spearman's rho of a monotone output is 1, tied values get average ranks;
@@ -31,6 +33,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -214,6 +217,39 @@ TEST(FrameModelReuse, PipelineSummariesWithReuseEqualRunsThatBuildTheirOwn) {
   EXPECT_EQ(distinct.size(), runs.size());  // every run's numbers differ: the reuse is not of results
   EXPECT_EQ(cache.builds(), 2u);            // the 850-lb engine's frame, then the 900-lb engine's
   EXPECT_EQ(cache.reuses(), 3u);            // damping 300 and 400, and 250 back on the first build
+}
+
+// A design's outputs (StudyRunOptions::summary_outputs) are read from a summary computed only for them:
+// a pipeline run whose outputs lie in the rigid block and the frame's rail peaks skips the frame's stress
+// histories and hot spots, and every other key of the summary is the whole run's, number for number
+// (the same response and recovery, not a cheaper approximation); an output among the hot spots keeps them.
+TEST(StudyRun, SummaryOutputsOutsideTheHotSpotsGiveTheWholeRunsNumbersWithoutComputingThem) {
+  const fs::path study = kExamples / "offset_plowing.yaml";
+  YAML::Node doc = framedyn::coupling::load_yaml_file(study.string());
+  framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
+  const auto run = [&](std::optional<std::vector<std::string>> outputs) {
+    report::StudyRunOptions o;
+    o.summary_outputs = std::move(outputs);
+    return report::run_study_document(doc, study, o).summary;
+  };
+  const nlohmann::ordered_json whole = run(std::nullopt);
+  const nlohmann::ordered_json rails = run(std::vector<std::string>{"frame.peak_normal_stress", "rigid.response.peak_cutting_force",
+                                                                    "frame.steady.rails.left_rail.peak_abs_normal_stress.steady"});
+  const std::set<std::string> hot_spot_keys = {"hot_spots", "hot_spots_by_normal_stress_range", "peak_von_mises", "hot_spot_window"};
+  for (const std::string& key : hot_spot_keys) {
+    ASSERT_TRUE(whole["frame"].contains(key)) << key;
+    EXPECT_FALSE(rails["frame"].contains(key)) << key << ": computed although no output reads it";
+  }
+  nlohmann::ordered_json frame = whole["frame"];
+  for (const std::string& key : hot_spot_keys) frame.erase(key);
+  EXPECT_EQ(rails["frame"].dump(2), frame.dump(2));  // modes, loads, rails, static state, steady peaks: the whole run's
+  EXPECT_EQ(rails["rigid"].dump(2), whole["rigid"].dump(2));
+  EXPECT_NE(rails["frame"]["peak_normal_stress"]["value"].get<double>(), 0.0);  // signed: the largest magnitude, here compressive
+  // An output among the hot spots (by key or as a map's item by name) keeps them, with the whole run's numbers.
+  for (const char* path : {"frame.peak_von_mises", "frame[hot_spots][0]"}) {
+    const nlohmann::ordered_json hot = run(std::vector<std::string>{path, "frame.peak_normal_stress"});
+    EXPECT_EQ(hot["frame"].dump(2), whole["frame"].dump(2)) << path;
+  }
 }
 
 // ------------------------------------------------------------- sampling
