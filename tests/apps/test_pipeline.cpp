@@ -266,9 +266,10 @@ TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
 
 // The pipeline with EN 1993-1-9's curves (fatigue.code: EN1993) runs to the end (it exited 2:
 // the summary's comparison_value was null, refused as a broken-down number). EN 1993-1-9 has
-// no comparison value: the shortest life's damage is the normal and shear sums added (F.29),
-// and the life is 1 / that damage per hour.
-TEST(Pipeline, En1993LifeMapIsTheSumOfNormalAndShearDamageAndItsSummaryHasNoNull) {
+// no comparison value: the shortest life's damage is the normal and shear sums added (F.29;
+// on this run every shear range is below EN's shear cut-off, 0.457 x 80 MPa, so the shear
+// sum is 0), and the life is 1 / that damage per hour.
+TEST(Pipeline, En1993PipelineRunsToTheEndWithNoNullAndTheLifeOfTheAddedDamageSums) {
   framedyn::testing::TempDir dir("framedyn_test_pipeline_en1993");
   std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
   const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
