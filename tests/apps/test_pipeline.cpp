@@ -232,6 +232,18 @@ TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The main job's study, its mesh by absolute path (the copy lives in a temporary
+// folder), with a fatigue block added to its frame_response.
+std::string offset_plowing_with_fatigue(const std::string& fatigue) {
+  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
+  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
+  const std::size_t support = text.find("\n  supports: none");
+  if (text.find(mesh) == std::string::npos || support == std::string::npos) return {};
+  text.insert(support + 1, "  fatigue: " + fatigue + "\n");
+  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
+  return text;
+}
+
 }  // namespace
 
 // A duty cycle of one scenario is that scenario's own pipeline run with the same
@@ -240,13 +252,8 @@ TEST(PipelineInput, FrameResponseRefusesALoadFileNamingTheKey) {
 // end to end through `framedyn run` on both file kinds).
 TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
   framedyn::testing::TempDir dir("framedyn_test_duty_cycle");
-  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
-  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
-  ASSERT_NE(text.find(mesh), std::string::npos);
-  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
-  const std::size_t support = text.find("\n  supports: none");
-  ASSERT_NE(support, std::string::npos);
-  text.insert(support + 1, "  fatigue: {code: IIW, default: FAT71}\n");
+  std::string text = offset_plowing_with_fatigue("{code: IIW, default: FAT71}");
+  ASSERT_FALSE(text.empty()) << "offset_plowing.yaml lost its mesh or supports line";
   dir.write("offset.yaml", text);
   const fs::path cycle = dir.write("cycle.yaml",
                                    "framedyn_study: 1\nname: one scenario\nmodel: duty_cycle\n"
@@ -271,13 +278,8 @@ TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
 // sum is 0), and the life is 1 / that damage per hour.
 TEST(Pipeline, En1993PipelineRunsToTheEndWithNoNullAndTheLifeOfTheAddedDamageSums) {
   framedyn::testing::TempDir dir("framedyn_test_pipeline_en1993");
-  std::string text = slurp(kSource / "examples" / "offset_plowing.yaml");
-  const std::string mesh = "  mesh: ../meshes/r100_frame.inp";
-  ASSERT_NE(text.find(mesh), std::string::npos);
-  text.replace(text.find(mesh), mesh.size(), "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
-  const std::size_t support = text.find("\n  supports: none");
-  ASSERT_NE(support, std::string::npos);
-  text.insert(support + 1, "  fatigue: {code: EN1993, default: 71}\n");
+  std::string text = offset_plowing_with_fatigue("{code: EN1993, default: 71}");
+  ASSERT_FALSE(text.empty()) << "offset_plowing.yaml lost its mesh or supports line";
   const std::string series = "paraview: xdmf";
   ASSERT_NE(text.find(series), std::string::npos);
   text.replace(text.find(series), series.size(), "paraview: none");  // the series plays no part here
