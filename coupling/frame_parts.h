@@ -33,8 +33,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "core/error.h"
 #include "core/units.h"
 #include "coupling/frame_balance.h"
@@ -89,14 +87,5 @@ std::vector<MountedPart> mount_frame_parts(fem::FrameModel& model, const std::ve
 // whose mesh includes it counts those parts as carried by the mesh.
 std::string frame_parts_inp(const fem::FrameModel& model, const std::vector<MountedPart>& parts);
 
-// The summary's frame.parts (each part: mass, c.g., the frame node and how it
-// is joined), frame.total_mass {value, unit, cg} and frame.structure (where the
-// frame structure's mass came from), in `units`.
-struct FramePartsSummary {
-  nlohmann::ordered_json parts, total_mass, structure;
-};
-FramePartsSummary frame_parts_summary(const fem::FrameModel& model, const std::vector<MountedPart>& parts, const RigidBodyMass& body,
-                                      const std::string& structure_part, const std::string& structure_source,
-                                      const std::vector<std::string>& carried_by_mesh, const core::UnitSystem& units);
 
 }  // namespace framedyn::coupling

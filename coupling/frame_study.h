@@ -43,7 +43,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "core/results_folder.h"
 #include "core/units.h"

@@ -19,6 +19,7 @@
 #include "report/json_quantity.h"
 #include "report/vtu_writer.h"
 #include "report/fatigue_outputs.h"
+#include "report/frame_parts_json.h"
 #include "report/xdmf_writer.h"
 
 namespace framedyn::report {
@@ -489,8 +490,8 @@ nlohmann::ordered_json frame_summary(const FrameStudyResults& r, const FrameStud
                                            "displacements are the elastic part (as for supports: none)"}};
   // The parts on the frame model, its total mass and where the frame structure's mass came from (Eqs. 9.3, 9.4).
   {
-    coupling::FramePartsSummary parts =
-        coupling::frame_parts_summary(r.model, r.parts, r.mass, q.structure_part, q.structure_source, q.parts_carried_by_mesh, u);
+    FramePartsSummary parts =
+        frame_parts_summary(r.model, r.parts, r.mass, q.structure_part, q.structure_source, q.parts_carried_by_mesh, u);
     j["parts"] = std::move(parts.parts);
     j["total_mass"] = std::move(parts.total_mass);
     j["structure"] = std::move(parts.structure);
