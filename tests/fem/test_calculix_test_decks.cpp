@@ -29,6 +29,7 @@
 // *STEP (the deck's own slip).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
