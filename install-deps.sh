@@ -18,7 +18,7 @@ packages=(
   libeigen3-dev libspectra-dev libsuitesparse-dev libsundials-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev
-  calculix-ccx
+  calculix-ccx calculix-ccx-test
   gnuplot-nox
   libhdf5-dev
   paraview python3-paraview
