@@ -19,6 +19,11 @@ thesis's own values (Tables IV and V, CMW2D/CMW3D columns).
       is compared with the table's label (match yes/no). Measure: undamped
       natural frequency (rigid_modes.csv), both sides.
 
+  examples/tools/thesis_tables.py predict --check docs/validation.md
+      The same, compared with P6's table and count line in the document: exit
+      status 1 and the differing rows if they differ (ctest
+      ValidationReport.P6TableIsWhatTheShippedMachineGives runs this).
+
   examples/tools/thesis_tables.py fits [--framedyn PATH] CASE...
       C4 (calibration): the bounded fit of each named case file
       (examples/thesis/CASE.yaml): targets, parameters with their moves,
@@ -122,7 +127,8 @@ def symmetric(row):
     return sum(float(row.get("energy_share_" + c, 0.0) or 0.0) for c in ANTISYMMETRIC) < 1e-6
 
 
-def predict(framedyn, work):
+def predict(framedyn, work, out=print):
+    print = out  # noqa: A001 (the table goes to `out`)
     print("| case | Table | thesis (Hz, label) | shipped machine, same order (Hz, label) | miss | label | mode led by the same coordinate (Hz, miss) |")
     print("|---|---|---|---|---|---|---|")
     misses, matches, total, notes = [], 0, 0, []
@@ -179,13 +185,37 @@ def fits(framedyn, work, cases):
               f"{' (limit)' if c['iteration_limit_reached'] else ''} | {labels}/{len(c['targets'])} |")
 
 
+def check_p6(framedyn, work, doc):
+    lines = []
+    predict(framedyn, work, lambda *args: lines.append(" ".join(str(x) for x in args)))
+    generated = [l for l in lines if l.startswith("| ") or l.startswith("Values within")]
+    with open(doc) as f:
+        text = f.read()
+    start = text.index("\n## P6.")
+    end = text.find("\n## ", start + 1)
+    section = text[start:end if end >= 0 else len(text)].split("\n")
+    documented = [l.strip("*") for l in section if l.startswith("| ") or l.startswith("**Values within")]
+    if generated == documented:
+        print(f"P6 table of {doc}: {len(generated) - 2} rows as generated")
+        return 0
+    print(f"P6 table of {doc} differs from what the shipped machine gives (regenerate with "
+          f"examples/tools/thesis_tables.py predict):")
+    for g, d in zip(generated + [""] * len(documented), documented + [""] * len(generated)):
+        if g != d:
+            print(f"  document:  {d}\n  generated: {g}")
+    return 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("command", choices=["predict", "fits"])
     ap.add_argument("cases", nargs="*")
     ap.add_argument("--framedyn", default=os.path.join(ROOT, "build", "apps", "framedyn"))
+    ap.add_argument("--check", metavar="DOC", help="predict: compare with the P6 table of DOC")
     a = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="thesis_tables_") as work:
+        if a.command == "predict" and a.check:
+            return check_p6(a.framedyn, work, a.check)
         if a.command == "predict":
             predict(a.framedyn, work)
         else:
