@@ -51,7 +51,35 @@ void check_case(const std::string& file, std::size_t targets) {
                                         coupling::calibration_mode_family(*study.calibration, r.coordinates));
 }
 
-TEST(ThesisCases3D, CalibrationFitOfTableIVCase2FrameAlone) { check_case("examples/thesis/case2.yaml", 6); }
+// Case 2 on the shipped machine's frame (the mesh's mass properties) cannot be
+// met within the bounds (docs/validation.md C4): CMW3D's 1.586 Hz lateral mode
+// needs softer lateral tires than a third of the shipped ones, and four of the
+// six stiffnesses end on their lower bound; the fit stops at its iteration
+// limit and says so (fit_status, the warning with the same residual).
+TEST(ThesisCases3D, CalibrationFitOfTableIVCase2FrameAloneIsReportedNotConverged) {
+  const std::string file = source("examples/thesis/case2.yaml");
+  const framedyn::report::StudyRun run = framedyn::report::run_study_file(file);
+  ASSERT_TRUE(run.details && run.details->study_3d && run.details->results_3d);
+  const coupling::RigidStudy3D& study = *run.details->study_3d;
+  const coupling::RigidResults3D& r = *run.details->results_3d;
+  ASSERT_TRUE(study.calibration.has_value() && r.calibration.has_value());
+  ASSERT_EQ(study.calibration->targets.size(), 6u);
+  framedyn::test::expect_fit_properties(file, *study.calibration, *r.calibration, r.modes,
+                                        coupling::calibration_mode_family(*study.calibration, r.coordinates));
+  const nlohmann::ordered_json& cal = run.summary["rigid"]["calibration"];
+  EXPECT_EQ(cal["fit_status"], "not_converged");
+  EXPECT_EQ(cal["iteration_limit_reached"], true);
+  EXPECT_DOUBLE_EQ(cal["residual_max"].get<double>(), r.calibration->max_relative_error);
+  bool warned = false;
+  for (const auto& w : run.summary["warnings"])
+    if (w["code"] == "calibration_not_converged") {
+      warned = true;
+      const std::string m = w["message"].get<std::string>();
+      EXPECT_NE(m.find("its largest miss is the 1.586 Hz target (y)"), std::string::npos) << m;
+      EXPECT_NE(m.find("held at a bound: tires.front.vertical.stiffness"), std::string::npos) << m;
+    }
+  EXPECT_TRUE(warned) << run.summary["warnings"].dump();
+}
 TEST(ThesisCases3D, CalibrationFitOfTableIVCase3CabAlone) { check_case("examples/thesis/case3.yaml", 6); }
 TEST(ThesisCases3D, CalibrationFitOfTableVCase4Eta) { check_case("examples/thesis/case4_eta.yaml", 1); }
 TEST(ThesisCases3D, CalibrationFitOfTableVCase4Alpha) { check_case("examples/thesis/case4_alpha.yaml", 1); }
@@ -85,7 +113,7 @@ TEST(ThesisCases3D, CalibrationFitOfTableVCase5Plow3DColumnIsReportedNotConverge
       warned = true;
       const std::string m = w["message"].get<std::string>();
       EXPECT_NE(m.find("not a converged fit"), std::string::npos) << m;
-      EXPECT_NE(m.find("the 7.765 Hz target (w) on a 7.128 Hz mode (x-led)"), std::string::npos) << m;
+      EXPECT_NE(m.find("the 7.765 Hz target (w) on a 7.117 Hz mode (x-led)"), std::string::npos) << m;
       EXPECT_NE(m.find("held at a bound: tires.front.longitudinal.stiffness"), std::string::npos) << m;
     }
   EXPECT_TRUE(warned) << run.summary["warnings"].dump();

@@ -14,13 +14,29 @@
 //     names the lifted contact and the motion left free (Eq. 11.6);
 //   - the shipped 2-D plow and 3-D offset-plowing machines started from
 //     their statics stay there (to 1e-9) with no input: Eq. 11.4's b balances
-//     gravity and the released contacts exactly.
+//     gravity and the released contacts exactly;
+//   - the shipped R-100-like machine's tire reactions against a hand
+//     calculation from the weights and c.g.s its study file states (read here
+//     with yaml-cpp, not with framedyn's reader): without its plow the machine
+//     is statically determinate on its supports (2-D: two axles; 3-D: the
+//     front axle rolling on its pin acts as one support at Y = 0, the rear
+//     tires as two), so sum of forces and moments about the rear axle give
+//     every reaction; with its plow the bounce tire is one support more, the
+//     split among the three is indeterminate (it follows the stiffnesses),
+//     and only the balance of forces and moments is checked.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -31,6 +47,7 @@
 #include "rigid/time_integration.h"
 #include "rigid/vehicle_model.h"
 #include "rigid/vehicle_run.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -171,6 +188,187 @@ TEST(ContactStatics, TheShipped3DOffsetPlowStartedFromItsStaticsStaysThere) {
   for (std::size_t i = 0; i < machine.statics.contacts.size(); ++i)
     if (machine.statics.engaged[i]) carried += machine.statics.element_forces[static_cast<std::size_t>(machine.statics.contacts[i].normal)];
   EXPECT_NEAR(carried, weight, 1e-9 * weight);  // level ground: the vertical contacts carry the whole weight
+}
+
+// The shipped machine's statics against the hand calculation. Units of the
+// study files: in, lbf; the model is SI (N), so its forces are divided by
+// 1 lbf = 4.4482216152605 N (exact by definition).
+constexpr double kNewtonsPerPound = 4.4482216152605;
+
+// A shipped study's text with each (from, to) edit applied (each `from` must be there),
+// written to `dir`; returns its path.
+std::string shipped_variant(const framedyn::testing::TempDir& dir, const std::string& example,
+                            const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/" + example);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = s.find(from);
+    if (at == std::string::npos) throw std::runtime_error("test edit: '" + from + "' not in " + example);
+    s.replace(at, from.size(), to);
+  }
+  return dir.write("variant.yaml", s).string();
+}
+
+// Removes a top-level block (its key line and every indented line after it).
+std::pair<std::string, std::string> drop_block(const std::string& example, const std::string& key) {
+  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/" + example);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  const std::size_t a = s.find("\n" + key + ":");
+  if (a == std::string::npos) throw std::runtime_error("no block " + key + " in " + example);
+  std::size_t b = s.find('\n', a + 1);
+  while (b != std::string::npos && b + 1 < s.size() && (s[b + 1] == ' ' || s[b + 1] == '#' || s[b + 1] == '\n')) b = s.find('\n', b + 1);
+  return {s.substr(a, b - a), ""};
+}
+
+// The weight (lbf) and the moments sum W_i X_i and sum W_i Y_i (lbf in) of
+// every body a study file states, by hand from its YAML: a 2-D file's uniform
+// frame section (its weight at mid-length), added masses, cab and plow; a
+// 3-D file's frame parts, reel, rear axle, front axle, cab and plow (its c.g.
+// in the vertical plane through the swing pin, alpha' = 0).
+struct WeightSums {
+  double w = 0.0, wx = 0.0, wy = 0.0;
+  void add(double weight, double x, double y = 0.0) { w += weight; wx += weight * x; wy += weight * y; }
+};
+WeightSums weights_of(const std::string& file) {
+  const YAML::Node y = YAML::LoadFile(file);
+  WeightSums s;
+  const bool three_d = y["model"].as<std::string>() == "rigid_3d";
+  const YAML::Node frame = y["frame"];
+  if (three_d) {
+    for (const YAML::Node& part : frame["parts"]) s.add(part["weight"].as<double>(), part["position"][0].as<double>(), part["position"][1].as<double>());
+    for (const YAML::Node& part : {frame["reel_and_carrier"], frame["rear_axle"], y["front_axle"], y["cab"]})
+      s.add(part["weight"].as<double>(), part["position"][0].as<double>(), part["position"][1].as<double>());
+  } else {
+    const YAML::Node u = frame["uniform_section"];
+    const double length = u["length"].as<double>();
+    s.add(u["weight_per_length"].as<double>() * length, u["front_end"].as<double>() + length / 2);
+    for (const YAML::Node& m : frame["added_masses"]) s.add(m["weight"].as<double>(), m["position"][0].as<double>());
+    s.add(y["cab"]["weight"].as<double>(), y["cab"]["position"][0].as<double>());
+  }
+  if (y["plow"]) s.add(y["plow"]["weight"].as<double>(), y["plow"]["cg"][0].as<double>());
+  return s;
+}
+
+// Static force of contact `name` (its normal element), lbf, compression positive; and its tangential ones.
+double contact_force(const rigid::VehicleModel& m, const std::string& name, std::vector<double>* tangential = nullptr) {
+  for (std::size_t i = 0; i < m.statics.contacts.size(); ++i)
+    if (m.statics.contacts[i].name == name) {
+      if (tangential)
+        for (int e : m.statics.contacts[i].tangential) tangential->push_back(m.statics.element_forces[static_cast<std::size_t>(e)] / kNewtonsPerPound);
+      return m.statics.element_forces[static_cast<std::size_t>(m.statics.contacts[i].normal)] / kNewtonsPerPound;
+    }
+  std::string names;
+  for (const auto& c : m.statics.contacts) names += " " + c.name;
+  throw std::runtime_error("no contact " + name + " among" + names);
+}
+
+// Tire contact X (in) of the shipped machine: front axle at 0, rear at 72 (the
+// study files' tire contacts); the rear tires at Y = -30 (left) and +30 (right).
+constexpr double kFrontX = 0.0, kRearX = 72.0, kHalfTrack = 30.0;
+
+// Without its plow the 2-D machine stands on two axles: by the sum of moments
+// about the rear axle R_f = sum W_i (72 - X_i) / 72 and by the sum of forces
+// R_r = W - R_f (the lever rule, determinate). The tractive springs are both at
+// the ground (Z = -26 in), so with no horizontal load they carry nothing.
+// Round-off: the model's reactions come from K q_s = Q_g, about 1e-12 of W.
+TEST(ShippedMachineStatics, TwoDimensionalMachineWithoutItsPlowRestsOnItsAxlesByTheLeverRule) {
+  framedyn::testing::TempDir dir("framedyn_statics_2d");
+  const std::string file = shipped_variant(dir, "r100_plow_2d.yaml",
+      {{"attachment: plow", "attachment: none"}, drop_block("r100_plow_2d.yaml", "plow"), drop_block("r100_plow_2d.yaml", "soil")});
+  const WeightSums s = weights_of(file);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine);
+  std::vector<double> tf, tr;
+  const double front = contact_force(m, "front_tire", &tf), rear = contact_force(m, "rear_tire", &tr);
+  const double hand_front = (kRearX * s.w - s.wx) / (kRearX - kFrontX);
+  EXPECT_NEAR(front, hand_front, 1e-9 * s.w);
+  EXPECT_NEAR(rear, s.w - hand_front, 1e-9 * s.w);
+  for (double t : tf) EXPECT_NEAR(t, 0.0, 1e-9 * s.w);
+  for (double t : tr) EXPECT_NEAR(t, 0.0, 1e-9 * s.w);
+  std::printf("[ statics ] 2-D without plow: W %.3f lbf, front %.6f (hand %.6f), rear %.6f (hand %.6f)\n", s.w, front, hand_front, rear, s.w - hand_front);
+}
+
+// Without its plow the 3-D machine stands on its front axle, free to roll on
+// its pin (eta), and its rear tires, the rear axle rigid with the frame. The
+// sum of forces and the moments about the rear axle (Y) and the centre line
+// (X) give, determinately, R_front = sum W_i (72 - X_i) / 72, R_rear = W - R_front
+// and 30 (R_right - R_left) = sum W_i Y_i, the tire springs' horizontal
+// forces summing to nothing at the common height Z = -26 in. How the roll
+// moment is shared between the axles is not fixed by statics: the front
+// axle's roll balance about its pin (Z = 0) takes the moment of its tires'
+// lateral springs, 26 in below it, so the split follows the lateral
+// stiffnesses (indeterminate). On the shipped machine, symmetric about X-Z,
+// no lateral force arises and each tire carries half its axle's load; on a
+// variant with the fuel tank moved 12 in to the right only the determinate
+// sums are checked (the split is printed).
+TEST(ShippedMachineStatics, ThreeDimensionalMachineWithoutItsPlowRestsOnItsAxlesAsTheHandCalculationGives) {
+  const std::string ex = "r100_plow_straight.yaml";
+  for (const std::string tank : {"position: [58, 0, 10]", "position: [58, 12, 10]"}) {
+    const bool symmetric = tank == "position: [58, 0, 10]";
+    framedyn::testing::TempDir dir("framedyn_statics_3d");
+    const std::string file = shipped_variant(dir, ex,
+        {{"attachment: plow", "attachment: none"}, drop_block(ex, "plow"), drop_block(ex, "soil"), {"position: [58, 0, 10]", tank}});
+    const WeightSums s = weights_of(file);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study_3d(file).machine);
+    std::vector<double> tangential;
+    const double fl = contact_force(m, "front_left_tire", &tangential), fr = contact_force(m, "front_right_tire", &tangential);
+    const double rl = contact_force(m, "rear_left_tire", &tangential), rr = contact_force(m, "rear_right_tire", &tangential);
+    const double front = (kRearX * s.w - s.wx) / (kRearX - kFrontX), rear = s.w - front;
+    EXPECT_NEAR(fl + fr, front, 1e-9 * s.w) << tank;
+    EXPECT_NEAR(rl + rr, rear, 1e-9 * s.w) << tank;
+    EXPECT_NEAR(kHalfTrack * (fr + rr - fl - rl), s.wy, 1e-9 * s.w * kHalfTrack) << tank;
+    if (symmetric) {
+      EXPECT_EQ(s.wy, 0.0);
+      EXPECT_NEAR(fl, front / 2, 1e-9 * s.w);
+      EXPECT_NEAR(fr, front / 2, 1e-9 * s.w);
+      EXPECT_NEAR(rl, rear / 2, 1e-9 * s.w);
+      EXPECT_NEAR(rr, rear / 2, 1e-9 * s.w);
+      for (double t : tangential) EXPECT_NEAR(t, 0.0, 1e-9 * s.w);
+    }
+    std::printf("[ statics ] 3-D without plow (fuel tank %s): W %.3f lbf; front %.6f (hand %.6f), rear %.6f (hand %.6f); "
+                "FL %.6f FR %.6f RL %.6f RR %.6f; right - left %.6f (hand sum W_i Y_i / 30 = %.6f)\n",
+                tank.c_str(), s.w, fl + fr, front, rl + rr, rear, fl, fr, rl, rr, fr + rr - fl - rl, s.wy / kHalfTrack);
+  }
+}
+
+// With its plow, the machine stands on one support more, the bounce tire
+// (X = 124 in; the soil carries nothing statically, Eq. 2.37): three vertical
+// reactions in 2-D for two equations, so their split follows the stiffnesses
+// (indeterminate). What statics alone fixes is checked: the sum of the vertical
+// reactions equals the weight and their moment about the rear axle equals the
+// weights' (sum R_j (X_j - 72) = sum W_i (X_i - 72)); in 3-D also the moment
+// about the centre line, and the front tires stay equal (the pinned axle).
+TEST(ShippedMachineStatics, PlowMachinesBalanceTheirWeightAboutTheRearAxleWithTheBounceTireSharingIndeterminately) {
+  {
+    const std::string file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml";
+    const WeightSums s = weights_of(file);
+    const YAML::Node y = YAML::LoadFile(file);
+    const double xb = y["plow"]["bounce_tire"]["point"][0].as<double>();
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine);
+    const double f = contact_force(m, "front_tire"), r = contact_force(m, "rear_tire"), b = contact_force(m, "bounce_tire");
+    EXPECT_NEAR(f + r + b, s.w, 1e-9 * s.w);
+    EXPECT_NEAR(f * (kFrontX - kRearX) + b * (xb - kRearX), s.wx - kRearX * s.w, 1e-9 * s.w * kRearX);
+    EXPECT_GT(b, 0.0);  // engaged: the split is the stiffnesses', not a lever rule
+    std::printf("[ statics ] 2-D with plow: W %.3f lbf; front %.6f rear %.6f bounce %.6f\n", s.w, f, r, b);
+  }
+  {
+    const std::string file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_straight.yaml";
+    const WeightSums s = weights_of(file);
+    const YAML::Node y = YAML::LoadFile(file);
+    const double xb = y["plow"]["bounce_tire"]["point"][0].as<double>();
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study_3d(file).machine);
+    const double fl = contact_force(m, "front_left_tire"), fr = contact_force(m, "front_right_tire");
+    const double rl = contact_force(m, "rear_left_tire"), rr = contact_force(m, "rear_right_tire"), b = contact_force(m, "bounce_tire");
+    EXPECT_NEAR(fl + fr + rl + rr + b, s.w, 1e-9 * s.w);
+    EXPECT_NEAR((fl + fr) * (kFrontX - kRearX) + b * (xb - kRearX), s.wx - kRearX * s.w, 1e-9 * s.w * kRearX);
+    EXPECT_NEAR(kHalfTrack * (fr + rr - fl - rl), s.wy, 1e-9 * s.w * kHalfTrack);
+    EXPECT_NEAR(fl, fr, 1e-9 * s.w);
+    EXPECT_GT(b, 0.0);
+    std::printf("[ statics ] 3-D with plow: W %.3f lbf; FL %.6f FR %.6f RL %.6f RR %.6f bounce %.6f\n", s.w, fl, fr, rl, rr, b);
+  }
 }
 
 }  // namespace
