@@ -383,8 +383,12 @@ std::vector<std::string> csv_cells(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (c == '"') {
-      if (quoted && i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
-      else quoted = !quoted;
+      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else {
+        quoted = !quoted;
+      }
     } else if (c == ',' && !quoted) {
       cells.emplace_back();
     } else {
@@ -492,6 +496,28 @@ TEST(ShippedDutyCycle, ThreadsChangeNoByteAndLifeIsTheCycleHoursOverItsDamageEve
   EXPECT_EQ(static_cast<int>(stations.size()), covered);
   EXPECT_GT(damaged, 0);
   EXPECT_NEAR(shortest, f["min_life"]["value"].get<double>(), 1e-5 * shortest);
+  // ParaView: frame_life.vtu's cell fields, per element the largest damage per hour of the cycle
+  // and its life (10 significant digits: 1e-9), the shortest the summary's.
+  const std::string vtu = slurp(dir / "one" / "frame_life.vtu");
+  const auto cell_field = [&](const std::string& name) {
+    std::vector<double> v;
+    const std::size_t at = vtu.find("Name=\"" + name + "\"");
+    if (at == std::string::npos) return v;
+    std::istringstream in(vtu.substr(vtu.find('>', at) + 1, vtu.find("</DataArray>", at) - vtu.find('>', at) - 1));
+    for (double x; in >> x;) v.push_back(x);
+    return v;
+  };
+  const std::vector<double> damage_field = cell_field("fatigue_damage_per_hour [1/h]"), life_field = cell_field("fatigue_life [h]");
+  ASSERT_FALSE(damage_field.empty());
+  ASSERT_EQ(life_field.size(), damage_field.size());
+  double shortest_cell = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < damage_field.size(); ++e) {
+    if (damage_field[e] > 1e-12) {
+      EXPECT_NEAR(life_field[e], 1.0 / damage_field[e], 1e-9 / damage_field[e]) << "cell " << e;
+    }
+    shortest_cell = std::min(shortest_cell, life_field[e]);
+  }
+  EXPECT_NEAR(shortest_cell, f["min_life"]["value"].get<double>(), 1e-9 * shortest_cell);
   std::cout << "[ measured ] shipped duty cycle: " << rows << " points at " << stations.size() << " stations, " << damaged
             << " damaged; shortest life " << f["min_life"]["value"].get<double>() << " h (" << f["min_life"]["output"] << " element "
             << f["min_life"]["element"] << ", X = " << f["min_life"]["X"]["value"] << " in), damage per hour " << d_hour << "\n";
