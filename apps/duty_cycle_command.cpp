@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "report/duty_cycle_outputs.h"
+#include "report/fatigue_outputs.h"
 #include "report/study_run_details.h"
 
 namespace framedyn::apps {
@@ -37,6 +38,23 @@ int print_duty_cycle_run(const std::string& file, const report::StudyRun& run, b
   fmt::print("shortest life {} at {} element {} station {} ({}), X = {:.4g} {}; damage per cycle {:.3g}\n",
              std::isfinite(min_life) ? fmt::format("{:.4g} h", min_life) : std::string("unlimited"), st.set, st.element_id, st.station,
              point, u.from_si(st.point.x(), core::Quantity::length), u.label(core::Quantity::length), d_cycle);
+  // At the shortest-life location: each stress's damage, the combination and the CV (theory/fatigue.md sections 10 and 12).
+  const coupling::LifeMap& m = *first.frame.life;
+  if (!life.normal_damage_per_cycle.at(ws).empty()) {
+    const std::size_t p = static_cast<std::size_t>(wp);
+    fmt::print("  there: normal stress alone {:.3g}, shear alone {:.3g}, combined {:.3g} per cycle of {:g} h ({})\n", life.normal_damage_per_cycle[ws][p],
+               life.shear_damage_per_cycle[ws][p], d_cycle, life.cycle_hours, coupling::combination_rule(m.code_id));
+    fmt::print("  proportionality there: {}; life under CV 1 {} h, under CV 0.5 {} h\n",
+               report::comparison_value_reason(m.code_id, life.correlation[ws][p], life.comparison_value[ws][p]),
+               report::life_text(life.cycle_hours, life.proportional_damage_per_cycle[ws][p]),
+               report::life_text(life.cycle_hours, life.non_proportional_damage_per_cycle[ws][p]));
+  }
+  // Which detail categories were assumed where (the cycle's one fatigue block: the same in every scenario).
+  for (std::size_t c = 0; c < m.curves.size(); ++c) {
+    std::size_t n = 0;
+    for (int k : m.curve_of_station) n += k == static_cast<int>(c);
+    fmt::print("  detail assumed: {} / {} on {} ({} stations)\n", m.curves[c], m.shear_curves[c], m.assignment[c], n);
+  }
   if (figures) fmt::print("figures: {}\n", figure_files.empty() ? std::string("none (no damage)") : figure_files.front());
   fmt::print("\nresults in {}/\n", out_dir);
   return 0;

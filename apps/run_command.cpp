@@ -8,7 +8,9 @@
 
 #include <filesystem>
 
+#include "apps/command_line.h"
 #include "apps/commands.h"
+#include "core/error.h"
 #include "apps/progress.h"
 #include "report/calibration_output.h"
 #include "report/study_run.h"
@@ -26,6 +28,7 @@ struct RunOptions {
   std::string study;
   std::string out;
   bool figures = false;  // --figures: PNG figures (report/response_figures.cpp)
+  int threads = 0;       // --threads: a duty cycle's scenarios at the same time (0: one per core)
   ProgressFlags progress;
 };
 
@@ -36,6 +39,8 @@ int run_study(const RunOptions& opt) {
   report::StudyRunOptions ro;
   ro.out = out_dir;
   ro.figures = opt.figures;
+  if (opt.threads < 0) throw core::InputError(command_line("--threads"), "at least 1 thread (or 0: one per core)", fmt::format("{}", opt.threads));
+  ro.threads = opt.threads;
   ro.stage = progress.callback();
   ro.step = progress.step_callback();
   ro.warning = print_warning;
@@ -79,6 +84,8 @@ void add_run_command(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("study", opt->study, "Study file (.yaml)")->required();
   cmd->add_option("--out,-o", opt->out, "Results folder (default: <study name>_results)");
   cmd->add_flag("--figures", opt->figures, "Also write PNG figures of the response (needs gnuplot)");
+  cmd->add_option("--threads,-j", opt->threads, "Duty cycles: scenarios run at the same time (0: one per core); results do not depend on it")
+      ->capture_default_str();
   opt->progress.add_to(*cmd);
   cmd->callback([opt, &run]() { run = [opt]() { return run_study(*opt); }; });
 }

@@ -3,9 +3,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
 #include <functional>
+#include <mutex>
+#include <optional>
 #include <set>
+#include <thread>
 
 #include "coupling/rigid_study_3d.h"
 
@@ -51,25 +57,68 @@ DutyCycleRequest read_duty_cycle(const YAML::Node& doc, const std::string& file)
   return q;
 }
 
-DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<void(const std::string&)>& stage) {
+namespace {
+
+// One scenario's pipeline with the cycle's fatigue block (its hours the scenario's).
+DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleScenarioSpec& spec) {
+  const auto start = std::chrono::steady_clock::now();
+  if (const std::string model = study_model(spec.study.string()); model != "rigid_3d")
+    throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block", "'" + spec.study.string() + "', model " + model);
+  const RigidStudy3D study = read_rigid_study_3d(spec.study.string());
+  if (!study.frame_response || !study.response)
+    throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block",
+                           "'" + spec.study.string() + "', without " + (study.response ? "frame_response" : "analysis.response"));
+  FrameStudyRequest request = *study.frame_response;
+  request.fatigue = q.fatigue;
+  request.fatigue->hours = spec.hours;
+  request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
+  const RigidResults3D r = run_rigid_study_3d(study);
+  const LoadHistory loads = all_frame_loads(*r.frame_loads), static_loads = all_frame_loads(*r.static_frame_loads);
+  DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
+  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return s;
+}
+
+}  // namespace
+
+DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<void(const std::string&)>& stage, int threads) {
+  const std::size_t n = q.scenarios.size();
+  std::size_t workers = threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  workers = std::max<std::size_t>(1, std::min(workers, n));
+  // Each scenario's result or error in its slot; the next scenario handed out in the file's order.
+  std::vector<std::optional<DutyCycleScenarioResult>> done(n);
+  std::vector<std::exception_ptr> failed(n);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex progress;
+  const auto work = [&]() {
+    for (std::size_t i = next++; i < n && !stop; i = next++) {
+      const DutyCycleScenarioSpec& spec = q.scenarios[i];
+      if (stage) {
+        const std::lock_guard<std::mutex> lock(progress);
+        stage(fmt::format("scenario {} ({})", spec.name, spec.study.string()));
+      }
+      try {
+        done[i] = run_scenario(q, spec);
+      } catch (...) {
+        failed[i] = std::current_exception();
+        stop = true;  // the scenarios after it would not have run one at a time either
+      }
+    }
+  };
+  if (workers == 1) {
+    work();
+  } else {
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(work);
+    for (std::thread& t : pool) t.join();
+  }
   DutyCycleResults out;
-  for (const DutyCycleScenarioSpec& spec : q.scenarios) {
-    if (stage) stage(fmt::format("scenario {} ({})", spec.name, spec.study.string()));
-    const auto start = std::chrono::steady_clock::now();
-    if (const std::string model = study_model(spec.study.string()); model != "rigid_3d")
-      throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block", "'" + spec.study.string() + "', model " + model);
-    const RigidStudy3D study = read_rigid_study_3d(spec.study.string());
-    if (!study.frame_response || !study.response)
-      throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block",
-                             "'" + spec.study.string() + "', without " + (study.response ? "frame_response" : "analysis.response"));
-    FrameStudyRequest request = *study.frame_response;
-    request.fatigue = q.fatigue;
-    request.fatigue->hours = spec.hours;
-    request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
-    const RigidResults3D r = run_rigid_study_3d(study);
-    const LoadHistory loads = all_frame_loads(*r.frame_loads), static_loads = all_frame_loads(*r.static_frame_loads);
-    DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
-    s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (failed[i]) std::rethrow_exception(failed[i]);
+    if (!done[i]) continue;  // not run: an earlier scenario failed (rethrown above)
+    DutyCycleScenarioResult& s = *done[i];
+    const DutyCycleScenarioSpec& spec = q.scenarios[i];
     // The same stations in every scenario: the same mesh, outputs and stations per element.
     if (!out.scenarios.empty()) {
       const StressHistories& a = out.scenarios.front().frame.stress;

@@ -60,7 +60,11 @@ struct DutyCycleResults {
 
 // Runs every scenario (rigid-body model, then the frame) and combines their life maps.
 // Throws core::InputError (STUDY-125) when a scenario's frame outputs differ from the first's.
-// `stage(name)`: called before each scenario runs (progress).
-DutyCycleResults run_duty_cycle(const DutyCycleRequest& request, const std::function<void(const std::string&)>& stage = {});
+// `stage(name)`: called before each scenario runs (progress; from the scenario's thread, one call
+// at a time). `threads`: scenarios run at the same time (each its own pipeline; 0: one per core,
+// at most one per scenario; theory/fatigue.md section 13). The results do not depend on it: each
+// scenario's run is the same whatever thread runs it, the Miner sum is taken in scenario order
+// after all have run, and an error is the first failing scenario's in the file's order.
+DutyCycleResults run_duty_cycle(const DutyCycleRequest& request, const std::function<void(const std::string&)>& stage = {}, int threads = 1);
 
 }  // namespace framedyn::coupling

@@ -71,7 +71,7 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
   const std::string L = u.label(Quantity::length);
   // life_map.csv
   std::vector<std::string> header = {"output", "element", "station", column("X", L), column("Y", L), column("Z", L), "point",
-                                     "sn_curve", column("damage_per_cycle", "1"), column("life", "h"), "dominant",
+                                     "sn_curve", "shear_sn_curve", column("damage_per_cycle", "1"), column("life", "h"), "dominant",
                                      column("normal_damage_per_cycle", "1"), column("shear_damage_per_cycle", "1"),
                                      "sigma_tau_correlation", "comparison_value", column("life_cv_1", "h"), column("life_cv_0.5", "h")};
   for (const auto& s : r.scenarios) header.push_back(column("damage_per_hour " + s.name, "1/h"));
@@ -82,7 +82,8 @@ std::vector<std::string> write_duty_cycle_outputs(const std::string& file, const
       const double l = life.life_hours(s, static_cast<int>(p));
       t.row().add(st.set).add(st.element_id).add(st.station).add(u.from_si(st.point.x(), Quantity::length)).add(u.from_si(st.point.y(), Quantity::length))
           .add(u.from_si(st.point.z(), Quantity::length)).add(point_name(h, s, static_cast<int>(p)))
-          .add(first.frame.life->curves[static_cast<std::size_t>(first.frame.life->curve_of_station[s])]).add(life.damage_per_cycle[s][p])
+          .add(first.frame.life->curves[static_cast<std::size_t>(first.frame.life->curve_of_station[s])])
+          .add(first.frame.life->shear_curves[static_cast<std::size_t>(first.frame.life->curve_of_station[s])]).add(life.damage_per_cycle[s][p])
           .add(std::isfinite(l) ? fmt::format("{:.6g}", l) : std::string())
           .add(life.damage_per_cycle[s][p] > 0.0 ? r.scenarios[static_cast<std::size_t>(life.dominant[s][p])].name : std::string())
           .add(life.normal_damage_per_cycle[s][p]).add(life.shear_damage_per_cycle[s][p]).add(life.correlation[s][p])
@@ -150,7 +151,7 @@ ordered_json duty_cycle_summary(const std::string& file, const coupling::DutyCyc
   for (std::size_t c = 0; c < m.curves.size(); ++c) {
     std::size_t n = 0;
     for (int k : m.curve_of_station) n += k == static_cast<int>(c);
-    assumed.push_back({{"where", m.assignment[c]}, {"sn_curve", m.curves[c]}, {"stations", n}});
+    assumed.push_back({{"where", m.assignment[c]}, {"sn_curve", m.curves[c]}, {"shear_sn_curve", m.shear_curves[c]}, {"stations", n}});
   }
   fat["details_assumed"] = assumed;
   ordered_json scen = ordered_json::array();

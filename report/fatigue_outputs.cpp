@@ -101,7 +101,7 @@ std::vector<VtuField> life_cell_fields(const fem::FrameModel& model, const coupl
 
 void write_life_vtu(const fem::FrameModel& model, const coupling::StressHistories& stress, const std::vector<std::vector<double>>& damage_per_hour,
                     const core::UnitSystem& u, const core::ResultsFolder& folder) {
-  folder.write_text("frame_life.vtu", vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), {}, {life_cell_fields(model, stress, damage_per_hour).front()}));
+  folder.write_text("frame_life.vtu", vtu_document(model, 1.0 / u.to_si_factor(Quantity::length), {}, life_cell_fields(model, stress, damage_per_hour)));
 }
 
 ordered_json fatigue_summary(const coupling::FrameStudyResults& r, const coupling::FrameStudyRequest& q) {

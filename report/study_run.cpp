@@ -502,7 +502,7 @@ StudyRun run_duty_cycle(const YAML::Node& doc, const std::filesystem::path& file
   std::vector<std::filesystem::path> inputs = {file};
   for (const coupling::DutyCycleScenarioSpec& s : q.scenarios) inputs.push_back(s.study);
   if (options.out) core::check_results_target(*options.out, inputs);
-  coupling::DutyCycleResults r = coupling::run_duty_cycle(q, stage);
+  coupling::DutyCycleResults r = coupling::run_duty_cycle(q, stage, options.threads);
   stage("writing results");
   if (options.out) {
     core::ResultsFolder folder(*options.out, inputs);

@@ -40,6 +40,9 @@ struct StudyRunOptions {
   // the summary only, in memory, and no file is written at all.
   std::optional<std::filesystem::path> out;
   bool figures = false;  // PNG figures (needs `out` and gnuplot)
+  // A duty cycle's scenarios run at the same time (coupling::run_duty_cycle; 0: one per
+  // core). Other models ignore it. 1 here: a design study's workers already fill the cores.
+  int threads = 1;
   // The summary's key paths the caller reads (a design study's outputs,
   // batch/engine), or none: the whole summary. With them and without `out`, a
   // pipeline run computes only what those paths can read: unless one of them

@@ -8,14 +8,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 
@@ -366,4 +372,162 @@ TEST(CompareSupports, AxlePinsGiveTheStressesOfNoneAndTheClampedRearEndDiffersWi
   EXPECT_LT(largest_pins, 1e-11);
   EXPECT_GT(smallest_clamp, 0.01);
   EXPECT_TRUE(fs::exists(dir / "out" / "frame_supports_envelopes.png"));
+}
+
+namespace {
+
+// One CSV record, with quoted cells (the S-N curves' names hold commas).
+std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"') {
+      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else {
+        quoted = !quoted;
+      }
+    } else if (c == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+}  // namespace
+
+// The shipped duty cycle (examples/duty_cycle.yaml, four scenarios) as a user runs it, once
+// with its scenarios one at a time and once on 2 threads (theory/fatigue.md section 13,
+// validation V34). The files are byte for byte the same, and the outputs hold together as
+// the life's definition says, at every station and section point: life = cycle hours /
+// damage per cycle, the IIW life that of the CV applied (and the CV 0.5 life never longer
+// than the CV 1 one), the dominant scenario the one of largest damage there; the summary's
+// shortest life is 1 / its damage per hour, is the table's shortest, and is the first of the
+// worst locations; the details assumed (normal and shear curves) cover every station; no
+// cell is NaN or infinite and every column's header names its unit (or is a name, a count or
+// a ratio). Tolerances: the table's life has 6 significant digits, its damages 10 (the
+// CsvTable's formats), so 1e-5 relative; the summary's numbers are doubles (1e-12).
+TEST(ShippedDutyCycle, ThreadsChangeNoByteAndLifeIsTheCycleHoursOverItsDamageEverywhere) {
+  framedyn::testing::TempDir dir("framedyn_test_shipped_duty_cycle");
+  const std::string cycle = (kSource / "examples" / "duty_cycle.yaml").string();
+  ASSERT_EQ(run("run " + cycle + " -j 1 -o " + (dir / "one").string(), dir / "one.log"), 0) << slurp(dir / "one.log");
+  ASSERT_EQ(run("run " + cycle + " -j 2 -q -o " + (dir / "two").string(), dir / "two.log"), 0) << slurp(dir / "two.log");
+  for (const char* f : {"summary.json", "life_map.csv", "frame_life.vtu"}) EXPECT_TRUE(slurp(dir / "one" / f) == slurp(dir / "two" / f)) << f;
+  const std::string console = slurp(dir / "one.log");
+  EXPECT_NE(console.find("detail assumed: IIW FAT71, normal stress"), std::string::npos) << console;
+  EXPECT_NE(console.find("proportionality there: CV"), std::string::npos) << console;
+
+  const nlohmann::json f = nlohmann::json::parse(slurp(dir / "one" / "summary.json"))["fatigue"];
+  const double hours = f["cycle_hours"].get<double>();
+  double scenario_hours = 0.0;
+  std::vector<std::pair<std::string, double>> scenarios;
+  for (const auto& s : f["scenarios"]) {
+    scenario_hours += s["hours"].get<double>();
+    scenarios.emplace_back(s["name"].get<std::string>(), s["hours"].get<double>());
+  }
+  ASSERT_EQ(scenarios.size(), 4u);
+  EXPECT_EQ(hours, scenario_hours);
+  const double d_hour = f["damage_per_hour"]["value"].get<double>();
+  ASSERT_GT(d_hour, 0.0);
+  EXPECT_EQ(f["min_life"]["unit"], "h");
+  EXPECT_NEAR(f["min_life"]["value"].get<double>(), 1.0 / d_hour, 1e-12 / d_hour);
+  EXPECT_NEAR(f["damage_per_cycle"].get<double>(), hours * d_hour, 1e-12 * hours * d_hour);
+  const nlohmann::json& worst = f["worst_locations"][0];
+  for (const char* k : {"output", "element", "station", "point"}) EXPECT_EQ(worst[k], f["min_life"][k]) << k;
+  EXPECT_NEAR(worst["life"]["value"].get<double>(), f["min_life"]["value"].get<double>(), 1e-12 * f["min_life"]["value"].get<double>());
+  ASSERT_TRUE(f["details_assumed"].is_array());
+  int covered = 0;
+  for (const auto& d : f["details_assumed"]) {
+    EXPECT_NE(d["shear_sn_curve"].get<std::string>().find("shear stress"), std::string::npos) << d.dump();
+    covered += d["stations"].get<int>();
+  }
+
+  std::istringstream csv(slurp(dir / "one" / "life_map.csv"));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = csv_cells(line);
+  std::map<std::string, std::size_t> col;
+  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  // A header is a name (output, point, curves, dominant), a count (element, station), a ratio
+  // (damage, correlation, CV: unit 1) or carries [unit].
+  const std::set<std::string> unitless = {"output", "element", "station", "point", "sn_curve", "shear_sn_curve", "dominant", "damage_per_cycle",
+                                          "normal_damage_per_cycle", "shear_damage_per_cycle", "sigma_tau_correlation", "comparison_value"};
+  for (const std::string& h : header) EXPECT_TRUE(unitless.count(h) || (h.find(" [") != std::string::npos && h.back() == ']')) << h;
+  for (const char* k : {"damage_per_cycle", "life [h]", "dominant", "comparison_value", "life_cv_1 [h]", "life_cv_0.5 [h]", "shear_sn_curve"})
+    ASSERT_TRUE(col.count(k)) << k;
+  std::set<std::pair<std::string, std::string>> stations;
+  int rows = 0, damaged = 0;
+  double shortest = std::numeric_limits<double>::infinity();
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> c = csv_cells(line);
+    ASSERT_EQ(c.size(), header.size()) << line;
+    ++rows;
+    stations.insert({c[col["output"]], c[col["element"]] + "/" + c[col["station"]]});
+    for (const std::string& cell : c) {
+      std::string lower = cell;
+      std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+      EXPECT_TRUE(lower != "nan" && lower != "inf" && lower != "-inf" && lower != "-nan") << line;
+    }
+    const double d = std::stod(c[col["damage_per_cycle"]]);
+    ASSERT_GE(d, 0.0) << line;
+    if (d == 0.0) {
+      EXPECT_EQ(c[col["life [h]"]], "") << line;  // unlimited: an empty cell
+      continue;
+    }
+    ++damaged;
+    const double life = std::stod(c[col["life [h]"]]);
+    EXPECT_NEAR(life, hours / d, 1e-5 * hours / d) << line;
+    shortest = std::min(shortest, life);
+    const double cv1 = std::stod(c[col["life_cv_1 [h]"]]), cv05 = std::stod(c[col["life_cv_0.5 [h]"]]);
+    EXPECT_LE(cv05, cv1 * (1 + 1e-5)) << line;  // CV 0.5 asks more of the same damages
+    EXPECT_NEAR(life, c[col["comparison_value"]] == "1" ? cv1 : cv05, 1e-5 * life) << line;
+    double top = -1.0;
+    std::string top_name;
+    for (const auto& [name, h] : scenarios) {
+      const double part = h * std::stod(c[col["damage_per_hour " + name + " [1/h]"]]);
+      if (part > top) top = part, top_name = name;
+    }
+    EXPECT_EQ(c[col["dominant"]], top_name) << line;
+  }
+  EXPECT_EQ(static_cast<int>(stations.size()), covered);
+  EXPECT_GT(damaged, 0);
+  EXPECT_NEAR(shortest, f["min_life"]["value"].get<double>(), 1e-5 * shortest);
+  // ParaView: frame_life.vtu's cell fields, per element the largest damage per hour of the cycle
+  // and its life (10 significant digits: 1e-9), the shortest the summary's.
+  const std::string vtu = slurp(dir / "one" / "frame_life.vtu");
+  const auto cell_field = [&](const std::string& name) {
+    std::vector<double> v;
+    const std::size_t at = vtu.find("Name=\"" + name + "\"");
+    if (at == std::string::npos) return v;
+    std::istringstream in(vtu.substr(vtu.find('>', at) + 1, vtu.find("</DataArray>", at) - vtu.find('>', at) - 1));
+    for (double x; in >> x;) v.push_back(x);
+    return v;
+  };
+  const std::vector<double> damage_field = cell_field("fatigue_damage_per_hour [1/h]"), life_field = cell_field("fatigue_life [h]");
+  ASSERT_FALSE(damage_field.empty());
+  ASSERT_EQ(life_field.size(), damage_field.size());
+  double shortest_cell = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < damage_field.size(); ++e) {
+    if (damage_field[e] > 1e-12) {
+      EXPECT_NEAR(life_field[e], 1.0 / damage_field[e], 1e-9 / damage_field[e]) << "cell " << e;
+    }
+    shortest_cell = std::min(shortest_cell, life_field[e]);
+  }
+  EXPECT_NEAR(shortest_cell, f["min_life"]["value"].get<double>(), 1e-9 * shortest_cell);
+  std::cout << "[ measured ] shipped duty cycle: " << rows << " points at " << stations.size() << " stations, " << damaged
+            << " damaged; shortest life " << f["min_life"]["value"].get<double>() << " h (" << f["min_life"]["output"] << " element "
+            << f["min_life"]["element"] << ", X = " << f["min_life"]["X"]["value"] << " in), damage per hour " << d_hour << "\n";
+}
+
+// `run --threads` (a duty cycle's scenarios at the same time) refuses a negative count with
+// batch's message (docs/errors.md CLI-54), before anything runs: no results folder.
+TEST(ShippedDutyCycle, NegativeThreadsAreRefusedWithBatchsMessage) {
+  framedyn::testing::TempDir dir("framedyn_test_run_threads");
+  EXPECT_EQ(run("run " + (kSource / "examples" / "duty_cycle.yaml").string() + " --threads -1 -o " + (dir / "out").string(), dir / "log"), 1);
+  EXPECT_EQ(slurp(dir / "log"), "framedyn: error: command line: --threads: expected at least 1 thread (or 0: one per core), found -1\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }

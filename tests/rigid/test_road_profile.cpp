@@ -66,6 +66,52 @@ TEST(Iso8608RoadProfile, MeanSquareOverOnePeriodIsTheIntegralOfThePsdOverTheBand
   for (const RoadProfile::Line& l : p.lines()) EXPECT_NEAR(l.amplitude * l.amplitude / (2 * dn), 256e-6 * std::pow(l.n / 0.1, -2), 1e-12 * 256e-6 * std::pow(l.n / 0.1, -2));
 }
 
+// The PSD of the heights themselves, not of the lines' amplitudes: the discrete Fourier transform
+// of one period of h sampled at M = 1024 points (more than twice the highest line, k = 283, so no
+// line aliases onto another) gives each line's amplitude back, and the one-sided PSD at n_k = k / L,
+// |H_k|^2 / (2 dn), is ISO 8608's G_d(n) = G_d(n0) (n / n0)^-2 with class D's G_d(n0) = 1024e-6 m^3
+// (the geometric mean of its class band, ISO 8608 Table 1) at every line; the bins outside the band
+// 0.011-2.83 cycle/m hold no power. Round-off: each DFT bin sums 1024 terms of size <= the RMS
+// (about 1e-13 of the RMS), against the weakest line's amplitude, 7e-3 of the RMS: 1e-9 relative.
+TEST(Iso8608RoadProfile, PsdOfTheSampledHeightsIsTheStandardsAtEveryLineAndZeroOutsideTheBand) {
+  const double L = 100.0, dn = 1.0 / L, gd_n0 = 1024e-6;
+  const RoadProfile p(options(RoadClass::D, L));
+  const int M = 1024;
+  std::vector<double> h(M);
+  for (int j = 0; j < M; ++j) h[static_cast<std::size_t>(j)] = p.height(L * j / M);
+  const double rms = std::sqrt(p.mean_square());
+  std::vector<bool> is_line(M / 2, false);
+  for (const RoadProfile::Line& l : p.lines()) is_line[static_cast<std::size_t>(std::lround(l.n * L))] = true;
+  double band_power = 0.0, outside = 0.0;
+  int lines = 0;
+  for (int k = 1; k < M / 2; ++k) {
+    double a = 0.0, b = 0.0;
+    for (int j = 0; j < M; ++j) {
+      const double w = 2.0 * M_PI * static_cast<double>(k) * j / M;
+      a += h[static_cast<std::size_t>(j)] * std::cos(w);
+      b += h[static_cast<std::size_t>(j)] * std::sin(w);
+    }
+    const double amplitude2 = (a * a + b * b) * 4.0 / (static_cast<double>(M) * M);  // |2 H_k / M|^2
+    const double n = k * dn;
+    if (is_line[static_cast<std::size_t>(k)]) {
+      ++lines;
+      const double standard = gd_n0 * std::pow(n / kIso8608ReferenceFrequency, -2.0);
+      EXPECT_NEAR(amplitude2 / (2.0 * dn), standard, 1e-9 * standard) << "n = " << n << " cycle/m";
+      EXPECT_GE(n, 0.011);
+      EXPECT_LE(n, 2.83 + 1e-12);
+      band_power += amplitude2 / 2.0;
+    } else {
+      outside = std::max(outside, std::sqrt(amplitude2));
+    }
+  }
+  EXPECT_EQ(lines, 282);  // k = 2 (0.011 L = 1.1 rounded up) to 283 (2.83 L)
+  EXPECT_LT(outside, 1e-12 * rms);
+  // Parseval: the bins' power is the profile's mean square.
+  EXPECT_NEAR(band_power, p.mean_square(), 1e-10 * p.mean_square());
+  std::printf("class D, L = 100 m: %d lines, RMS %.6g m (sqrt of the band integral of the standard's PSD: %.6g m), largest bin outside the band %.2g m\n",
+              lines, rms, std::sqrt(p.psd_integral()), outside);
+}
+
 TEST(Iso8608RoadProfile, EachClassDoublesTheRmsOfTheOneBefore) {
   // Gd(n0) grows by 4 from class to class (A 16e-6 ... H 262144e-6 m^3), so with the same
   // phases the heights, and the RMS, double.
