@@ -83,6 +83,7 @@ BatchCounts run_batch_mpi(const BatchDesign& design, const BatchOptions& options
     // A worker: no console of its own (the manager reports), and never the results folder.
     std::fflush(stdout);
     if (!std::freopen("/dev/null", "w", stdout)) return {};
+    keep_freed_memory_for_next_runs();
     coupling::FrameModelCache models;  // this worker's frame models: built by its first run, reused by the next
     for (;;) {
       long long index = -1;

@@ -398,30 +398,47 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
   r.frequencies_hz.resize(m);
   r.damping_ratios.resize(m);
 
+  // Every mode advances together, time by time: the modal loads at a time (p's column) and the
+  // coordinates kept at an output time (a column) are contiguous, and each mode's step is the same
+  // arithmetic as on its own (the exact step recomputed for all when the time step changes).
+  std::vector<double> damping(static_cast<std::size_t>(m));
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m), v = Eigen::VectorXd::Zero(m);
   for (int i = 0; i < m; ++i) {
     const double omega = std::sqrt(std::max(w2(i), 0.0));
-    const double c = o.damping.coefficient(i, omega);
+    damping[static_cast<std::size_t>(i)] = o.damping.coefficient(i, omega);
     r.frequencies_hz(i) = omega / kTwoPi;
     r.damping_ratios(i) = o.damping.ratio_of(i, omega);
-    double q = 0.0, v = 0.0;
-    if (o.initial == InitialState::static_equilibrium && w2(i) > 0.0) q = p(i, 0) / w2(i);
-    double h_prev = -1.0;
-    PiecewiseLinearStep step{};
-    std::size_t next_out = 0;
-    for (Eigen::Index k = 0; k < nt; ++k) {
-      if (k > 0) {
-        const double h = in.times(k) - in.times(k - 1);
-        if (std::abs(h - h_prev) > 1e-12 * h) {
-          step = piecewise_linear_step(w2(i), c, h);
-          h_prev = h;
+    if (o.initial == InitialState::static_equilibrium && w2(i) > 0.0) q(i) = p(i, 0) / w2(i);
+  }
+  // The step's coefficients per mode: q1 = a00 q + a01 v + c0 p0 + d0 p1, v1 = a10 q + a11 v + c1 p0 + d1 p1.
+  std::vector<double> a00(static_cast<std::size_t>(m)), a01(a00), a10(a00), a11(a00), c0(a00), c1(a00), d0(a00), d1(a00);
+  double h_prev = -1.0;
+  std::size_t next_out = 0;
+  for (Eigen::Index k = 0; k < nt; ++k) {
+    if (k > 0) {
+      const double h = in.times(k) - in.times(k - 1);
+      if (std::abs(h - h_prev) > 1e-12 * h) {
+        for (int i = 0; i < m; ++i) {
+          const PiecewiseLinearStep step = piecewise_linear_step(w2(i), damping[static_cast<std::size_t>(i)], h);
+          const std::size_t u = static_cast<std::size_t>(i);
+          a00[u] = step.a(0, 0), a01[u] = step.a(0, 1), a10[u] = step.a(1, 0), a11[u] = step.a(1, 1);
+          c0[u] = step.b0(0), c1[u] = step.b0(1), d0[u] = step.b1(0), d1[u] = step.b1(1);
         }
-        const double q1 = step.a(0, 0) * q + step.a(0, 1) * v + step.b0(0) * p(i, k - 1) + step.b1(0) * p(i, k);
-        const double v1 = step.a(1, 0) * q + step.a(1, 1) * v + step.b0(1) * p(i, k - 1) + step.b1(1) * p(i, k);
-        q = q1;
-        v = v1;
+        h_prev = h;
       }
-      if (next_out < outputs.size() && outputs[next_out] == k) r.modal_coordinates(i, static_cast<Eigen::Index>(next_out++)) = q;
+      const double* p0 = p.col(k - 1).data();
+      const double* p1 = p.col(k).data();
+      double* qd = q.data();
+      double* vd = v.data();
+      for (int i = 0; i < m; ++i) {
+        const std::size_t u = static_cast<std::size_t>(i);
+        const double q1 = a00[u] * qd[i] + a01[u] * vd[i] + c0[u] * p0[i] + d0[u] * p1[i];
+        const double v1 = a10[u] * qd[i] + a11[u] * vd[i] + c1[u] * p0[i] + d1[u] * p1[i];
+        qd[i] = q1;
+        vd[i] = v1;
+      }
     }
+    if (next_out < outputs.size() && outputs[next_out] == k) r.modal_coordinates.col(static_cast<Eigen::Index>(next_out++)) = q;
   }
 
   // The free rigid motions under the unrelieved loads (Eq. 19.7): k = 0,

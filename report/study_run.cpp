@@ -373,6 +373,17 @@ bool summary_needs_hot_spots(const std::vector<std::string>& paths) {
   return false;
 }
 
+// Whether a summary read only at `paths` needs the frame at all: a path outside `input` and `rigid` does
+// (the frame and fatigue blocks, warnings, and any path this does not recognise).
+bool summary_needs_frame(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    const std::optional<std::vector<coupling::KeyPathStep>> steps = coupling::parse_key_path(path);
+    if (!steps || steps->empty() || steps->front().is_item) return true;
+    if (steps->front().key != "input" && steps->front().key != "rigid") return true;
+  }
+  return false;
+}
+
 // After the rigid block and its warnings, 3-D: the pipeline, this run's frame loads into the beam model
 // of the frame (summary frame and fatigue blocks, the frame's files and figures).
 void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options, const Stage& stage,
@@ -380,6 +391,9 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
   details.study_3d = study;
   details.results_3d = r;
   if (!study.frame_response) return;
+  // A summary read only in its input and rigid blocks, in memory (a design whose outputs are all the
+  // vehicle's, a sweep): the frame is not run at all.
+  if (!options.out && options.summary_outputs && !summary_needs_frame(*options.summary_outputs)) return;
   const core::UnitSystem& u = study.units;
   // Every load on the frame (points 24-31 and the attachment's at point 19).
   const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);

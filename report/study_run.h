@@ -49,7 +49,9 @@ struct StudyRunOptions {
   // lies outside `input`, `rigid` and the frame block's keys from its modes,
   // loads and rails (a hot spot, the von Mises peak, compared supports,
   // fatigue, warnings), the frame's stress histories, hot spots and life map
-  // are skipped (coupling::FrameStudyRequest::hot_spots). Every listed path
+  // are skipped (coupling::FrameStudyRequest::hot_spots); when every path lies
+  // in `input` or `rigid` (a path may name a whole block: "rigid"), the frame
+  // is not run at all (no frame block, no frame warnings). Every listed path
   // reads the same value either way; the rest of the summary may be missing.
   std::optional<std::vector<std::string>> summary_outputs;
   // Progress: a stage begins ("reading ...", "modes and forced response", ...); a stage's loop advances.

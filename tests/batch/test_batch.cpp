@@ -252,6 +252,34 @@ TEST(StudyRun, SummaryOutputsOutsideTheHotSpotsGiveTheWholeRunsNumbersWithoutCom
   }
 }
 
+// Outputs all in the rigid block (a design on the vehicle's response, a sweep: "rigid" names the whole
+// block) need no frame: the run skips it, and its input and rigid blocks are the whole run's, number for
+// number (the vehicle's response does not depend on the frame model); any frame path runs the frame.
+TEST(StudyRun, SummaryOutputsInTheRigidBlockAloneSkipTheFrameAndGiveTheWholeRunsRigidNumbers) {
+  const fs::path study = kExamples / "offset_plowing.yaml";
+  YAML::Node doc = framedyn::coupling::load_yaml_file(study.string());
+  framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
+  const auto run = [&](std::optional<std::vector<std::string>> outputs) {
+    report::StudyRunOptions o;
+    o.summary_outputs = std::move(outputs);
+    return report::run_study_document(doc, study, o);
+  };
+  const report::StudyRun whole = run(std::nullopt);
+  ASSERT_TRUE(whole.summary.contains("frame"));
+  for (const std::vector<std::string>& outputs : {std::vector<std::string>{"rigid"},
+                                                  std::vector<std::string>{"rigid.response.peak_cutting_force", "rigid.modes[0].frequency", "input.name"}}) {
+    const report::StudyRun vehicle = run(outputs);
+    EXPECT_FALSE(vehicle.summary.contains("frame")) << outputs.front() << ": the frame was run although no output reads it";
+    EXPECT_EQ(vehicle.summary["rigid"].dump(2), whole.summary["rigid"].dump(2)) << outputs.front();
+    EXPECT_EQ(vehicle.summary["input"].dump(2), whole.summary["input"].dump(2)) << outputs.front();
+    EXPECT_GT(vehicle.summary["rigid"]["response"]["peak_cutting_force"]["value"].get<double>(), 0.0);
+  }
+  for (const char* path : {"frame.modes[0].frequency", "warnings", "fatigue.min_life"}) {
+    const report::StudyRun with_frame = run(std::vector<std::string>{"rigid.response.peak_cutting_force", path});
+    EXPECT_EQ(with_frame.summary["frame"]["modes"].dump(2), whole.summary["frame"]["modes"].dump(2)) << path;
+  }
+}
+
 // ------------------------------------------------------------- sampling
 
 TEST(Sampling, NormalQuantileMatchesTabulatedValuesAndInvertsTheCdf) {
