@@ -47,7 +47,7 @@ SteadyReport steady_report(const rigid::Trajectory& trajectory, double shaker_hz
     if (is_blade_motion(s.name)) watched.push_back({s.name, &s.values, motion});
   for (const History& h : frame_loads) watched.push_back({h.name, &h.values, h.quantity == Quantity::force ? force : moment});
   for (const rigid::WatchedSignal& w : watched) rep.watched.push_back(w.name);
-  // The switches (soil law, contacts): forces jump there (Eq. 12.1a).
+  // The switches (soil law, contacts): forces jump there (Eq. 17.1).
   std::vector<double> breaks;
   for (const auto& e : trajectory.events) breaks.push_back(e.time);
   std::sort(breaks.begin(), breaks.end());

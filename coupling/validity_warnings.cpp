@@ -238,7 +238,7 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
   }
   w.figures = {{"remaining_change", s.remaining_change, "1"}, {"period_multiple", static_cast<double>(s.remaining_period_multiple), "1"},
                {"tolerance", c.tolerance, "1"}, {"duration", duration, "s"}, {"shaker_periods", periods, "1"}};
-  // The trend of the change (Eq. 12.6): a transient still dying out, with when
+  // The trend of the change (Eq. 17.2): a transient still dying out, with when
   // it would be over, or a change that does not shrink.
   if (s.enough_data && s.trend_span > 0) {
     w.figures.push_back({"change_decay_rate", s.change_decay_rate, "1/s"});

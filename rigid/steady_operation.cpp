@@ -31,7 +31,7 @@ double value_at(const Bracket& b, const std::vector<double>& values) {
   return values[b.i - 1] + b.w * (values[b.i] - values[b.i - 1]);
 }
 
-// Eq. 12.1a: a value interpolated between two samples with a switch of the
+// Eq. 17.1: a value interpolated between two samples with a switch of the
 // law between them (or on either) is no value of the signal: a force that
 // jumps at the switch would be read part-way through its jump, and an orbit
 // that repeats exactly would show a change of up to the jump. Such a
@@ -128,7 +128,7 @@ long comparable_periods(const std::vector<double>& time, double period, int n) {
   return std::max(0L, period_index(time.back(), time.front(), period) - n);
 }
 
-// Eq. 12.6: whether the closest multiple's change still shrinks, and at what
+// Eq. 17.2: whether the closest multiple's change still shrinks, and at what
 // rate: its largest change over the last W periods against the W periods that
 // end half-way through the comparisons, as exp(-rate t).
 void settling_trend(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period,

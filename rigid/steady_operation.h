@@ -39,7 +39,7 @@ struct SteadyOperation {
   std::string leading_signal;
   double shaker_period = 0.0;        // s
   bool enough_data = true;           // false if the run is shorter than window_periods + n periods for every n
-  // When not reached (Eq. 12.6): the trend of the closest multiple's change,
+  // When not reached (Eq. 17.2): the trend of the closest multiple's change,
   // its largest change over the last window against the window that ends
   // half-way through the comparisons, trend_span earlier: the change goes as
   // exp(-change_decay_rate t); a positive rate projects when it would fall
@@ -60,7 +60,7 @@ struct CycleChanges {
 };
 // `breaks` (sorted, s): the times at which the signals may jump (the switches
 // of the soil law and the contacts): a value interpolated across one is left
-// out of Eq. 12.1 (Eq. 12.1a).
+// out of Eq. 12.1 (Eq. 17.1).
 CycleChanges cycle_changes(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period, int n,
                            const SteadyCriterion& criterion = {}, const std::vector<double>& breaks = {});
 

@@ -141,7 +141,7 @@ TEST(SteadyOperation, ForceThatJumpsAtASwitchIsSteadyWhenTheSwitchesAreGiven) {
   // as an output grid not commensurate with the shaker. Interpolating across
   // the jump reads it part-way: a change of up to J / S that is no change of
   // the motion. With the switch times as breaks those comparisons are left out
-  // (Eq. 12.1a), and what remains is linear interpolation's error on the sine,
+  // (Eq. 17.1), and what remains is linear interpolation's error on the sine,
   // at most B (omega dt)^2 / 8 over the scale S = 2B + J.
   constexpr double kJump = 0.5, kDt = kPeriod / 200.37;
   const auto f = [](double t) {
