@@ -241,8 +241,10 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
   // The trend of the change (Eq. 17.2): a transient still dying out, with when
   // it would be over, or a change that does not shrink.
   if (s.enough_data && s.trend_span > 0) {
-    w.figures.push_back({"change_decay_rate", s.change_decay_rate, "1/s"});
+    w.figures.push_back({"earlier_change", s.trend_earlier_change, "1"});
+    w.figures.push_back({"trend_span", s.trend_span, "s"});
     if (s.projected_reached_at) {
+      w.figures.push_back({"change_time_constant", 1.0 / s.change_decay_rate, "s"});
       const double needed = *s.projected_reached_at + (c.window_periods + s.remaining_period_multiple) * s.shaker_period;
       w.message += fmt::format(". The change still shrinks ({:.3g} % {:.3g} s earlier; as exp(-t / {:.3g} s)): at that rate steady "
                                "operation from about {:.3g} s, shown by a run of at least {:.3g} s",
