@@ -247,12 +247,15 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
       w.figures.push_back({"change_time_constant", 1.0 / s.change_decay_rate, "s"});
       const double needed = *s.projected_reached_at + (c.window_periods + s.remaining_period_multiple) * s.shaker_period;
       w.message += fmt::format(". The change still shrinks ({:.3g} % {:.3g} s earlier; as exp(-t / {:.3g} s)): at that rate steady "
-                               "operation from about {:.3g} s, shown by a run of at least {:.3g} s",
-                               100.0 * s.trend_earlier_change, s.trend_span, 1.0 / s.change_decay_rate, *s.projected_reached_at, needed);
+                               "operation from about {:.3g} s, shown by a run of at least {:.3g} s (an extrapolation from a cycle of {} period{}: a "
+                               "longer cycle or a slower mode may show only in the longer run)",
+                               100.0 * s.trend_earlier_change, s.trend_span, 1.0 / s.change_decay_rate, *s.projected_reached_at, needed,
+                               s.remaining_period_multiple, s.remaining_period_multiple == 1 ? "" : "s");
       w.figures.push_back({"projected_reached_at", *s.projected_reached_at, "s"});
       w.figures.push_back({"projected_duration_needed", needed, "s"});
     } else {
-      w.message += fmt::format(". The change does not shrink ({:.3g} % {:.3g} s earlier): the motion may not settle at any multiple "
+      w.message += fmt::format(". The change does not shrink, or more slowly than over the run's length ({:.3g} % {:.3g} s earlier): "
+                               "the motion may not settle at any multiple "
                                "up to {} (a drift, a longer cycle, a torus or an irregular motion); the start-up peaks are those of the whole run",
                                100.0 * s.trend_earlier_change, s.trend_span, c.max_period_multiple);
     }

@@ -144,9 +144,11 @@ void settling_trend(const std::vector<double>& time, const std::vector<WatchedSi
   r.trend_span = static_cast<double>(K - mid_end) * period;
   r.trend_earlier_change = early;
   r.change_decay_rate = std::log(early / late) / r.trend_span;
-  // Shrinking by more than round-off: projected from the last window's start,
-  // where a decaying change is largest.
-  if (early > late * (1 + 1e-6))
+  // Shrinking by more than round-off, with a time constant no longer than the
+  // run (a slower trend is no evidence of settling): projected from the last
+  // window's start, where a decaying change is largest.
+  const double run = time.back() - time.front();
+  if (early > late * (1 + 1e-6) && 1.0 / r.change_decay_rate <= run)
     r.projected_reached_at = time.front() + static_cast<double>(K - W) * period + std::log(late / c.tolerance) / r.change_decay_rate;
 }
 
