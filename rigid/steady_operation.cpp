@@ -83,8 +83,17 @@ namespace {
 // (entry j of the result is period first + j). The detector asks first for the
 // last window only, and for the whole run only for a multiple that passes: a
 // multiple that fails costs W periods of samples, not the run's.
+// The largest magnitude of each group over the run (Eq. 12.2), the same for every n.
+std::map<int, double> group_largest_of(const std::vector<WatchedSignal>& signals) {
+  std::map<int, double> group_largest;
+  for (const WatchedSignal& s : signals)
+    for (double v : *s.values) group_largest[s.group] = std::max(group_largest[s.group], std::abs(v));
+  return group_largest;
+}
+
 CycleChanges changes_from(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period, int n,
-                          const SteadyCriterion& criterion, long first, const std::vector<double>& breaks) {
+                          const SteadyCriterion& criterion, long first, const std::vector<double>& breaks,
+                          std::map<int, double>& group_largest) {
   CycleChanges out;
   if (time.size() < 2 || !(period > 0) || n < 1) return out;
   const double t0 = time.front(), lag = n * period;
@@ -92,9 +101,6 @@ CycleChanges changes_from(const std::vector<double>& time, const std::vector<Wat
   const long periods = period_index(time.back(), t0, period) - n;
   if (periods <= 0) return out;
   first = std::clamp(first, 0L, periods);
-  std::map<int, double> group_largest;
-  for (const WatchedSignal& s : signals)
-    for (double v : *s.values) group_largest[s.group] = std::max(group_largest[s.group], std::abs(v));
   std::vector<double> scale(signals.size());
   for (std::size_t s = 0; s < signals.size(); ++s)
     scale[s] = signal_scale(time, *signals[s].values, group_largest[signals[s].group], period, n, criterion);
@@ -132,9 +138,9 @@ long comparable_periods(const std::vector<double>& time, double period, int n) {
 // rate: its largest change over the last W periods against the W periods that
 // end half-way through the comparisons, as exp(-rate t).
 void settling_trend(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period,
-                    const SteadyCriterion& c, const std::vector<double>& breaks, SteadyOperation& r) {
+                    const SteadyCriterion& c, const std::vector<double>& breaks, std::map<int, double>& group_largest, SteadyOperation& r) {
   const int n = r.remaining_period_multiple;
-  const CycleChanges cc = changes_from(time, signals, period, n, c, 0, breaks);
+  const CycleChanges cc = changes_from(time, signals, period, n, c, 0, breaks, group_largest);
   const long K = static_cast<long>(cc.change.size()), W = c.window_periods;
   const long mid_end = K / 2;  // the earlier window: periods [mid_end - W, mid_end)
   if (mid_end < W || K - mid_end < W) return;
@@ -156,7 +162,8 @@ void settling_trend(const std::vector<double>& time, const std::vector<WatchedSi
 
 CycleChanges cycle_changes(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period, int n,
                            const SteadyCriterion& criterion, const std::vector<double>& breaks) {
-  return changes_from(time, signals, period, n, criterion, 0, breaks);
+  std::map<int, double> group_largest = group_largest_of(signals);
+  return changes_from(time, signals, period, n, criterion, 0, breaks, group_largest);
 }
 
 SteadyOperation detect_steady_operation(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double shaker_period,
@@ -166,18 +173,19 @@ SteadyOperation detect_steady_operation(const std::vector<double>& time, const s
   r.enough_data = false;
   std::optional<double> closest;  // the least remaining change among the n tried (Eq. 12.4)
   const long W = c.window_periods;
+  std::map<int, double> group_largest = group_largest_of(signals);
   for (int n = 1; n <= c.max_period_multiple; ++n) {
     const long K = comparable_periods(time, shaker_period, n);
     if (K < W) break;  // a larger n has fewer comparisons still
     r.enough_data = true;
     // The last window's largest change (Eq. 12.3) and the signal that sets it.
-    const CycleChanges last = changes_from(time, signals, shaker_period, n, c, K - W, breaks);
+    const CycleChanges last = changes_from(time, signals, shaker_period, n, c, K - W, breaks, group_largest);
     if (static_cast<long>(last.change.size()) < W) continue;
     const std::size_t at = static_cast<std::size_t>(leading_index(last.change));
     const double remaining = last.change[at];
     const int lead = last.leader[at];
     if (remaining < c.tolerance) {
-      const CycleChanges cc = changes_from(time, signals, shaker_period, n, c, 0, breaks);
+      const CycleChanges cc = changes_from(time, signals, shaker_period, n, c, 0, breaks, group_largest);
       std::size_t k = cc.change.size();
       while (k > 0 && cc.change[k - 1] < c.tolerance) --k;
       r.reached_at = time.front() + static_cast<double>(k) * shaker_period;
@@ -195,7 +203,7 @@ SteadyOperation detect_steady_operation(const std::vector<double>& time, const s
       r.leading_signal = lead >= 0 ? signals[static_cast<std::size_t>(lead)].name : std::string();
     }
   }
-  if (closest) settling_trend(time, signals, shaker_period, c, breaks, r);
+  if (closest) settling_trend(time, signals, shaker_period, c, breaks, group_largest, r);
   return r;
 }
 
