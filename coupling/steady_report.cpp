@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "coupling/frame_loads_2d.h"
 #include "coupling/rigid_study.h"
 #include "coupling/rigid_study_3d.h"
@@ -31,8 +33,9 @@ bool is_blade_motion(const std::string& name) { return name == "blade_x" || name
 
 // The detector over the blade motion and the frame loads, and the peaks of
 // every history split at reached_at.
-SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, const std::vector<Series>& series,
+SteadyReport steady_report(const rigid::Trajectory& trajectory, double shaker_hz, const std::vector<Series>& series,
                            const std::vector<History>& frame_loads) {
+  const std::vector<double>& time = trajectory.time;
   SteadyReport rep;
   if (!(shaker_hz > 0)) {
     rep.not_assessed = "no shaker: steady operation is judged over shaker periods (a plow with plow.shaker)";
@@ -44,7 +47,11 @@ SteadyReport steady_report(const std::vector<double>& time, double shaker_hz, co
     if (is_blade_motion(s.name)) watched.push_back({s.name, &s.values, motion});
   for (const History& h : frame_loads) watched.push_back({h.name, &h.values, h.quantity == Quantity::force ? force : moment});
   for (const rigid::WatchedSignal& w : watched) rep.watched.push_back(w.name);
-  rep.operation = rigid::detect_steady_operation(time, watched, 1.0 / shaker_hz, rep.criterion);
+  // The switches (soil law, contacts): forces jump there (Eq. 17.1).
+  std::vector<double> breaks;
+  for (const auto& e : trajectory.events) breaks.push_back(e.time);
+  std::sort(breaks.begin(), breaks.end());
+  rep.operation = rigid::detect_steady_operation(time, watched, 1.0 / shaker_hz, rep.criterion, breaks);
   // Peaks of loads and motions; the plow force's direction (an angle) has none worth reporting.
   for (const Series& s : series)
     if (s.quantity != Quantity::dimensionless) rep.peaks.push_back({s.name, s.quantity, rigid::split_peaks(time, s.values, rep.operation.reached_at)});
@@ -84,7 +91,7 @@ void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, 
     }
     for (History* h : {&fx, &fz, &my}) frame.push_back(std::move(*h));
   }
-  r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
+  r.steady = steady_report(r.trajectory, shaker_hz, r.series, frame);
   // The rail's top-fiber stress at the output points (frame_output.rail): peaks only.
   if (r.steady.assessed && !r.rail_top_stress.empty())
     for (std::size_t k = 0; k < r.rail_top_stress.front().size(); ++k) {
@@ -107,7 +114,7 @@ void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model
         for (Eigen::Index i = 0; i < p.values.rows(); ++i) h.values.push_back(p.values(i, c));
         frame.push_back(std::move(h));
       }
-  r.steady = steady_report(r.trajectory.time, shaker_hz, r.series, frame);
+  r.steady = steady_report(r.trajectory, shaker_hz, r.series, frame);
   // The default state is the one the response starts in; another one is named (its key's value).
   add_validity_warnings(study, model.multibody, shaker_hz,
                         study.modal_soil == rigid::ModalSoil::cutting ? std::string("of the 3-D model")

@@ -238,6 +238,28 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
   }
   w.figures = {{"remaining_change", s.remaining_change, "1"}, {"period_multiple", static_cast<double>(s.remaining_period_multiple), "1"},
                {"tolerance", c.tolerance, "1"}, {"duration", duration, "s"}, {"shaker_periods", periods, "1"}};
+  // The trend of the change (Eq. 17.2): a transient still dying out, with when
+  // it would be over, or a change that does not shrink.
+  if (s.enough_data && s.trend_span > 0) {
+    w.figures.push_back({"earlier_change", s.trend_earlier_change, "1"});
+    w.figures.push_back({"trend_span", s.trend_span, "s"});
+    if (s.projected_reached_at) {
+      w.figures.push_back({"change_time_constant", 1.0 / s.change_decay_rate, "s"});
+      const double needed = *s.projected_reached_at + (c.window_periods + s.remaining_period_multiple) * s.shaker_period;
+      w.message += fmt::format(". The change still shrinks ({:.3g} % {:.3g} s earlier; as exp(-t / {:.3g} s)): at that rate steady "
+                               "operation from about {:.3g} s, shown by a run of at least {:.3g} s (an extrapolation from a cycle of {} period{}: a "
+                               "longer cycle or a slower mode may show only in the longer run)",
+                               100.0 * s.trend_earlier_change, s.trend_span, 1.0 / s.change_decay_rate, *s.projected_reached_at, needed,
+                               s.remaining_period_multiple, s.remaining_period_multiple == 1 ? "" : "s");
+      w.figures.push_back({"projected_reached_at", *s.projected_reached_at, "s"});
+      w.figures.push_back({"projected_duration_needed", needed, "s"});
+    } else {
+      w.message += fmt::format(". The change does not shrink, or more slowly than over the run's length ({:.3g} % {:.3g} s earlier): "
+                               "the motion may not settle at any multiple "
+                               "up to {} (a drift, a longer cycle, a torus or an irregular motion); the start-up peaks are those of the whole run",
+                               100.0 * s.trend_earlier_change, s.trend_span, c.max_period_multiple);
+    }
+  }
   return w;
 }
 

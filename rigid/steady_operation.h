@@ -17,7 +17,8 @@ namespace framedyn::rigid {
 struct SteadyCriterion {
   double tolerance = 0.01;     // largest cycle-to-cycle change, as a fraction of each signal's scale (Eq. 12.2)
   int window_periods = 3;      // steady only if every comparison over at least this many shaker periods passes (Eq. 12.3)
-  int max_period_multiple = 4; // n = 1..this tried, the least that passes taken (Eq. 12.4)
+  int max_period_multiple = 32; // n = 1..this tried, the least that passes taken (Eq. 12.4); 32: the shipped 3-D
+                                // offset plow settles on a 14-period orbit (docs/theory/rigid.md, section 17)
   double scale_floor = 0.01;   // a signal's scale is at least this fraction of the largest magnitude in its group (Eq. 12.2)
 };
 
@@ -38,6 +39,15 @@ struct SteadyOperation {
   std::string leading_signal;
   double shaker_period = 0.0;        // s
   bool enough_data = true;           // false if the run is shorter than window_periods + n periods for every n
+  // When not reached (Eq. 17.2): the trend of the closest multiple's change,
+  // its largest change over the last window against the window that ends
+  // half-way through the comparisons, trend_span earlier: the change goes as
+  // exp(-change_decay_rate t); a positive rate projects when it would fall
+  // under the tolerance. Zero (and no projection) when it cannot be judged.
+  double change_decay_rate = 0.0;    // 1/s; <= 0: the change does not shrink (a drift, a torus, an irregular motion)
+  double trend_earlier_change = 0.0; // the earlier window's largest change, as a fraction of the scale
+  double trend_span = 0.0;           // s between the two windows
+  std::optional<double> projected_reached_at;  // s
 };
 
 // The cycle-to-cycle change d_n(k) of Eq. 12.1 for shaker periods k = 0, 1, ...
@@ -48,11 +58,14 @@ struct CycleChanges {
   std::vector<double> change;
   std::vector<int> leader;
 };
+// `breaks` (sorted, s): the times at which the signals may jump (the switches
+// of the soil law and the contacts): a value interpolated across one is left
+// out of Eq. 12.1 (Eq. 17.1).
 CycleChanges cycle_changes(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double period, int n,
-                           const SteadyCriterion& criterion = {});
+                           const SteadyCriterion& criterion = {}, const std::vector<double>& breaks = {});
 
 SteadyOperation detect_steady_operation(const std::vector<double>& time, const std::vector<WatchedSignal>& signals, double shaker_period,
-                                        const SteadyCriterion& criterion = {});
+                                        const SteadyCriterion& criterion = {}, const std::vector<double>& breaks = {});
 
 // The value of largest magnitude (with its sign) of a time history, and when.
 struct Peak {

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
+#include <random>
 
 #include "rigid/steady_operation.h"
 
@@ -79,6 +81,94 @@ TEST(SteadyOperation, PeriodTwoSubharmonicIsFoundAsTwoShakerPeriods) {
   EXPECT_GT(one.change.back(), 0.3);
 }
 
+TEST(SteadyOperation, FourteenPeriodSubharmonicIsFoundAsFourteenShakerPeriods) {
+  // The shipped 3-D offset plow settles on an orbit that repeats every 14
+  // shaker periods (docs/theory/rigid.md, section 17). Here: the transient over
+  // a periodic part plus a part at 1/14 of the shaker frequency; it repeats
+  // every 14 T, so d_14(k) = A e^{-kT/tau} (1 - e^{-14T/tau}) / S with S the
+  // periodic part's range over 14 periods, and t* = tau ln(A (1 - e^{-14T/tau}) / (S tol)).
+  const auto periodic = [](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + 0.5 * std::sin(2 * M_PI * t / (14 * kPeriod)); };
+  const auto f = [&](double t) { return kA * std::exp(-t / kTau) + periodic(t); };
+  const Sampled s = sample(f, 60);
+  const SteadyCriterion c;
+  const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c);
+  ASSERT_TRUE(op.reached_at.has_value());
+  EXPECT_EQ(op.period_multiple, 14);
+  double lo = 1e9, hi = -1e9;
+  for (int i = 0; i < 1400000; ++i) {
+    const double p = periodic(14 * kPeriod * i / 1400000.0);
+    lo = std::min(lo, p);
+    hi = std::max(hi, p);
+  }
+  const double t_star = kTau * std::log(kA * (1 - std::exp(-14 * kPeriod / kTau)) / ((hi - lo) * c.tolerance));
+  EXPECT_GE(*op.reached_at, t_star);
+  EXPECT_LT(*op.reached_at, t_star + kPeriod);
+  // No multiple below 14 passes: over n periods the 1/14 part changes by up to
+  // 2 x 0.5 sin(pi n / 14) (at the phase where its cosine is 1), and the scale
+  // is at most the range hi - lo; so over the last 14 periods d_n >= sin(pi n / 14) / (hi - lo).
+  for (int n = 1; n < 14; ++n) {
+    const CycleChanges cc = cycle_changes(s.time, {{"x", &s.x}}, kPeriod, n, c);
+    const double largest = *std::max_element(cc.change.end() - 14, cc.change.end());
+    EXPECT_GE(largest, std::sin(M_PI * n / 14) / (hi - lo) * (1 - 1e-5)) << n;  // 1e-5: 200 samples per period miss the crest by < 3e-6
+  }
+}
+
+TEST(SteadyOperation, RunThatEndsInTheTransientProjectsTheClosedFormSettlingTime) {
+  // x = A e^{-t/tau} + B sin(2 pi t / T) with a tolerance the run cannot reach:
+  // d_1(k) = C e^{-kT/tau}, C = A (1 - e^{-T/tau}) / 2B, so the change decays at
+  // 1/tau and falls under the tolerance at t* = tau ln(C / tol).
+  const Sampled s = sample(decaying, 40);
+  SteadyCriterion c;
+  c.tolerance = 1e-9;
+  const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c);
+  ASSERT_FALSE(op.reached_at.has_value());
+  EXPECT_EQ(op.remaining_period_multiple, 1);
+  EXPECT_NEAR(op.change_decay_rate, 1 / kTau, 1e-6 / kTau);
+  ASSERT_TRUE(op.projected_reached_at.has_value());
+  // The rate to 1e-6 (relative) sets the projection to 1e-6 of t* (41 periods).
+  EXPECT_NEAR(*op.projected_reached_at, settling_time(c.tolerance, kPeriod), 1e-6 * settling_time(c.tolerance, kPeriod));
+  // A drift does not shrink: no projection.
+  const auto drift = [](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + 0.1 * kB * t / kPeriod; };
+  const Sampled d = sample(drift, 40);
+  const SteadyOperation never = detect_steady_operation(d.time, {{"x", &d.x}}, kPeriod);
+  EXPECT_LE(never.change_decay_rate, 1e-9);
+  EXPECT_FALSE(never.projected_reached_at.has_value());
+}
+
+TEST(SteadyOperation, ForceThatJumpsAtASwitchIsSteadyWhenTheSwitchesAreGiven) {
+  // An orbit that repeats exactly, with a jump of J at phase 0.3 of each
+  // period (a damper force at a switch of the soil law), sampled at T / 200.37
+  // as an output grid not commensurate with the shaker. Interpolating across
+  // the jump reads it part-way: a change of up to J / S that is no change of
+  // the motion. With the switch times as breaks those comparisons are left out
+  // (Eq. 17.1), and what remains is linear interpolation's error on the sine,
+  // at most B (omega dt)^2 / 8 over the scale S = 2B + J.
+  constexpr double kJump = 0.5, kDt = kPeriod / 200.37;
+  const auto f = [](double t) {
+    const double phase = t / kPeriod - std::floor(t / kPeriod);
+    return kB * std::sin(2 * M_PI * t / kPeriod) + (phase < 0.3 ? kJump : 0.0);
+  };
+  Sampled s;
+  for (int i = 0; i * kDt <= 20 * kPeriod; ++i) {
+    s.time.push_back(i * kDt);
+    s.x.push_back(f(i * kDt));
+  }
+  std::vector<double> breaks;
+  for (int k = 0; k <= 20; ++k) {
+    breaks.push_back(k * kPeriod);
+    breaks.push_back((k + 0.3) * kPeriod);
+  }
+  const SteadyCriterion c;
+  const CycleChanges across = cycle_changes(s.time, {{"x", &s.x}}, kPeriod, 1, c);
+  EXPECT_GT(*std::max_element(across.change.begin(), across.change.end()), c.tolerance);  // the artefact
+  const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c, breaks);
+  ASSERT_TRUE(op.reached_at.has_value());
+  EXPECT_EQ(*op.reached_at, 0.0);
+  EXPECT_EQ(op.period_multiple, 1);
+  const double w_dt = 2 * M_PI * kDt / kPeriod;
+  EXPECT_LE(op.remaining_change, kB * w_dt * w_dt / 8 / (2 * kB + kJump));
+}
+
 TEST(SteadyOperation, DriftingSignalIsNeverSteadyHoweverLongTheRun) {
   // x = B sin + s t: every period changes it by s T = 0.1 B at every phase.
   const auto f = [](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + 0.1 * kB * t / kPeriod; };
@@ -107,7 +197,10 @@ TEST(SteadyOperation, ComponentThatIsRoundOffIsJudgedAgainstItsGroup) {
   // largest magnitude it does not hold steady operation back.
   Sampled s = sample(decaying, 40);
   std::vector<double> noise(s.time.size());
-  for (std::size_t i = 0; i < noise.size(); ++i) noise[i] = 1e-12 * ((i * 7919) % 13 - 6.0);
+  // Not periodic (a sequence that repeats every 13 samples would be steady with a 13-period cycle).
+  std::mt19937 random(7919);
+  std::uniform_real_distribution<double> unit(-6.0, 6.0);
+  for (double& v : noise) v = 1e-12 * unit(random);
   const SteadyOperation alone = detect_steady_operation(s.time, {{"noise", &noise, 1}}, kPeriod);
   EXPECT_FALSE(alone.reached_at.has_value());
   const SteadyOperation together = detect_steady_operation(s.time, {{"x", &s.x, 1}, {"noise", &noise, 1}}, kPeriod);
