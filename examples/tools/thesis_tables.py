@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Thesis Tables IV and V: the tables of docs/validation.md P6 and C4, generated.
+"""Thesis Tables IV and V: the tables of docs/validation.md P6, C1 and C4, generated.
 
 Standard library only. Every number in the two tables comes from `framedyn run`
 on a study written here from a shipped file; nothing is typed by hand but the
@@ -25,7 +25,7 @@ thesis's own values (Tables IV and V, CMW2D/CMW3D columns).
       ValidationReport.P6TableIsWhatTheShippedMachineGives runs this).
 
   examples/tools/thesis_tables.py fits [--framedyn PATH] [--jobs N] CASE...
-      C4 (calibration): the bounded fit of each named case file
+      C1 and C4 (calibration): the bounded fit of each named case file
       (examples/thesis/CASE.yaml): targets, parameters with their moves,
       bounds and at_bound, independent targets, singular values, the largest
       miss and the fit status, from summary.json `rigid.calibration`. The
@@ -34,9 +34,11 @@ thesis's own values (Tables IV and V, CMW2D/CMW3D columns).
       depend on N.
 
   examples/tools/thesis_tables.py fits --check docs/validation.md
-      The same for the cases C4's generating command names, compared with
-      C4's table: exit status 1 and the differing rows if they differ (ctest
-      ValidationReport.C4TableIsWhatTheFitsGive runs this).
+      The same for the cases that C1's and C4's generating commands name
+      (`examples/tools/thesis_tables.py fits CASE...` in the section), each
+      compared with the table after its command: exit status 1 and the
+      differing rows if they differ (ctest
+      ValidationReport.FitTablesOfC1AndC4AreWhatTheFitsGive runs this).
 
 The framedyn binary defaults to build/apps/framedyn under the source tree.
 """
@@ -238,25 +240,36 @@ def check_p6(framedyn, work, doc):
 
 
 FITS_COMMAND = re.compile(r"`examples/tools/thesis_tables\.py fits ([a-z0-9_ ]+)`")
+FIT_SECTIONS = ("C1", "C4")
 
 
-def check_c4(framedyn, work, doc, jobs):
-    """C4's first table (the one its generating command names; the table after it,
-    before and after the frame's change, is prose about an earlier state and is not generated)."""
-    section = doc_section(doc, "C4")
-    text = " ".join(section)
-    command = FITS_COMMAND.search(text)
-    if not command:
-        raise SystemExit(f"{doc}, C4: no `examples/tools/thesis_tables.py fits CASE...` command names the table's cases")
-    cases = command.group(1).split()
-    first = next(i for i, l in enumerate(section) if l.startswith("|"))
-    documented = []
-    for l in section[first:]:
-        if not l.startswith("|"):
-            break
-        documented.append(l)
-    generated = [l for l in collect(lambda out: fits(framedyn, work, cases, jobs, out)) if l.startswith("|")]
-    return compare(doc, "C4", generated, documented, "examples/tools/thesis_tables.py fits " + " ".join(cases))
+def check_fits(framedyn, work, doc, jobs):
+    """In each of FIT_SECTIONS, the table that follows the section's generating command
+    (`examples/tools/thesis_tables.py fits CASE...`), against the fits of those cases. Other
+    tables of the sections (C1's hand-written one, C4's before-and-after) are not generated."""
+    wanted = []  # (section, cases, documented rows)
+    for number in FIT_SECTIONS:
+        section = doc_section(doc, number)
+        at = next((i for i, l in enumerate(section) if FITS_COMMAND.search(l)), None)
+        if at is None:
+            raise SystemExit(f"{doc}, {number}: no `examples/tools/thesis_tables.py fits CASE...` command names the table's cases")
+        cases = FITS_COMMAND.search(section[at]).group(1).split()
+        first = next(i for i in range(at, len(section)) if section[i].startswith("|"))
+        documented = []
+        for l in section[first:]:
+            if not l.startswith("|"):
+                break
+            documented.append(l)
+        wanted.append((number, cases, documented))
+    # Every case of every section at once (jobs at a time), then each section's rows.
+    all_cases = [c for _, cases, _ in wanted for c in cases]
+    rows = [l for l in collect(lambda out: fits(framedyn, work, all_cases, jobs, out)) if l.startswith("|")]
+    head, body = rows[:2], dict(zip(all_cases, rows[2:]))
+    status = 0
+    for number, cases, documented in wanted:
+        generated = head + [body[c] for c in cases]
+        status |= compare(doc, number, generated, documented, "examples/tools/thesis_tables.py fits " + " ".join(cases))
+    return status
 
 
 def main():
@@ -275,7 +288,7 @@ def main():
         if a.command == "predict":
             predict(a.framedyn, work)
         elif a.check:
-            return check_c4(a.framedyn, work, a.check, a.jobs)
+            return check_fits(a.framedyn, work, a.check, a.jobs)
         else:
             fits(a.framedyn, work, a.cases, a.jobs)
 
