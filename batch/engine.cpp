@@ -26,10 +26,6 @@
 
 namespace framedyn::batch {
 
-namespace {
-
-// A value from a run's summary by key path: {value, unit} objects give both;
-// a bare number has unit "1"; true/false are 1/0.
 bool summary_value(const nlohmann::ordered_json& summary, const std::string& path, double& value, std::string& unit, std::string& why) {
   const nlohmann::ordered_json* n = &summary;
   std::string here;  // the path so far
@@ -82,6 +78,8 @@ bool summary_value(const nlohmann::ordered_json& summary, const std::string& pat
   value = n->get<double>();
   return true;
 }
+
+namespace {
 
 // One line of a CSV row into cells (quotes as report::CsvTable writes them).
 std::vector<std::string> csv_cells(const std::string& line) {

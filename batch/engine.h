@@ -38,6 +38,12 @@ struct RunRecord {
 // The design's samples with each value rounded to the table's 10 significant digits.
 std::vector<std::vector<double>> design_samples(const BatchDesign& design);
 
+// A design's output from a run's summary, by key path (a design's `outputs`, Python's
+// batch(outputs=...)): {value, unit} objects give both, a bare number has unit "1",
+// true/false are 1/0. False, with `why` (e.g. "the run's summary has no frame.modes[3]"),
+// when the summary has no number there. `path` must be a key path (coupling::parse_key_path).
+bool summary_value(const nlohmann::ordered_json& summary, const std::string& path, double& value, std::string& unit, std::string& why);
+
 // Runs one sample in memory (with keep_folder: also writes that run's results folder).
 // `frame_cache`: the calling worker's frame models (coupling/frame_model_cache.h), built
 // once and reused by its later runs; the row is the same with or without it.

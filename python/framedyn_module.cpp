@@ -28,6 +28,7 @@
 #include "fem/modal_analysis.h"
 #include "fem/section_forces.h"
 #include "fem/static_analysis.h"
+#include "python/framedyn_errors.h"
 
 namespace py = pybind11;
 using framedyn::core::Quantity;
@@ -45,12 +46,7 @@ struct Mesh {
   std::optional<std::string> dialect;
 };
 
-// A keyword argument framedyn refuses (docs/errors.md, "Python module": PY-06,
-// PY-07): raised as framedyn.Error with key = the argument's name, file None.
-struct ArgumentError : std::runtime_error {
-  ArgumentError(std::string argument, const std::string& message) : std::runtime_error(argument + ": " + message), key(std::move(argument)) {}
-  std::string key;
-};
+using framedyn::python::ArgumentError;  // a refused keyword argument (python/framedyn_errors.h)
 
 // dialect= as the command line's --inp-dialect (PY-06 for another value).
 std::optional<fem::InpDialect> parse_dialect(const std::optional<std::string>& dialect) {

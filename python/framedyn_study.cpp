@@ -4,7 +4,8 @@
 // Study.run runs the document in memory (report::run_study_document, the call
 // behind `framedyn run`) and hands over summary.json's content as a dict and
 // the series of report::study_series as numpy arrays; batch runs a list of
-// parameter sets and tabulates report::summary_numbers. Runs release the GIL:
+// parameter sets and tabulates report::summary_numbers, or with outputs= the
+// design file's `outputs` (batch::summary_value, runs.csv's columns). Runs release the GIL:
 // each works on its own copy of the document.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -16,6 +17,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "core/error.h"
@@ -23,8 +26,10 @@
 #include "coupling/frame_model_cache.h"
 #include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
+#include "report/csv_writer.h"
 #include "report/study_run.h"
 #include "report/study_series.h"
+#include "python/framedyn_errors.h"
 
 namespace py = pybind11;
 namespace report = framedyn::report;
@@ -89,16 +94,34 @@ Results results_of(const report::StudyRun& run) {
 }
 
 // The document with the sample's values set, then run: the work of one row, without the GIL.
-report::StudyRun run_sample(const Study& s, const std::vector<std::pair<std::string, double>>& sample, coupling::FrameModelCache* models) {
+// With `outputs`, the run computes only what those summary paths read (as `framedyn batch`'s).
+report::StudyRun run_sample(const Study& s, const std::vector<std::pair<std::string, double>>& sample, coupling::FrameModelCache* models,
+                            const std::optional<std::vector<std::string>>& outputs) {
   YAML::Node doc = YAML::Clone(s.doc);
   for (const auto& [key, value] : sample) coupling::set_study_number(doc, key, value, s.file);
   report::StudyRunOptions o;
   o.frame_cache = models;
+  o.summary_outputs = outputs;
   return report::run_study_document(doc, s.file, o);
 }
 
-py::object batch(const Study& study, const std::vector<std::map<std::string, double>>& samples, int threads) {
+// outputs= as a design file's `outputs:` (BATCH-08 there): a non-empty list of key paths
+// into a run's summary (PY-08), each once (PY-09).
+void check_outputs(const std::vector<std::string>& outputs) {
+  using framedyn::python::ArgumentError;
+  if (outputs.empty())
+    throw ArgumentError("outputs", "expected a list of key paths into a run's summary (e.g. rigid.response.peak_cutting_force), found an empty list");
+  std::set<std::string> seen;
+  for (const std::string& o : outputs) {
+    if (!coupling::parse_key_path(o)) throw ArgumentError("outputs", std::string("expected ") + coupling::kKeyPathForm + " into a run's summary, found '" + o + "'");
+    if (!seen.insert(o).second) throw ArgumentError("outputs", "expected each output once, found '" + o + "' again");
+  }
+}
+
+py::object batch(const Study& study, const std::vector<std::map<std::string, double>>& samples, int threads,
+                 const std::optional<std::vector<std::string>>& outputs) {
   if (threads < 1) throw py::value_error("threads: expected at least 1, found " + std::to_string(threads));
+  if (outputs) check_outputs(*outputs);
   // Keys in the order of the first sample that names them (std::map: sorted within a sample).
   std::vector<std::string> keys;
   for (const auto& sample : samples)
@@ -113,14 +136,25 @@ py::object batch(const Study& study, const std::vector<std::map<std::string, dou
     py::gil_scoped_release release;
     framedyn::batch::run_on_threads(samples.size(), threads, true, [&](std::size_t i, coupling::FrameModelCache* models) {
       try {
-        const report::StudyRun run = run_sample(copy, {samples[i].begin(), samples[i].end()}, models);
-        numbers[i] = report::summary_numbers(run.summary);
+        const report::StudyRun run = run_sample(copy, {samples[i].begin(), samples[i].end()}, models, outputs);
+        if (!outputs) {
+          numbers[i] = report::summary_numbers(run.summary);
+          return;
+        }
+        for (const std::string& path : *outputs) {  // runs.csv's cells: absent from this run's summary, none (NaN)
+          report::SummaryNumber n;
+          std::string why;
+          n.path = path;
+          if (framedyn::batch::summary_value(run.summary, path, n.value, n.unit, why)) numbers[i].push_back(n);
+        }
       } catch (const std::exception& e) {  // a failed run is a row with its message; the batch goes on
         errors[i] = e.what();
       }
     });
   }
-  // Columns: the parameters, then every summary number any run has ("path [unit]"), NaN where a run has none.
+  // Columns: the parameters, then every summary number any run has ("path [unit]"), NaN where a run has none;
+  // with outputs, those in their order, named as runs.csv names them (report::column: the unit of the
+  // lowest-index run that gives the number, none for a bare number).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> columns;
   std::map<std::string, std::vector<double>> table;
@@ -129,7 +163,22 @@ py::object batch(const Study& study, const std::vector<std::map<std::string, dou
     std::vector<double>& col = table[k];
     for (const auto& sample : samples) col.push_back(sample.count(k) ? sample.at(k) : nan);
   }
-  for (std::size_t i = 0; i < samples.size(); ++i)
+  if (outputs) {
+    for (const std::string& path : *outputs) {
+      std::vector<double> col(samples.size(), nan);
+      std::string unit;
+      for (std::size_t i = 0; i < samples.size(); ++i)
+        for (const report::SummaryNumber& n : numbers[i])
+          if (n.path == path) {
+            col[i] = n.value;
+            if (unit.empty()) unit = n.unit;
+          }
+      const std::string name = report::column(path, unit);
+      columns.push_back(name);
+      table[name] = std::move(col);
+    }
+  }
+  for (std::size_t i = 0; i < samples.size() && !outputs; ++i)
     for (const report::SummaryNumber& n : numbers[i]) {
       const std::string name = n.unit.empty() ? n.path : n.path + " [" + n.unit + "]";
       auto [it, added] = table.try_emplace(name, std::vector<double>(samples.size(), nan));
@@ -191,7 +240,8 @@ void bind_studies(py::module_& m) {
         return s;
       },
       py::arg("path"), "Reads a study file (framedyn run's YAML)");
-  m.def("batch", &batch, py::arg("study"), py::arg("samples"), py::arg("threads") = 1,
+  m.def("batch", &batch, py::arg("study"), py::arg("samples"), py::arg("threads") = 1, py::arg("outputs") = py::none(),
         "Runs the study once per sample ({key path: value}) on `threads` threads of the batch engine (the same table whatever the count); a pandas DataFrame (a dict of arrays without pandas): the parameters, "
-        "every number of each run's summary ('path [unit]'), and 'error' (empty, or why the run failed)");
+        "every number of each run's summary ('path [unit]') or, with outputs=[key path, ...], those numbers only (a design file's `outputs:`, "
+        "named as runs.csv names them), and 'error' (empty, or why the run failed)");
 }

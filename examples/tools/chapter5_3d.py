@@ -1,13 +1,21 @@
 #!/usr/bin/env python3
 """Chapter V in 3-D: compare runs of `framedyn run` on rigid_3d studies.
 
-Standard library only (and gnuplot for `overlay`). Two commands:
+Standard library only (and gnuplot for `overlay`). Three commands:
 
   examples/tools/chapter5_3d.py ratios STRAIGHT OFFSET_PLOW CENTRED OFFSET_CHAIN
       The thesis's qualitative results 6-9 (../shared/docs/thesis-figures.md,
       "Qualitative results") as ratios measured on four results folders of
       examples/r100_plow_straight.yaml, r100_plow_offset.yaml,
       r100_chain_center.yaml, r100_chain_offset.yaml (docs/validation.md P2).
+
+  examples/tools/chapter5_3d.py check DOC [FRAMEDYN]
+      Runs the four studies (`framedyn run`, FRAMEDYN default
+      build/apps/framedyn) and compares every row of DOC's P2 table of results
+      6-9 (docs/validation.md) with the ratios measured: each cell is one
+      ratio, a list of them or the range (least-largest) of a group, to two
+      decimals. Exit status 1 and the differing rows if they differ (ctest
+      ValidationReport.P2RatiosAreWhatTheShippedMachineGives runs this).
 
   examples/tools/chapter5_3d.py overlay RUN_A RUN_B FIGURE OUT.png
       Draws one figure of two runs in one PNG (e.g. FIGURE =
@@ -25,6 +33,7 @@ plowing's rear pin and cylinder) are those of the first instant.
 """
 import csv
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -133,6 +142,94 @@ def ratios(*folders):
         print(f"| {r} | {what} | {v:.3g} | {w:.3g} | {thesis} |")
 
 
+STUDIES = ("r100_plow_straight.yaml", "r100_plow_offset.yaml", "r100_chain_center.yaml", "r100_chain_offset.yaml")
+IN_PLANE = [(p, c) for p, cs in (("P24_REEL", ("FX", "FZ", "MY")), ("P25_FRONT_AXLE_PIN", ("FX", "FZ", "MY")),
+                                 ("P26_REAR_AXLE_PIN", ("FX", "FZ", "MY")), ("P28_CAB_MOUNT_FL", ("FX", "FZ"))) for c in cs]
+
+
+def in_plane(name, leave_out=()):
+    against = "centred" if name == "chain" else "straight"
+    return [f"{name} offset/{against}: peak {p}.{c}" for p, c in IN_PLANE if (p, c) not in leave_out]
+
+
+def fy_fx(point):
+    return f"chain offset: peak {point}.FY / peak {point}.FX"
+
+
+def over_my(point, comp):
+    return f"chain offset: peak {point}.{comp} / peak {point}.MY"
+
+
+# docs/validation.md P2's rows (the `ratio` cell) -> how each cell is made from `measure`'s
+# lines: ("one", [line]), ("list", [lines]) or ("range", [lines]) (least-largest).
+P2_ROWS = {
+    "plow offset/straight, peaks of FX, FZ, MY at points 24, 25, 26 (FX, MY) and FX, FZ at mount 28":
+        ("range", in_plane("plow", [("P26_REAR_AXLE_PIN", "FZ")])),
+    "plow offset/straight, rear pin FZ alone": ("one", ["plow offset/straight: peak P26_REAR_AXLE_PIN.FZ"]),
+    "plow offset/straight, rear net vertical (P26 + P27 FZ)": ("one", ["plow offset/straight: peak rear net FZ (P26 + P27)"]),
+    "chain offset/centred, the same in-plane peaks (without P26 FZ)": ("range", in_plane("chain", [("P26_REAR_AXLE_PIN", "FZ")])),
+    "chain offset/centred, rear net vertical (P26 + P27 FZ)": ("one", ["chain offset/centred: peak rear net FZ (P26 + P27)"]),
+    "chain offset, front pin FY / FX": ("one", [fy_fx("P25_FRONT_AXLE_PIN")]),
+    "chain offset, cab mount FL FY / FX": ("one", [fy_fx("P28_CAB_MOUNT_FL")]),
+    "chain offset, rear pin FY / FX": ("one", [fy_fx("P26_REAR_AXLE_PIN")]),
+    "chain offset, reel FY / FX": ("one", [fy_fx("P24_REEL")]),
+    "chain offset, out-of-plane over in-plane moment: pins MZ / MY":
+        ("list", [over_my("P25_FRONT_AXLE_PIN", "MZ"), over_my("P26_REAR_AXLE_PIN", "MZ")]),
+    "chain offset, reel MX / MY, MZ / MY": ("list", [over_my("P24_REEL", "MX"), over_my("P24_REEL", "MZ")]),
+    "chain offset, pp roll θx / pp pitch θy": ("one", ["chain offset: pp roll theta_x / pp pitch theta_y"]),
+    "chain offset, pp pitch θy / pp yaw θz": ("one", ["chain offset: pp pitch theta_y / pp yaw theta_z"]),
+    "chain offset/centred, rear pin FZ": ("one", ["chain offset/centred: peak P26.FZ (rear pin)"]),
+    "chain offset, cylinder FZ / rear pin FZ": ("one", ["chain offset: peak P27.FZ / peak P26.FZ (cylinder over pin)"]),
+    "chain offset, right over left cab mounts, peak FZ": ("one", ["chain offset: right over left cab mounts, peak FZ"]),
+    "plow offset, pp yaw θz / pp pitch θy": ("one", ["plow offset: pp yaw theta_z / pp pitch theta_y"]),
+    "plow offset, pp yaw θz / pp roll θx": ("one", ["plow offset: pp yaw theta_z / pp roll theta_x"]),
+    "plow offset, cylinder FZ / rear pin FZ": ("one", ["plow offset: peak P27.FZ / peak P26.FZ (couple)"]),
+    "plow offset/straight, rear pin FZ": ("one", ["plow offset/straight: peak P26.FZ (rear pin)"]),
+}
+
+
+def cell(kind, values):
+    if kind == "range":
+        return f"{min(values):.2f}–{max(values):.2f}"
+    return ", ".join(f"{v:.2f}" for v in values)
+
+
+def check(doc, framedyn):
+    """P2's table of DOC against the ratios of fresh runs of the four studies; 0 if every row agrees."""
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with tempfile.TemporaryDirectory(prefix="chapter5_3d_") as work:
+        folders = []
+        for study in STUDIES:
+            folder = os.path.join(work, study[:-5])
+            subprocess.run([framedyn, "run", os.path.join(root, "examples", study), "-o", folder, "-q"], check=True,
+                           stdout=subprocess.DEVNULL)
+            folders.append(folder)
+        measured = [{what: v for _, what, v, _ in measure(folders, t0)} for t0 in (0.0, LATE)]
+    with open(doc) as f:
+        text = f.read()
+    start = text.index("\n## P2.")
+    section = text[start:text.index("\n## ", start + 1)].split("\n")
+    rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in section if re.match(r"\| [0-9]+ \|", l)]
+    bad, seen = [], set()
+    for row in rows:
+        ratio, documented = row[1], row[2:4]
+        if ratio not in P2_ROWS:
+            bad.append(f"  a row this check does not know: {ratio!r} (add it to P2_ROWS)")
+            continue
+        seen.add(ratio)
+        kind, lines = P2_ROWS[ratio]
+        generated = [cell(kind, [m[line] for line in lines]) for m in measured]
+        if generated != documented:
+            bad.append(f"  {ratio}: document {' | '.join(documented)}, measured {' | '.join(generated)}")
+    bad += [f"  no row {r!r} in the document" for r in P2_ROWS if r not in seen]
+    if not bad:
+        print(f"P2 table of {doc}: {len(rows)} rows as measured")
+        return 0
+    print(f"P2 table of {doc} differs from what the shipped machine gives (examples/tools/chapter5_3d.py ratios):")
+    print("\n".join(bad))
+    return 1
+
+
 def overlay(run_a, run_b, figure, png):
     a, b = (read_csv(os.path.join(r, figure + ".csv")) for r in (run_a, run_b))
     with tempfile.TemporaryDirectory() as tmp:
@@ -157,6 +254,9 @@ def overlay(run_a, run_b, figure, png):
 if __name__ == "__main__":
     if len(sys.argv) == 6 and sys.argv[1] == "ratios":
         ratios(*sys.argv[2:])
+    elif len(sys.argv) in (3, 4) and sys.argv[1] == "check":
+        default = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "build", "apps", "framedyn")
+        sys.exit(check(sys.argv[2], sys.argv[3] if len(sys.argv) == 4 else default))
     elif len(sys.argv) == 6 and sys.argv[1] == "overlay":
         overlay(*sys.argv[2:])
     else:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Thesis Tables IV and V: the tables of docs/validation.md P6 and C4, generated.
+"""Thesis Tables IV and V: the tables of docs/validation.md P6, C1 and C4, generated.
 
 Standard library only. Every number in the two tables comes from `framedyn run`
 on a study written here from a shipped file; nothing is typed by hand but the
@@ -24,15 +24,26 @@ thesis's own values (Tables IV and V, CMW2D/CMW3D columns).
       status 1 and the differing rows if they differ (ctest
       ValidationReport.P6TableIsWhatTheShippedMachineGives runs this).
 
-  examples/tools/thesis_tables.py fits [--framedyn PATH] CASE...
-      C4 (calibration): the bounded fit of each named case file
+  examples/tools/thesis_tables.py fits [--framedyn PATH] [--jobs N] CASE...
+      C1 and C4 (calibration): the bounded fit of each named case file
       (examples/thesis/CASE.yaml): targets, parameters with their moves,
       bounds and at_bound, independent targets, singular values, the largest
-      miss and the fit status, from summary.json `rigid.calibration`.
+      miss and the fit status, from summary.json `rigid.calibration`. The
+      cases run as N separate `framedyn run` processes at a time (default:
+      one per core); each is a run of its own file, so the table does not
+      depend on N.
+
+  examples/tools/thesis_tables.py fits --check docs/validation.md
+      The same for the cases that C1's and C4's generating commands name
+      (`examples/tools/thesis_tables.py fits CASE...` in the section), each
+      compared with the table after its command: exit status 1 and the
+      differing rows if they differ (ctest
+      ValidationReport.FitTablesOfC1AndC4AreWhatTheFitsGive runs this).
 
 The framedyn binary defaults to build/apps/framedyn under the source tree.
 """
 import argparse
+import concurrent.futures
 import csv
 import json
 import os
@@ -164,15 +175,24 @@ def predict(framedyn, work, out=print):
         print("- " + n)
 
 
-def fits(framedyn, work, cases):
+def run_fit(framedyn, work, case):
+    """`framedyn run examples/thesis/CASE.yaml`: its summary.json `rigid.calibration`."""
+    folder = os.path.join(work, "fit_" + case)
+    subprocess.run([framedyn, "run", os.path.join(ROOT, "examples", "thesis", case + ".yaml"), "-o", folder, "-q"],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(folder, "summary.json")) as f:
+        return json.load(f)["rigid"]["calibration"]
+
+
+def fits(framedyn, work, cases, jobs=None, out=print):
+    print = out  # noqa: A001 (the table goes to `out`)
+    # One process per case, `jobs` at a time: the runs share nothing, and the
+    # rows are printed in the order of `cases` whatever order they finish in.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs or os.cpu_count() or 1) as pool:
+        calibrations = list(pool.map(lambda case: run_fit(framedyn, work, case), cases))
     print("| case | t / i / p | targets: table -> model (label, miss) | parameters: nominal -> fitted (ratio, bounds, at bound) | largest miss | s | status, iterations | labels |")
     print("|---|---|---|---|---|---|---|---|")
-    for case in cases:
-        folder = os.path.join(work, "fit_" + case)
-        subprocess.run([framedyn, "run", os.path.join(ROOT, "examples", "thesis", case + ".yaml"), "-o", folder, "-q"],
-                       check=True, stdout=subprocess.DEVNULL)
-        with open(os.path.join(folder, "summary.json")) as f:
-            c = json.load(f)["rigid"]["calibration"]
+    for case, c in zip(cases, calibrations):
         ts = "; ".join(f"{t['frequency']['value']:.3f} {t['dominant']} -> {t['achieved']['value']:.3f} {t['achieved_dominant']} "
                        f"({100 * (t['achieved']['value'] - t['frequency']['value']) / t['frequency']['value']:+.1f} %)"
                        for t in c["targets"])
@@ -185,25 +205,71 @@ def fits(framedyn, work, cases):
               f"{' (limit)' if c['iteration_limit_reached'] else ''} | {labels}/{len(c['targets'])} |")
 
 
-def check_p6(framedyn, work, doc):
-    lines = []
-    predict(framedyn, work, lambda *args: lines.append(" ".join(str(x) for x in args)))
-    generated = [l for l in lines if l.startswith("| ") or l.startswith("Values within")]
+def doc_section(doc, number):
+    """The lines of section NUMBER (e.g. "P6") of DOC, up to the next heading of its level or above."""
     with open(doc) as f:
         text = f.read()
-    start = text.index("\n## P6.")
-    end = text.find("\n## ", start + 1)
-    section = text[start:end if end >= 0 else len(text)].split("\n")
-    documented = [l.strip("*") for l in section if l.startswith("| ") or l.startswith("**Values within")]
+    start = text.index(f"\n## {number}.")
+    end = min((i for i in (text.find("\n## ", start + 1), text.find("\n# ", start + 1)) if i >= 0), default=len(text))
+    return text[start:end].split("\n")
+
+
+def compare(doc, number, generated, documented, regenerate):
     if generated == documented:
-        print(f"P6 table of {doc}: {len(generated) - 2} rows as generated")
+        print(f"{number} table of {doc}: {len(generated) - 2} rows as generated")
         return 0
-    print(f"P6 table of {doc} differs from what the shipped machine gives (regenerate with "
-          f"examples/tools/thesis_tables.py predict):")
+    print(f"{number} table of {doc} differs from what framedyn gives (regenerate with {regenerate}):")
     for g, d in zip(generated + [""] * len(documented), documented + [""] * len(generated)):
         if g != d:
             print(f"  document:  {d}\n  generated: {g}")
     return 1
+
+
+def collect(fill):
+    lines = []
+    fill(lambda *args: lines.append(" ".join(str(x) for x in args)))
+    return lines
+
+
+def check_p6(framedyn, work, doc):
+    lines = collect(lambda out: predict(framedyn, work, out))
+    generated = [l for l in lines if l.startswith("| ") or l.startswith("Values within")]
+    section = doc_section(doc, "P6")
+    documented = [l.strip("*") for l in section if l.startswith("| ") or l.startswith("**Values within")]
+    return compare(doc, "P6", generated, documented, "examples/tools/thesis_tables.py predict")
+
+
+FITS_COMMAND = re.compile(r"`examples/tools/thesis_tables\.py fits ([a-z0-9_ ]+)`")
+FIT_SECTIONS = ("C1", "C4")
+
+
+def check_fits(framedyn, work, doc, jobs):
+    """In each of FIT_SECTIONS, the table that follows the section's generating command
+    (`examples/tools/thesis_tables.py fits CASE...`), against the fits of those cases. Other
+    tables of the sections (C1's hand-written one, C4's before-and-after) are not generated."""
+    wanted = []  # (section, cases, documented rows)
+    for number in FIT_SECTIONS:
+        section = doc_section(doc, number)
+        at = next((i for i, l in enumerate(section) if FITS_COMMAND.search(l)), None)
+        if at is None:
+            raise SystemExit(f"{doc}, {number}: no `examples/tools/thesis_tables.py fits CASE...` command names the table's cases")
+        cases = FITS_COMMAND.search(section[at]).group(1).split()
+        first = next(i for i in range(at, len(section)) if section[i].startswith("|"))
+        documented = []
+        for l in section[first:]:
+            if not l.startswith("|"):
+                break
+            documented.append(l)
+        wanted.append((number, cases, documented))
+    # Every case of every section at once (jobs at a time), then each section's rows.
+    all_cases = [c for _, cases, _ in wanted for c in cases]
+    rows = [l for l in collect(lambda out: fits(framedyn, work, all_cases, jobs, out)) if l.startswith("|")]
+    head, body = rows[:2], dict(zip(all_cases, rows[2:]))
+    status = 0
+    for number, cases, documented in wanted:
+        generated = head + [body[c] for c in cases]
+        status |= compare(doc, number, generated, documented, "examples/tools/thesis_tables.py fits " + " ".join(cases))
+    return status
 
 
 def main():
@@ -211,15 +277,20 @@ def main():
     ap.add_argument("command", choices=["predict", "fits"])
     ap.add_argument("cases", nargs="*")
     ap.add_argument("--framedyn", default=os.path.join(ROOT, "build", "apps", "framedyn"))
-    ap.add_argument("--check", metavar="DOC", help="predict: compare with the P6 table of DOC")
+    ap.add_argument("--check", metavar="DOC", help="compare with DOC's P6 (predict) or C4 (fits) table")
+    ap.add_argument("--jobs", type=int, default=None, help="fits: cases run at a time (default: one per core)")
     a = ap.parse_args()
+    if a.command == "fits" and not a.check and not a.cases:
+        ap.error("fits: name the cases (examples/thesis/CASE.yaml), or --check DOC")
     with tempfile.TemporaryDirectory(prefix="thesis_tables_") as work:
         if a.command == "predict" and a.check:
             return check_p6(a.framedyn, work, a.check)
         if a.command == "predict":
             predict(a.framedyn, work)
+        elif a.check:
+            return check_fits(a.framedyn, work, a.check, a.jobs)
         else:
-            fits(a.framedyn, work, a.cases)
+            fits(a.framedyn, work, a.cases, a.jobs)
 
 
 if __name__ == "__main__":

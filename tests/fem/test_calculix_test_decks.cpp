@@ -219,6 +219,25 @@ double timoshenko_lower_bound(double euler_bernoulli, double beta_l, double gyra
   return euler_bernoulli * (1.0 - x * x * (1.0 + e / (0.4 * g)));
 }
 
+// A cantilever's bending pairs (modes 1-2, 3-4, ... of a section with equal
+// bending inertias): each of framedyn's frequencies f[i] below Euler-Bernoulli
+// (beta_l[i / 2]), above timoshenko_lower_bound, and within `tolerance` of
+// CalculiX's ref[i]. The section: E, G, density, area and inertia; length L.
+struct CantileverSection {
+  double e, g, rho, area, inertia, length;
+};
+void expect_bending_pairs_between_bounds_and_near_reference(const std::vector<double>& f, const std::vector<double>& ref,
+                                                            const std::vector<double>& beta_l,
+                                                            const CantileverSection& s, double tolerance) {
+  for (std::size_t i = 0; i < 2 * beta_l.size(); ++i) {
+    const double bl = beta_l[i / 2];
+    const double eb = bl * bl / (2.0 * kPi * s.length * s.length) * std::sqrt(s.e * s.inertia / (s.rho * s.area));
+    EXPECT_LT(f[i], eb) << "mode " << i + 1;
+    EXPECT_GT(f[i], timoshenko_lower_bound(eb, bl, std::sqrt(s.inertia / s.area), s.length, s.e, s.g)) << "mode " << i + 1;
+    EXPECT_LT(relative(ref[i], f[i]), tolerance) << "mode " << i + 1 << ": CalculiX " << ref[i] << ", framedyn " << f[i];
+  }
+}
+
 class CalculixTestDecks : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -232,6 +251,19 @@ class CalculixTestDecks : public ::testing::Test {
     const auto r = framedyn::testing::framedyn(
         dir, command + " " + framedyn::testing::quote((deck_dir() / (deck + ".inp")).string()) + " --units m-N-s --out out " + args);
     ASSERT_EQ(r.status, 0) << deck << ": " << r.err;
+  }
+  // `framedyn modes DECK.inp --modes count`: framedyn's frequencies and the reference's, in Hz,
+  // each checked to be `count` long.
+  struct Frequencies {
+    std::vector<double> framedyn, calculix;
+  };
+  Frequencies modes_and_reference(const std::string& deck, std::size_t count) {
+    TempDir dir("ccx_" + deck);
+    run(dir, "modes", deck, "--modes " + std::to_string(count));
+    Frequencies r{framedyn_frequencies(dir / "out/modes.csv"), reference_frequencies(reference_text(deck))};
+    EXPECT_EQ(r.framedyn.size(), count) << deck << ": framedyn's modes";
+    EXPECT_EQ(r.calculix.size(), count) << deck << ": the reference's modes";
+    return r;
   }
 };
 
@@ -357,21 +389,12 @@ TEST_F(CalculixTestDecks, PipeCantileverDeflectionsEqualTimoshenkoAndTheReferenc
 // 0.89 %, 0.54 % below framedyn (its pipe is more flexible, as in pipe1;
 // docs/calculix_peer.md): tolerance 1.5 %. Both copies of each pair.
 TEST_F(CalculixTestDecks, PipeCantileverBendingPairsLieBelowEulerBernoulliAndNearTheReference) {
-  TempDir dir("ccx_simplebeampipe3");
-  run(dir, "modes", "simplebeampipe3", "--modes 6");
-  const auto f = framedyn_frequencies(dir / "out/modes.csv");
-  const auto ref = reference_frequencies(reference_text("simplebeampipe3"));
-  ASSERT_EQ(f.size(), 6u);
-  ASSERT_EQ(ref.size(), 6u);
+  const auto [f, ref] = modes_and_reference("simplebeampipe3", 6);
+  ASSERT_FALSE(HasFailure());
   const double ro = 0.11, ri = 0.10, e = 1e7, rho = 7.8e-9, length = 10.0;
   const double area = kPi * (ro * ro - ri * ri), inertia = kPi * (std::pow(ro, 4) - std::pow(ri, 4)) / 4.0;
-  const std::array<double, 3> beta_l = {1.875104069, 4.694091133, 7.854757438};
-  for (int i = 0; i < 6; ++i) {
-    const double eb = beta_l[i / 2] * beta_l[i / 2] / (2.0 * kPi * length * length) * std::sqrt(e * inertia / (rho * area));
-    EXPECT_LT(f[i], eb) << "mode " << i + 1;
-    EXPECT_GT(f[i], timoshenko_lower_bound(eb, beta_l[i / 2], std::sqrt(inertia / area), length, e, e / 2.6)) << "mode " << i + 1;
-    EXPECT_LT(relative(ref[i], f[i]), 0.015) << "mode " << i + 1 << ": CalculiX " << ref[i] << ", framedyn " << f[i];
-  }
+  expect_bending_pairs_between_bounds_and_near_reference(f, ref, {1.875104069, 4.694091133, 7.854757438},
+                                                         {e, e / 2.6, rho, area, inertia, length}, 0.015);
 }
 
 // simplebeampipe4: the pipe cantilever under a unit torque at z = 0. The
@@ -411,22 +434,12 @@ TEST_F(CalculixTestDecks, PipeUnderTipTorqueCarriesTheTorqueOfStaticsInFramedynA
 // torsion its one-brick expansions show on rectangles
 // (docs/calculix_peer.md): that mode is not compared with the reference.
 TEST_F(CalculixTestDecks, BoxCantileverBendingPairsMatchTheReferenceAndTorsionBredtsClosedForm) {
-  TempDir dir("ccx_boxprofile");
-  run(dir, "modes", "boxprofile", "--modes 5");
-  const auto f = framedyn_frequencies(dir / "out/modes.csv");
-  const auto ref = reference_frequencies(reference_text("boxprofile"));
-  ASSERT_EQ(f.size(), 5u);
-  ASSERT_EQ(ref.size(), 5u);
+  const auto [f, ref] = modes_and_reference("boxprofile", 5);
+  ASSERT_FALSE(HasFailure());
   const double b = 50.0, t = 3.0, e = 70000.0, nu = 0.3, rho = 7.85e-9, length = 1000.0;
   const double area = b * b - (b - 2 * t) * (b - 2 * t), inertia = (std::pow(b, 4) - std::pow(b - 2 * t, 4)) / 12.0;
-  const std::array<double, 2> beta_l = {1.875104069, 4.694091133};
-  for (int i = 0; i < 4; ++i) {
-    const double eb = beta_l[i / 2] * beta_l[i / 2] / (2.0 * kPi * length * length) * std::sqrt(e * inertia / (rho * area));
-    EXPECT_LT(f[i], eb) << "mode " << i + 1;
-    EXPECT_GT(f[i], timoshenko_lower_bound(eb, beta_l[i / 2], std::sqrt(inertia / area), length, e, e / (2.0 * (1.0 + nu))))
-        << "mode " << i + 1;
-    EXPECT_LT(relative(ref[i], f[i]), 0.015) << "mode " << i + 1 << ": CalculiX " << ref[i] << ", framedyn " << f[i];
-  }
+  expect_bending_pairs_between_bounds_and_near_reference(
+      f, ref, {1.875104069, 4.694091133}, {e, e / (2.0 * (1.0 + nu)), rho, area, inertia, length}, 0.015);
   const double side = b - t, j_bredt = 4.0 * std::pow(side * side, 2) * t / (4.0 * side);
   const double g = e / (2.0 * (1.0 + nu)), torsion = std::sqrt(g * j_bredt / (rho * 2.0 * inertia)) / (4.0 * length);
   EXPECT_LT(relative(f[4], torsion), 1e-4) << "framedyn " << f[4] << ", Bredt " << torsion;

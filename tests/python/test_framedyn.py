@@ -308,6 +308,44 @@ def test_batch_on_two_threads_gives_the_serial_table(tmp_path):
         framedyn.batch(study, samples, threads=0)
 
 
+BATCH_OUTPUTS = ["rigid.response.peak_cutting_force", "rigid.modes[0].frequency", "rigid.response.steps",
+                 "rigid.modes[99].frequency"]  # the last is in no run's summary (the 2-D plow has 6 modes)
+
+
+def test_batch_outputs_are_the_columns_and_numbers_of_the_command_lines_runs_csv(tmp_path):
+    # outputs= is a design file's `outputs:`: the same design run by `framedyn batch` and by
+    # framedyn.batch gives the same output columns in the same order, named alike, and the
+    # same numbers (runs.csv prints 10 significant digits, core/number_text); a number no run's
+    # summary has is an empty cell there and NaN here.
+    short_copy(tmp_path)
+    damping = (150, 300, 450)
+    (tmp_path / "design.yaml").write_text(
+        "framedyn_batch: 1\nstudy: study.yaml\nsampling: {method: grid}\nparameters:\n"
+        "  - {key: soil.damping, values: [%s]}\noutputs:\n%s" % (", ".join(str(d) for d in damping),
+                                                                   "".join("  - %s\n" % o for o in BATCH_OUTPUTS)))
+    run = run_cli("batch", "design.yaml", "--out", "out", "-q", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    header, rows = read_csv(tmp_path / "out" / "runs.csv")
+    printed = header[2:2 + len(BATCH_OUTPUTS)]
+    assert [h.split(" [")[0] for h in printed] == BATCH_OUTPUTS and header[2 + len(BATCH_OUTPUTS)] == "status"
+    table = framedyn.batch(framedyn.load_study(str(tmp_path / "study.yaml")), [{"soil.damping": d} for d in damping],
+                           threads=2, outputs=BATCH_OUTPUTS)
+    assert list(table.keys()) == ["soil.damping"] + printed + ["error"]
+    assert list(table["error"]) == ["", "", ""] and [r[-2] for r in rows] == ["done"] * 3
+    for column, name in enumerate(printed):
+        cells = [r[2 + column] for r in rows]
+        values = list(table[name])
+        assert ["" if math.isnan(v) else ("0" if v == 0 else "%.10g" % v) for v in values] == cells, name
+    assert all(math.isnan(v) for v in table["rigid.modes[99].frequency"])
+    assert len(set(table["rigid.response.peak_cutting_force [lbf]"])) == 3  # the samples differ
+    # The numbers are those of each run's whole summary (outputs= only saves work).
+    single = framedyn.load_study(str(tmp_path / "study.yaml"))
+    single.set("soil.damping", 300)
+    summary = single.run().summary["rigid"]
+    assert table["rigid.response.peak_cutting_force [lbf]"][1] == summary["response"]["peak_cutting_force"]["value"]
+    assert table["rigid.modes[0].frequency [Hz]"][1] == summary["modes"][0]["frequency"]["value"]
+
+
 def test_the_example_script_runs_and_writes_its_figure(tmp_path):
     out = tmp_path / "offset_plowing.png"
     run = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "examples", "python", "offset_plowing.py"),
@@ -340,17 +378,21 @@ def python_error_rows():
     return rows
 
 
-# The keyword arguments' rows: each call on the CIRC cantilever saved as frame.inp; the error names
-# the argument (key) and no file (the file is not at fault).
-DIALECT_ERROR_CASES = {
-    "PY-06": lambda: framedyn.read_mesh("frame.inp", dialect="nastran"),
-    "PY-07": lambda: framedyn.modes(framedyn.read_mesh("frame.inp", dialect="abaqus"), 2, dialect="calculix"),
+# The keyword arguments' rows: each call on the CIRC cantilever saved as frame.inp or on study.yaml;
+# the error names the argument (key) and no file (the file is not at fault).
+ARGUMENT_ERROR_CASES = {
+    "PY-06": ("dialect", lambda: framedyn.read_mesh("frame.inp", dialect="nastran")),
+    "PY-07": ("dialect", lambda: framedyn.modes(framedyn.read_mesh("frame.inp", dialect="abaqus"), 2, dialect="calculix")),
+    "PY-08": ("outputs", lambda: framedyn.batch(framedyn.load_study("study.yaml"), [{"soil.damping": 300}],
+                                                outputs=["rigid..response"])),
+    "PY-09": ("outputs", lambda: framedyn.batch(framedyn.load_study("study.yaml"), [{"soil.damping": 300}],
+                                                outputs=["rigid.response.steps", "rigid.response.steps"])),
 }
 
 
 def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
     rows = python_error_rows()
-    assert sorted(rows) == sorted(list(ERROR_CASES) + list(DIALECT_ERROR_CASES))
+    assert sorted(rows) == sorted(list(ERROR_CASES) + list(ARGUMENT_ERROR_CASES))
     monkeypatch.chdir(tmp_path)
     short_copy(tmp_path)
     for error_id, case in ERROR_CASES.items():
@@ -360,11 +402,11 @@ def test_the_error_table_rows_of_the_python_module(tmp_path, monkeypatch):
         assert str(caught.value) == rows[error_id], error_id
         assert caught.value.file == "study.yaml" and caught.value.key
     (tmp_path / "frame.inp").write_text(circ_cantilever_text())
-    for error_id, case in DIALECT_ERROR_CASES.items():
+    for error_id, (argument, case) in ARGUMENT_ERROR_CASES.items():
         with pytest.raises(framedyn.Error) as caught:
             case()
         assert str(caught.value) == rows[error_id], error_id
-        assert caught.value.file is None and caught.value.key == "dialect" and isinstance(caught.value, RuntimeError)
+        assert caught.value.file is None and caught.value.key == argument and isinstance(caught.value, RuntimeError)
 
 
 # ------------------------------------------------------------------ 3-D tire forces (issue 20)

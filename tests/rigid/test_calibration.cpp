@@ -19,6 +19,7 @@
 #include "rigid/rigid_modes.h"
 #include "rigid/vehicle_model.h"
 #include "tests/support/calibration_checks.h"
+#include "tests/support/edited_example.h"
 #include "tests/support/temp_dir.h"
 
 namespace framedyn {
@@ -579,18 +580,9 @@ TEST(BodySize, FittedMassThatTakesAStatedInertiaOutOfItsBoxIsWarnedOf) {
 // A shipped 2-D study (`example`, under examples/) with every (from, to) edit
 // applied in order (each `from` must be there), read.
 coupling::RigidStudy edited_study(const std::string& example, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR "/examples/") + example);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  for (const auto& [from, to] : edits) {
-    const std::size_t at = s.find(from);
-    if (at == std::string::npos) throw std::runtime_error("test edit: '" + from + "' not in " + example);
-    s.replace(at, from.size(), to);
-  }
   static framedyn::testing::TempDir dir("framedyn_body_size_2d");
   const std::string file = (dir / "variant.yaml").string();
-  std::ofstream(file) << s;
+  std::ofstream(file) << framedyn::testing::edited_example_text(example, edits);
   return coupling::read_rigid_study(file);
 }
 
@@ -600,10 +592,7 @@ coupling::RigidStudy case1_with_cab(const std::string& k, const std::string& ext
   std::vector<std::pair<std::string, std::string>> edits{
       {"  radius_of_gyration: 16\n  position: [36, 32]\n", "  radius_of_gyration: " + k + "\n  position: [36, 32]\n" + extra}};
   if (calibration != "keep") {
-    std::ifstream in(FRAMEDYN_SOURCE_DIR "/examples/thesis/case1.yaml");
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string s = text.str();
+    const std::string s = framedyn::testing::example_text("thesis/case1.yaml");
     const std::size_t a = s.find("\ncalibration:"), b = s.find("\nanalysis:");
     edits.emplace_back(s.substr(a + 1, b - a), calibration);
   }

@@ -47,6 +47,7 @@
 #include "rigid/time_integration.h"
 #include "rigid/vehicle_model.h"
 #include "rigid/vehicle_run.h"
+#include "tests/support/edited_example.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -199,24 +200,12 @@ constexpr double kNewtonsPerPound = 4.4482216152605;
 // written to `dir`; returns its path.
 std::string shipped_variant(const framedyn::testing::TempDir& dir, const std::string& example,
                             const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/" + example);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
-  for (const auto& [from, to] : edits) {
-    const std::size_t at = s.find(from);
-    if (at == std::string::npos) throw std::runtime_error("test edit: '" + from + "' not in " + example);
-    s.replace(at, from.size(), to);
-  }
-  return dir.write("variant.yaml", s).string();
+  return dir.write("variant.yaml", framedyn::testing::edited_example_text(example, edits)).string();
 }
 
 // Removes a top-level block (its key line and every indented line after it).
 std::pair<std::string, std::string> drop_block(const std::string& example, const std::string& key) {
-  std::ifstream in(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/" + example);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+  const std::string s = framedyn::testing::example_text(example);
   const std::size_t a = s.find("\n" + key + ":");
   if (a == std::string::npos) throw std::runtime_error("no block " + key + " in " + example);
   std::size_t b = s.find('\n', a + 1);

@@ -74,11 +74,17 @@ def run_pipeline(framedyn, work, key, example, replacements=()):
     folder = os.path.join(work, key)
     with open(folder + ".yaml", "w") as f:
         f.write(text)
+    return run_framedyn(framedyn, "run", folder)
+
+
+def run_framedyn(framedyn, command, folder):
+    """`framedyn COMMAND FOLDER.yaml --out FOLDER` (an earlier results folder removed first, or kept
+    with FIG25_REUSE=1 if it is complete); returns the results folder."""
     if os.path.exists(folder):
         if REUSE and os.path.exists(os.path.join(folder, "summary.json")):
             return folder
         shutil.rmtree(folder)
-    subprocess.run([framedyn, "run", folder + ".yaml", "--out", folder, "-q"], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([framedyn, command, folder + ".yaml", "--out", folder, "-q"], check=True, stdout=subprocess.DEVNULL)
     return folder
 
 
@@ -144,12 +150,7 @@ frame:
     left_rail: {{element_set: LEFT_RAIL}}
     right_rail: {{element_set: RIGHT_RAIL}}
 """)
-    if os.path.exists(folder):
-        if REUSE and os.path.exists(os.path.join(folder, "summary.json")):
-            return folder
-        shutil.rmtree(folder)
-    subprocess.run([framedyn, "frame-response", folder + ".yaml", "--out", folder, "-q"], check=True, stdout=subprocess.DEVNULL)
-    return folder
+    return run_framedyn(framedyn, "frame-response", folder)
 
 
 # ---------------------------------------------------------------- reading the rails
