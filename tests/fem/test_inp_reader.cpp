@@ -749,7 +749,7 @@ TEST(InpReader, IncludedFileMayCarryTheUnitsComment) {
 
 TEST(InpReader, FrequencyStepGivesRequestedModes) {
   const FrameModel m = read(kModel +
-                            "*STEP, NAME=modal, PERTURBATION\n"
+                            "*STEP, NAME=modal, PERTURBATION, INC=100\n"  // INC: read and ignored
                             "*FREQUENCY, SOLVER=LANCZOS, STORAGE=YES\n"
                             "12\n"
                             "*NODE PRINT, NSET=ALL\n"
