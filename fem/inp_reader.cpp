@@ -1072,7 +1072,9 @@ void Parser::step_keyword(const Block& b) {
   const std::string& k = b.keyword.name;
   if (k == "*STEP") {
     refuse_nonlinear_step(b.keyword);
-    check_params(b.keyword, {"NAME", "PERTURBATION", "NLGEOM"});  // NLGEOM=NO only, see refuse_nonlinear_step
+    // INC (the most increments the step may take) is ignored: framedyn's linear steps
+    // take one increment, its transient steps period / increment.
+    check_params(b.keyword, {"NAME", "PERTURBATION", "NLGEOM", "INC"});  // NLGEOM=NO only, see refuse_nonlinear_step
     if (in_step_) throw InputError(b.keyword.where, "*END STEP before the next *STEP", "*STEP");
     ++steps_;
     in_step_ = true;

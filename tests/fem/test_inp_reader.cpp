@@ -749,7 +749,7 @@ TEST(InpReader, IncludedFileMayCarryTheUnitsComment) {
 
 TEST(InpReader, FrequencyStepGivesRequestedModes) {
   const FrameModel m = read(kModel +
-                            "*STEP, NAME=modal, PERTURBATION\n"
+                            "*STEP, NAME=modal, PERTURBATION, INC=100\n"  // INC: read and ignored
                             "*FREQUENCY, SOLVER=LANCZOS, STORAGE=YES\n"
                             "12\n"
                             "*NODE PRINT, NSET=ALL\n"
@@ -1228,7 +1228,7 @@ std::vector<ErrorCase> error_cases() {
       {"StepWithoutEndStep", kModel + "*STEP, NAME=ONLY\n*STATIC\n*CLOAD\n3, 2, 1\n", "*STEP, NAME=ONLY", "*STEP", {"expected *END STEP at the end of the step", "found end of file"}},
       {"EndStepWithoutStep", kModel + "*END STEP\n", "*END STEP", "*END STEP", {"expected a *STEP before *END STEP"}},
       {"EndStepWithParameter", kModel + "*STEP\n*END STEP, NAME=X\n", "*END STEP, NAME=X", "*END STEP", {"expected no parameters", "found parameter NAME"}},
-      {"StepWithUnknownParameter", kModel + "*STEP, INC=100\n*STATIC\n*END STEP\n", "*STEP, INC=100", "*STEP", {"one of the parameters NAME, PERTURBATION, NLGEOM", "found parameter INC"}},
+      {"StepWithUnknownParameter", kModel + "*STEP, UNSYMM=YES\n*STATIC\n*END STEP\n", "*STEP, UNSYMM=YES", "*STEP", {"one of the parameters NAME, PERTURBATION, NLGEOM, INC", "found parameter UNSYMM"}},
       {"StepWithNlgeom", kModel + "*STEP, NLGEOM\n*STATIC\n*END STEP\n", "*STEP, NLGEOM", "*STEP", {"expected a linear step (framedyn is a linear, small-displacement code", "found NLGEOM"}},
       {"StepWithNlgeomYes", kModel + "*STEP, NLGEOM=YES\n*STATIC\n*END STEP\n", "*STEP, NLGEOM=YES", "*STEP", {"expected a linear step", "found NLGEOM=YES"}},
       {"FrequencyOutsideStep", kModel + "*FREQUENCY\n10\n", "*FREQUENCY", "*FREQUENCY", {"expected *FREQUENCY inside a *STEP", "found it outside"}},

@@ -172,7 +172,8 @@ std::string include_name(const fs::path& model, const fs::path& workdir) {
 // `step` is the text between *STEP and *END STEP; `model_extra` goes between
 // the *INCLUDE and *STEP (model data such as an output node set).
 fs::path write_deck(const std::string& model_inp_path, const std::string& workdir_text,
-                    const std::string& model_extra, const std::string& step) {
+                    const std::string& model_extra, const std::string& step,
+                    const std::string& step_keyword = "*STEP") {
   if (!fs::is_regular_file(model_inp_path)) {
     throw std::invalid_argument("CalculiX peer: model file '" + model_inp_path +
                                 "' does not exist or is not a regular file");
@@ -188,7 +189,7 @@ fs::path write_deck(const std::string& model_inp_path, const std::string& workdi
   std::ofstream deck(workdir / (std::string(kJobName) + ".inp"));
   deck << "** framedyn peer run, written by tests/support/calculix.cpp\n"
        << "*INCLUDE, INPUT=" << include_name(model, workdir) << "\n"
-       << model_extra << "*STEP\n"
+       << model_extra << step_keyword << "\n"
        << step << "*END STEP\n";
   deck.close();
   if (!deck) throw std::runtime_error("CalculiX peer: cannot write job.inp in " + workdir.string());
@@ -334,6 +335,26 @@ std::vector<std::map<int, std::array<double, 3>>> parse_displacement_blocks(cons
   return blocks;
 }
 
+// Every "displacements (vx,vy,vz) for set <set> and time <t>" block of a
+// transient step, in the order of the file, with its time.
+std::pair<std::vector<double>, std::vector<std::map<int, std::array<double, 3>>>> parse_displacement_history(const std::string& dat,
+                                                                                                          const std::string& set) {
+  std::pair<std::vector<double>, std::vector<std::map<int, std::array<double, 3>>>> history;
+  const std::string title = "displacements (vx,vy,vz) for set " + set + " and time";
+  std::size_t at = dat.find(title);
+  while (at != std::string::npos) {
+    const std::size_t next = dat.find(title, at + title.size());
+    const std::size_t eol = dat.find('\n', at);
+    const auto words = split_ws(dat.substr(at + title.size(), eol - at - title.size()));
+    double time = 0.0;
+    if (words.size() != 1 || !parse_number(words[0], time)) break;
+    history.first.push_back(time);
+    history.second.push_back(parse_displacements(dat.substr(at, next == std::string::npos ? std::string::npos : next - at), set));
+    at = next;
+  }
+  return history;
+}
+
 }  // namespace
 
 bool calculix_available() { return !find_ccx().empty(); }
@@ -451,5 +472,31 @@ std::vector<std::map<int, std::array<double, 3>>> run_calculix_static_steps(cons
   return blocks;
 }
 
-}  // namespace framedyn::testing
+CalculixResult run_calculix_dynamic(const std::string& model_inp_path, const std::string& procedure_lines,
+                                    const std::string& load_lines, const std::vector<int>& node_ids,
+                                    const std::string& workdir) {
+  if (node_ids.empty()) throw std::invalid_argument("CalculiX peer: no output nodes for the transient step");
+  std::string set_text = std::string("*NSET, NSET=") + kOutputSet + "\n";
+  for (std::size_t i = 0; i < node_ids.size(); ++i) set_text += (i ? ", " : "") + std::to_string(node_ids[i]);
+  set_text += "\n";
+  std::string step = procedure_lines;
+  if (!step.empty() && step.back() != '\n') step += '\n';
+  step += load_lines;
+  if (!step.empty() && step.back() != '\n') step += '\n';
+  step += std::string("*NODE PRINT, NSET=") + kOutputSet + "\nU\n";
+  // INC: ccx stops a step after 100 increments by default ("max. # of
+  // increments reached"); a fixed-increment (DIRECT) step needs period / increment.
+  const fs::path dir = write_deck(model_inp_path, workdir, set_text, step, "*STEP, INC=1000000");
+  CalculixResult result;
+  run_ccx(dir, result);
+  auto history = parse_displacement_history(result.dat_text, kOutputSet);
+  if (history.first.empty()) fail("no displacement history for set " + std::string(kOutputSet), dir);
+  for (const auto& b : history.second)
+    for (int id : node_ids)
+      if (!b.count(id)) fail("node " + std::to_string(id) + " is missing from an increment's displacement output", dir);
+  result.history_times = std::move(history.first);
+  result.history = std::move(history.second);
+  return result;
+}
 
+}  // namespace framedyn::testing

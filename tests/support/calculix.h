@@ -45,6 +45,10 @@ struct CalculixResult {
   // Static runs only: displacement (U1, U2, U3) of each requested node, in
   // the global frame and the model's length unit, keyed by node id.
   std::map<int, std::array<double, 3>> displacements;
+  // Transient runs only: the end time of every increment (s, ascending) and,
+  // per increment, the displacements (U1, U2, U3) of the requested nodes.
+  std::vector<double> history_times;
+  std::vector<std::map<int, std::array<double, 3>>> history;
 };
 
 // Natural frequencies of a model. Writes `workdir`/job.inp (created if need
@@ -92,5 +96,23 @@ std::vector<std::map<int, std::array<double, 3>>> run_calculix_static_steps(cons
                                                                             const std::vector<std::string>& step_bodies,
                                                                             const std::vector<int>& node_ids,
                                                                             const std::string& workdir);
+
+// A transient step (*DYNAMIC, run by direct integration of the expanded
+// brick model). Writes `workdir`/job.inp as
+//     *INCLUDE, INPUT=<absolute model path>   (with its *AMPLITUDEs)
+//     *NSET, NSET=FRAMEDYN_PEER_OUT           (the ids in node_ids)
+//     *STEP, INC=1000000
+//     <procedure_lines>                       (e.g. "*DYNAMIC, DIRECT, ALPHA=0\n2.5e-4, 0.1\n")
+//     <load_lines>                            (e.g. "*CLOAD, AMPLITUDE=RAMP\n21, 3, -10.\n")
+//     *NODE PRINT, NSET=FRAMEDYN_PEER_OUT
+//     U
+//     *END STEP
+// and returns the displacement history of node_ids (history_times, history).
+// CalculiX 2.20's *MODAL DYNAMIC step crashes on expanded beams (B31 and
+// B32, docs/calculix_peer.md), so the modal procedure cannot be compared.
+// Throws as run_calculix_static does.
+CalculixResult run_calculix_dynamic(const std::string& model_inp_path, const std::string& procedure_lines,
+                                    const std::string& load_lines, const std::vector<int>& node_ids,
+                                    const std::string& workdir);
 
 }  // namespace framedyn::testing
