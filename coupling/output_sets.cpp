@@ -65,12 +65,13 @@ ModalRates modal_rates(const fem::FrameDynamics& frame, const fem::ModalBasis& b
     if (o.initial == fem::InitialState::static_equilibrium && w2(i) > 0.0) q = p(i, 0) / w2(i);
     double h_prev = -1.0;
     fem::PiecewiseLinearStep step{};
+    fem::StepMemo memo;  // the grid's few distinct steps (a long record's rounded times)
     std::size_t next = 0;
     for (Eigen::Index k = 0; k < nt; ++k) {
       if (k > 0) {
         const double h = in.times(k) - in.times(k - 1);
         if (std::abs(h - h_prev) > 1e-12 * h) {
-          step = fem::piecewise_linear_step(w2(i), c, h);
+          step = memo.step(w2(i), c, h);
           h_prev = h;
         }
         const double q1 = step.a(0, 0) * q + step.a(0, 1) * v + step.b0(0) * p(i, k - 1) + step.b1(0) * p(i, k);

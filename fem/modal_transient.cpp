@@ -71,6 +71,17 @@ PiecewiseLinearStep nigam_jennings_step(double w, double z, double h) {
 
 }  // namespace internal
 
+const PiecewiseLinearStep& StepMemo::step(double k, double c, double h) {
+  for (const Entry& e : entries_)
+    if (e.k == k && e.c == c && e.h == h) return e.step;
+  if (entries_.size() >= kRememberedSteps) {
+    last_ = piecewise_linear_step(k, c, h);
+    return last_;
+  }
+  entries_.push_back(Entry{k, c, h, piecewise_linear_step(k, c, h)});
+  return entries_.back().step;
+}
+
 PiecewiseLinearStep piecewise_linear_step(double k, double c, double h) {
   if (!(h > 0.0) || k < 0.0 || c < 0.0) throw std::invalid_argument("piecewise_linear_step: need h > 0, k >= 0, c >= 0");
   // Augmented state y = (s q, v, p, dp/dt) with y' = G y on [0, h] (Eq. T.5):
@@ -412,17 +423,38 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
   }
   // The step's coefficients per mode: q1 = a00 q + a01 v + c0 p0 + d0 p1, v1 = a10 q + a11 v + c1 p0 + d1 p1.
   std::vector<double> a00(static_cast<std::size_t>(m)), a01(a00), a10(a00), a11(a00), c0(a00), c1(a00), d0(a00), d1(a00);
+  // The steps already computed, by their exact length h: the grid's steps are differences of rounded
+  // times, so past t = 4 s (where an ulp of t exceeds 1e-12 h) consecutive steps differ by an ulp or two
+  // and the test below asks for a new step nearly every time, but only a handful of distinct h occur.
+  // A step looked up here is the same numbers piecewise_linear_step(w2, c, h) gives (same output).
+  struct Remembered {
+    double h;
+    std::vector<double> coefficients;  // a00, a01, a10, a11, c0, c1, d0, d1, m each
+  };
+  std::vector<Remembered> remembered;
+  std::vector<double>* blocks[8] = {&a00, &a01, &a10, &a11, &c0, &c1, &d0, &d1};
   double h_prev = -1.0;
   std::size_t next_out = 0;
   for (Eigen::Index k = 0; k < nt; ++k) {
     if (k > 0) {
       const double h = in.times(k) - in.times(k - 1);
       if (std::abs(h - h_prev) > 1e-12 * h) {
-        for (int i = 0; i < m; ++i) {
-          const PiecewiseLinearStep step = piecewise_linear_step(w2(i), damping[static_cast<std::size_t>(i)], h);
-          const std::size_t u = static_cast<std::size_t>(i);
-          a00[u] = step.a(0, 0), a01[u] = step.a(0, 1), a10[u] = step.a(1, 0), a11[u] = step.a(1, 1);
-          c0[u] = step.b0(0), c1[u] = step.b0(1), d0[u] = step.b1(0), d1[u] = step.b1(1);
+        const auto known = std::find_if(remembered.begin(), remembered.end(), [h](const Remembered& r) { return r.h == h; });
+        if (known != remembered.end()) {
+          for (int b = 0; b < 8; ++b)
+            std::copy_n(known->coefficients.begin() + b * m, m, blocks[b]->begin());
+        } else {
+          for (int i = 0; i < m; ++i) {
+            const PiecewiseLinearStep step = piecewise_linear_step(w2(i), damping[static_cast<std::size_t>(i)], h);
+            const std::size_t u = static_cast<std::size_t>(i);
+            a00[u] = step.a(0, 0), a01[u] = step.a(0, 1), a10[u] = step.a(1, 0), a11[u] = step.a(1, 1);
+            c0[u] = step.b0(0), c1[u] = step.b0(1), d0[u] = step.b1(0), d1[u] = step.b1(1);
+          }
+          if (remembered.size() < kRememberedSteps) {
+            Remembered r{h, std::vector<double>(static_cast<std::size_t>(8 * m))};
+            for (int b = 0; b < 8; ++b) std::copy_n(blocks[b]->begin(), m, r.coefficients.begin() + b * m);
+            remembered.push_back(std::move(r));
+          }
         }
         h_prev = h;
       }
@@ -452,12 +484,13 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
     for (int i = 0; i < frame.rigid_count(); ++i) {
       double q = 0.0, v = 0.0, h_prev = -1.0;
       PiecewiseLinearStep step{};
+      StepMemo memo;
       std::size_t next_out = 0;
       for (Eigen::Index k = 0; k < nt; ++k) {
         if (k > 0) {
           const double h = in.times(k) - in.times(k - 1);
           if (std::abs(h - h_prev) > 1e-12 * h) {
-            step = piecewise_linear_step(0.0, c, h);
+            step = memo.step(0.0, c, h);
             h_prev = h;
           }
           const double q1 = step.a(0, 0) * q + step.a(0, 1) * v + step.b0(0) * pr(i, k - 1) + step.b1(0) * pr(i, k);

@@ -51,6 +51,24 @@ struct PiecewiseLinearStep {
 };
 PiecewiseLinearStep piecewise_linear_step(double k, double c, double h);
 
+// The few distinct steps of a time grid, remembered by their exact (k, c, h): a grid of rounded times
+// t_k = k dt has steps that differ by an ulp or two of t (past t = 4 s for dt = 0.5 ms more than the
+// 1e-12 h the integrators take as "the same step"), so without it a long record recomputes the matrix
+// exponential nearly every step. step() returns exactly piecewise_linear_step(k, c, h).
+inline constexpr std::size_t kRememberedSteps = 32;
+class StepMemo {
+ public:
+  const PiecewiseLinearStep& step(double k, double c, double h);
+
+ private:
+  struct Entry {
+    double k, c, h;
+    PiecewiseLinearStep step;
+  };
+  std::vector<Entry> entries_;
+  PiecewiseLinearStep last_{};
+};
+
 namespace internal {
 // The closed-form recurrence of Nigam & Jennings (1969) for 0 <= zeta < 1,
 // omega > 0 (Eq. T.6); equal to piecewise_linear_step to round-off. Its

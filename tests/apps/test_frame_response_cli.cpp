@@ -236,7 +236,7 @@ TEST(FrameResponseCommand, ThePipelinesFrameResponseBlockTakesTheDialectAndWarns
   dir.write("frame.inp", frame);
   std::string study = slurp(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/offset_plowing.yaml");
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"../meshes/r100_frame.inp", "frame.inp"},
-                                 {"duration: 1.0", "duration: 0.01"}, {"paraview: xdmf", "paraview: none"}}) {
+                                 {"duration: 10.0", "duration: 0.01"}, {"paraview: xdmf", "paraview: none"}}) {
     ASSERT_NE(study.find(from), std::string::npos) << from;
     study.replace(study.find(from), from.size(), to);
   }

@@ -164,9 +164,9 @@ TEST(PipelineRun, EveryUnitOfTheShippedInchStudyIsALabelOfInLbfS) {
   TempDir dir("unit_labels_pipeline");
   std::string study = read_file(fs::path(FRAMEDYN_SOURCE_DIR) / "examples" / "offset_plowing.yaml");
   study.replace(study.find("../meshes/r100_frame.inp"), 24, std::string(FRAMEDYN_SOURCE_DIR) + "/meshes/r100_frame.inp");
-  const std::size_t d = study.find("duration: 1.0");
+  const std::size_t d = study.find("duration: 10.0");
   ASSERT_NE(d, std::string::npos);
-  study.replace(d, 13, "duration: 0.05");  // the labels do not depend on the duration
+  study.replace(d, 14, "duration: 0.05");  // the labels do not depend on the duration
   write(dir / "study.yaml", study);
   const RunResult r = framedyn(dir, "run study.yaml --out results -q");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -61,7 +61,7 @@ const Start& offset_plowing() {
       if (at == std::string::npos) throw std::logic_error("examples/offset_plowing.yaml has no '" + from + "'");
       t.replace(at, from.size(), to);
     };
-    swap("duration: 1.0", "duration: 0.25");
+    swap("duration: 10.0", "duration: 0.25");
     swap("../meshes/r100_frame.inp", kSource + "/meshes/r100_frame.inp");
     Start out;
     out.study = coupling::read_rigid_study_3d(dir.write("offset.yaml", t).string());

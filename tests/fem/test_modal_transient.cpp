@@ -4,8 +4,10 @@
 // displacement, inertia relief, and the quasi-static limit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 #include "fem/beam_section.h"
 #include "fem/direct_integration.h"
@@ -34,6 +36,38 @@ TEST(PiecewiseLinearStep, StepLoadMatchesDampedClosedForm) {
   const Eigen::Vector2d q = integrate(k, c, h, 200, [](double) { return 1.0; });
   // Exact update: only round-off (200 steps of ~1e-16) remains.
   EXPECT_NEAR(q(0), exact, 1e-14 / k * 200);
+}
+
+// A long record's grid of rounded times t_k = k dt (the pipeline's: dt = 0.5 ms, 10 s) has steps
+// t_k - t_{k-1} that differ by an ulp or two of t, more than 1e-12 h past t = 4 s, yet only a few
+// distinct ones: the memo holds them all, gives each the exact step's own numbers, and the
+// response over the whole record still matches the closed form of a unit step load.
+TEST(PiecewiseLinearStep, RoundedTimeGridHasFewDistinctStepsAndTheMemoGivesTheExactStepOfEach) {
+  const double dt = 0.0005, w = 2 * 3.14159265358979323846 * 32.49, z = 0.02, k = w * w, c = 2 * z * w;
+  const int n = 20000;
+  std::vector<double> times(n + 1);  // as rigid/time_integration.cpp makes its output times
+  for (int i = 0; i <= n; ++i) times[static_cast<std::size_t>(i)] = 0.0 + static_cast<double>(i) * dt;
+  framedyn::fem::StepMemo memo;
+  std::vector<double> distinct;
+  std::size_t asks = 0;  // how often the integrators' test |h - h_prev| > 1e-12 h asks for a new step
+  double h_prev = -1.0;
+  Eigen::Vector2d y(0.0, 0.0);
+  for (int i = 1; i <= n; ++i) {
+    const double h = times[static_cast<std::size_t>(i)] - times[static_cast<std::size_t>(i - 1)];
+    if (std::find(distinct.begin(), distinct.end(), h) == distinct.end()) distinct.push_back(h);
+    if (std::abs(h - h_prev) > 1e-12 * h) ++asks, h_prev = h;
+    const framedyn::fem::PiecewiseLinearStep& s = memo.step(k, c, h);
+    const framedyn::fem::PiecewiseLinearStep e = framedyn::fem::piecewise_linear_step(k, c, h);
+    ASSERT_TRUE(s.a == e.a && s.b0 == e.b0 && s.b1 == e.b1) << "step " << i;
+    y = s.a * y + s.b0 * 1.0 + s.b1 * 1.0;
+  }
+  EXPECT_LE(distinct.size(), framedyn::fem::kRememberedSteps);
+  EXPECT_GT(asks, 10 * distinct.size());  // many more new steps asked than there are distinct ones: the memo's reason
+  const double t = n * dt, wd = w * std::sqrt(1 - z * z);
+  const double exact = (1 - std::exp(-z * w * t) * (std::cos(wd * t) + z / std::sqrt(1 - z * z) * std::sin(wd * t))) / k;
+  EXPECT_NEAR(y(0), exact, 1e-14 / k * n);
+  std::cout << "[ measured ] " << distinct.size() << " distinct steps in " << n << " of a " << dt << " s grid; " << asks
+            << " asked for by the 1e-12 h test\n";
 }
 
 TEST(PiecewiseLinearStep, RampLoadMatchesDampedClosedForm) {
