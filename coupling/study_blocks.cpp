@@ -57,10 +57,11 @@ void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool w
   if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in, with_table);
 }
 
-template <class Parameters>
-void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
+}  // namespace
+
+void check_machine(const MachineParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
   try {
-    const rigid::VehicleModel check = rigid::build_vehicle_model(p);
+    const rigid::VehicleModel check = build_vehicle_model(p);
     // Each value is in range (yaml_input.cpp); their products need not be: a 1e200 lbf/in spring 1e200 in from the CG.
     for (const auto& [name, matrix] : {std::pair<const char*, Eigen::MatrixXd>{"mass", check.m},
                                        {"stiffness", check.k_full}, {"damping", check.c_full}})
@@ -85,8 +86,6 @@ void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed
   }
 }
 
-}  // namespace
-
 std::optional<YamlMap> attachment_block(const YamlMap& root, const std::string& key, bool wanted, const std::string& refusal,
                                         const std::string& found) {
   if (wanted) return root.map(key);
@@ -98,15 +97,6 @@ Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key) {
   const std::vector<double> v = m.numbers(key, Quantity::length);
   if (!m.has(key) || v.size() != 3) throw m.error(key, "a point [X, Y, Z]", m.has(key) ? fmt::format("{} numbers", v.size()) : "nothing");
   return {v[0], v[1], v[2]};
-}
-
-void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file) {
-  check_machine_of(p, fixed_coordinates, root, file);
-}
-void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file) {
-  check_machine_of(p, fixed_coordinates, root, file);
 }
 
 StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, std::initializer_list<const char*> top_keys) {
@@ -820,6 +810,51 @@ std::optional<double> average_cycle_peak(const std::vector<double>& time, const 
   });
   if (counted > 0) return sum / counted;
   return std::nullopt;
+}
+
+}  // namespace framedyn::coupling
+
+namespace framedyn::coupling {
+
+rigid::CalibrationResult calibrate_parameters(MachineParameters& parameters, const CalibrationRequest& c,
+                                              const std::function<std::vector<rigid::RigidMode>(const rigid::VehicleModel&)>& modes) {
+  CalibrationRequest request = c;
+  {
+    // Measured shapes seen through the nominal machine (the calibrated
+    // parameters do not move its points or change its coordinates).
+    const rigid::VehicleModel nominal = build_vehicle_model(parameters);
+    const auto jacobian = [&](const std::vector<double>& point) {
+      // Frame points are [X, Z] in 2-D, [X, Y, Z] in 3-D.
+      return nominal.dimensions == 2 ? rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), 0.0, point.at(1)))
+                                     : rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
+    };
+    for (std::size_t t = 0; t < c.shapes.size(); ++t)
+      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.multibody, jacobian);
+  }
+  const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
+    MachineParameters p = parameters;
+    for (std::size_t i = 0; i < values.size(); ++i) set_parameter(p, c.parameters[i], values[i]);
+    return modes(build_vehicle_model(p));
+  };
+  rigid::ModeFamily family;
+  if (c.symmetric_modes) {
+    const rigid::VehicleModel nominal = build_vehicle_model(parameters);
+    family = calibration_mode_family(c, nominal.multibody.coordinate_names());
+    std::size_t n = 0;
+    const auto modes_now = modes(nominal);
+    for (const rigid::RigidMode& m : modes_now) n += family(m) ? 1 : 0;
+    if (n < c.targets.size())
+      throw core::InputError(c.pair_with_where, fmt::format("as many modes symmetric about the X-Z plane as targets ({})", c.targets.size()),
+                             fmt::format("{} of the machine's {} modes (a machine not symmetric about X-Z has none)", n, modes_now.size()));
+  }
+  rigid::CalibrationResult result;
+  try {
+    result = run_calibration(request, [&](const std::string& name) { return get_parameter(parameters, name); }, modes_of, family);
+  } catch (const rigid::UnderdeterminedFit& e) {
+    throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
+  }
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) set_parameter(parameters, c.parameters[i], result.fitted[i]);
+  return result;
 }
 
 }  // namespace framedyn::coupling

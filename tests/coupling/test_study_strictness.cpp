@@ -22,7 +22,7 @@
 #include "coupling/frame_study.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/road_delays.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -92,8 +92,8 @@ TEST(StrictStudy, UnitNamesAreReadInAnyLetterCase) {
   const auto lower = coupling::read_rigid_study(dir.write("a.yaml", text).string());
   const auto upper = coupling::read_rigid_study(dir.write("b.yaml", replaced(text, "units: in-lbf-s", "units: IN-LBF-S")).string());
   EXPECT_EQ(upper.units.name(), "in-lbf-s");
-  EXPECT_EQ(upper.machine.cab.mass, lower.machine.cab.mass);
-  EXPECT_NEAR(upper.machine.cab.mass, 650 * 4.4482216152605 / 9.80665, 1e-12 * 300);
+  EXPECT_EQ(upper.machine_2d().cab.mass, lower.machine_2d().cab.mass);
+  EXPECT_NEAR(upper.machine_2d().cab.mass, 650 * 4.4482216152605 / 9.80665, 1e-12 * 300);
 }
 
 // Two load points of the shipped frame, in in-lbf-s, and the same loads written in SI.
@@ -154,7 +154,7 @@ TEST(RoadDelay, RearTiresRunTheWheelbaseBehindFromTheTirePositionsAndBehindOverr
   const framedyn::testing::TempDir dir;
   std::string text = read_text(kSource / "examples" / "transport_rough_ground.yaml");
   text = replaced(text, "  mesh: ../meshes/r100_frame.inp", "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
-  const auto delays_of = [&](const std::string& study) { return coupling::road_delays(coupling::read_rigid_study_3d(dir.write("study.yaml", study).string()).machine); };
+  const auto delays_of = [&](const std::string& study) { return coupling::road_delays(coupling::read_rigid_study(dir.write("study.yaml", study).string()).machine_3d()); };
   const std::vector<coupling::RoadDelay> derived = delays_of(text);
   ASSERT_EQ(derived.size(), 4u);
   const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
@@ -186,7 +186,7 @@ TEST(RoadDelay, TwoDimensionalRearTireRunsTheWheelbaseBehindFromTheTirePositions
   std::string text = read_text(kSource / "examples" / "r100_plow_2d.yaml");
   text = replaced(text, "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: " + road + "\n");
   text = replaced(text, "    contact: [72, -26]\n", "    contact: [72, -26]\n    normal_input: " + road + "\n");
-  const auto machine_of = [&](const std::string& study) { return coupling::read_rigid_study(dir.write("study2d.yaml", study).string()).machine; };
+  const auto machine_of = [&](const std::string& study) { return coupling::read_rigid_study(dir.write("study2d.yaml", study).string()).machine_2d(); };
   const auto derived = machine_of(text);
   const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
   EXPECT_EQ(derived.front_tire.normal_input.behind, 0.0);
