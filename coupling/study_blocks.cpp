@@ -34,7 +34,7 @@ void read_chain_into(const YamlMap& chain, Chain& c, ReadPoint point) {
 }
 
 template <class Plow>
-void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool with_table) {
+void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl) {
   const YamlMap link = plow.map("linkage");
   link.allow_only({"upper_pivot", "lower_pivot", "upper_joint", "lower_joint"});
   pl.linkage = {link.point("upper_pivot"), link.point("lower_pivot"), link.point("upper_joint"), link.point("lower_joint")};
@@ -54,7 +54,7 @@ void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool w
   bounce.allow_only({"point", "stiffness", "damping", "input"});
   pl.bounce_tire_point = bounce.point("point");
   pl.bounce_tire = {bounce.non_negative("stiffness", Quantity::translational_stiffness), bounce.non_negative_or("damping", Quantity::translational_damping, 0.0)};
-  if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in, with_table);
+  if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in);
 }
 
 }  // namespace
@@ -135,10 +135,8 @@ rigid::SpringDamperValues read_spring_damper(const YamlMap& m) {
   return {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)};
 }
 
-rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
-  if (with_table)
-    m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values", "class", "speed", "behind", "seed", "length"});
-  else m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "class", "speed", "behind", "seed", "length"});
+rigid::GroundInput read_ground_input(const YamlMap& m) {
+  m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values", "class", "speed", "behind", "seed", "length"});
   rigid::GroundInput g;
   const std::string kind = m.text("kind");
   if (kind == "sine") {
@@ -151,7 +149,7 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
     g.amplitude = m.number("amplitude", Quantity::length);
     g.start = m.non_negative("start", Quantity::time);
     g.duration = m.positive("duration", Quantity::time);
-  } else if (kind == "table" && with_table) {
+  } else if (kind == "table") {
     g.kind = rigid::GroundInput::Kind::table;
     g.times = m.numbers("times", Quantity::time);
     g.values = m.numbers("values", Quantity::length);
@@ -179,7 +177,7 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
     g.behind_given = m.has("behind");
     g.behind = g.behind_given ? m.non_negative("behind", Quantity::length) : 0.0;
   } else {
-    throw m.error("kind", with_table ? "sine, bump, table or road" : "sine, bump or road", "'" + kind + "'");
+    throw m.error("kind", "sine, bump, table or road", "'" + kind + "'");
   }
   return g;
 }
@@ -197,7 +195,12 @@ void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line
                        "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact), soil_line (from the point of "
                        "contact, carried rearward with the unpenetrated soil at VS) or cut_face (no spring while the blade cuts)",
                        "'" + reference + "'");
-    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil).
+    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil; STUDY-140).
+    if (reference == "soil_line")
+      throw soil.error("spring_reference",
+                       "equilibrium, contact or cut_face in a 3-D study (soil_line carries the springs' anchor rearward with the soil at VS, "
+                       "which only the 2-D model does: the 3-D model's soil anchors do not move; model: rigid_2d for soil_line)",
+                       "'soil_line'");
     throw soil.error("spring_reference",
                      "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or cut_face (no spring while the blade cuts)",
                      "'" + reference + "'");
@@ -216,11 +219,11 @@ void read_chain(const YamlMap& chain, rigid::Chain2D& c) {
 }
 void read_chain(const YamlMap& chain, rigid::Chain3D& c) { read_chain_into(chain, c, read_point3); }
 
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table) {
-  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl);
 }
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table) {
-  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl);
 }
 
 ResponseRequest read_response_request(const YamlMap& r) {

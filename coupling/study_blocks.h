@@ -59,12 +59,13 @@ Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key);
 // {stiffness, damping} (damping optional, 0).
 rigid::SpringDamperValues read_spring_damper(const YamlMap& m);
 
-// A reference ground input: kind sine or bump, and with `with_table` also table.
-rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table);
+// A reference ground input: kind sine, bump, table or road (the same under a 2-D and a 3-D tire).
+rigid::GroundInput read_ground_input(const YamlMap& m);
 
 // The soil law's keys (after the caller's allow_only): stiffness, damping,
 // stiffness_reduction, damping_reduction, spring_reference (equilibrium,
-// contact, and with `with_soil_line` soil_line: 2-D only).
+// contact, and with `with_soil_line` soil_line: 2-D only; refused in 3-D with
+// the reason, STUDY-140).
 void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line);
 
 // The chain block: boom_point, chain_pin ([X, Z] in 2-D, [X, Y, Z] in 3-D),
@@ -73,9 +74,9 @@ void read_chain(const YamlMap& chain, rigid::Chain2D& c);
 void read_chain(const YamlMap& chain, rigid::Chain3D& c);
 
 // The plow's keys from linkage to bounce_tire (after cg): the four-bar
-// linkage, blade point, shaker and bounce tire (ground input `with_table`).
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table);
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table);
+// linkage, blade point, shaker and bounce tire (with its ground input).
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl);
 
 // Builds the machine once so that geometric errors (a toggle linkage, a
 // massless coordinate) are reported against the study file, and checks the

@@ -62,8 +62,8 @@ rigid::Tire2D tire(const YamlMap& m) {
   t.contact = m.point("contact");
   t.normal = read_spring_damper(m.map("normal"));
   t.tractive = read_spring_damper(m.map("tractive"));
-  if (auto in = m.optional_map("normal_input")) t.normal_input = read_ground_input(*in, /*with_table=*/true);
-  if (auto in = m.optional_map("tractive_input")) t.tractive_input = read_ground_input(*in, /*with_table=*/true);
+  if (auto in = m.optional_map("normal_input")) t.normal_input = read_ground_input(*in);
+  if (auto in = m.optional_map("tractive_input")) t.tractive_input = read_ground_input(*in);
   return t;
 }
 
@@ -259,7 +259,7 @@ rigid::Machine2DParameters read_machine_2d(const YamlMap& root, rigid::Attachmen
     pl.mass = plow.mass(kGravity);
     pl.inertia = inertia_of(plow, pl.mass, "plow");
     pl.cg = plow.point("cg");
-    read_plow_linkage_to_bounce_tire(plow, pl, /*with_table=*/true);
+    read_plow_linkage_to_bounce_tire(plow, pl);
     const YamlMap cyl = plow.map("lift_cylinder");
     cyl.allow_only({"frame_point", "arm_point", "stiffness", "damping"});
     pl.cylinder_frame_point = cyl.point("frame_point");

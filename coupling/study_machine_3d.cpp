@@ -59,8 +59,8 @@ rigid::Tire3D tire(const YamlMap& m) {
   t.vertical = read_spring_damper(m.map("vertical"));
   t.longitudinal = read_spring_damper(m.map("longitudinal"));
   t.lateral = read_spring_damper(m.map("lateral"));
-  if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in, /*with_table=*/false);
-  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in, /*with_table=*/false);
+  if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in);
+  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in);
   return t;
 }
 
@@ -392,7 +392,7 @@ rigid::Machine3DParameters read_machine_3d(const YamlMap& root, rigid::Attachmen
     pl.mass = plow.mass(kGravity);
     pl.inertia_boom_axes = inertia3(plow, pl.mass, "plow");
     pl.cg = plow.point("cg");
-    read_plow_linkage_to_bounce_tire(plow, pl, /*with_table=*/false);
+    read_plow_linkage_to_bounce_tire(plow, pl);
     const YamlMap cyl = plow.map("lift_cylinder");
     cyl.allow_only({"base", "arm_point", "stiffness", "damping"});
     pl.cylinder_base = cyl.point("base");
