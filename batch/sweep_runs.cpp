@@ -14,7 +14,6 @@
 #include "core/error.h"
 #include "coupling/parameter_sweep.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
 #include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "report/study_run.h"
@@ -98,15 +97,15 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
   // values stay in the study's units, labelled with the unit system's name, as runs.csv does.
   OneParameterSweepResult out;
   const report::StudyRunDetails& first = *runs.front().details;
-  out.units = first.study_2d ? first.study_2d->units : first.study_3d->units;
-  out.study_name = first.study_2d ? first.study_2d->name : first.study_3d->name;
+  out.units = first.study->units;
+  out.study_name = first.study->name;
   core::Quantity quantity = core::Quantity::dimensionless;
   bool known = true;
   try {
-    quantity = first.study_2d ? coupling::parameter_quantity(first.study_2d->machine, q.key) : coupling::parameter_quantity_3d(q.key);
+    quantity = coupling::parameter_quantity(first.study->machine, q.key);
   } catch (const std::invalid_argument&) {
     try {  // keys both models share (soil.damping): the 2-D table
-      quantity = coupling::parameter_quantity(rigid::Machine2DParameters{}, q.key);
+      quantity = coupling::parameter_quantity(coupling::MachineParameters{rigid::Machine2DParameters{}}, q.key);
     } catch (const std::invalid_argument&) {
       known = false;
     }
@@ -119,7 +118,7 @@ OneParameterSweepResult run_one_parameter_sweep(const OneParameterSweep& q) {
   for (std::size_t i = 0; i < n; ++i) {
     const report::StudyRunDetails& d = *runs[i].details;
     const double value = known ? out.units.to_si(run_values[i], quantity) : run_values[i];
-    points.push_back(d.results_2d ? coupling::sweep_point(*d.results_2d, value) : coupling::sweep_point(*d.results_3d, value));
+    points.push_back(coupling::sweep_point(*d.results, value));
   }
   s.reference_index = reference_index;
   s.reference = reference_index >= 0 ? points[static_cast<std::size_t>(reference_index)] : points.back();

@@ -25,7 +25,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/load_history.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 
 namespace {
 
@@ -63,12 +63,12 @@ double median(std::vector<double> v) {
 // The scenarios' pipelines without fatigue: what the cycle must simulate anyway.
 void baseline(const c::DutyCycleRequest& q) {
   for (const c::DutyCycleScenarioSpec& s : q.scenarios) {
-    const c::RigidStudy3D study = c::read_rigid_study_3d(s.study.string());
+    const c::RigidStudy study = c::read_rigid_study(s.study.string());
     c::FrameStudyRequest request = *study.frame_response;
     request.fatigue.reset();
     request.paraview = c::ParaviewOutput::none;
-    const c::RigidResults3D r = c::run_rigid_study_3d(study);
-    const c::LoadHistory loads = c::all_frame_loads(*r.frame_loads), static_loads = c::all_frame_loads(*r.static_frame_loads);
+    const c::RigidResults r = c::run_rigid_study(study);
+    const c::LoadHistory loads = c::all_frame_loads(*r.frame_loads_3d), static_loads = c::all_frame_loads(*r.static_frame_loads_3d);
     const c::FrameStudyResults f = c::run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at);
     if (f.response.times.size() == 0) std::abort();
   }

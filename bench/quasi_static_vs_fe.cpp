@@ -36,7 +36,6 @@
 #include "coupling/frame_loads_2d.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
 #include "fem/modal_transient.h"
 #include "fem/section_forces.h"
 #include "rigid/machine_2d.h"
@@ -250,14 +249,14 @@ int main(int argc, char** argv) {
   const std::vector<std::string> mounted = {"front_ballast", "hydraulic_pumps_and_tank", "engine", "fuel_tank", "hitch_box"};
   {
     std::vector<std::string> names;
-    for (const auto& l : r2.frame_loads) names.push_back(fmt::format("{}@{:g}", l.name, l.point.x() / kIn));
+    for (const auto& l : r2.frame_loads_2d) names.push_back(fmt::format("{}@{:g}", l.name, l.point.x() / kIn));
     fmt::print("2-D frame loads: {}\n", fmt::join(names, ", "));
   }
 
   // ---- 3-D straight plowing and the beam frame ----
-  const c::RigidStudy3D s3 = c::read_rigid_study_3d(src + "/examples/straight_plowing.yaml");
-  const c::RigidResults3D r3 = c::run_rigid_study_3d(s3);
-  const c::LoadHistory& h3 = r3.frame_loads->points;
+  const c::RigidStudy s3 = c::read_rigid_study(src + "/examples/straight_plowing.yaml");
+  const c::RigidResults r3 = c::run_rigid_study(s3);
+  const c::LoadHistory& h3 = r3.frame_loads_3d->points;
   FrameRun fx = run_frame(*s3.frame_response, h3, c::FrameSupports::fixed_rear_end);
   FrameRun ff = run_frame(*s3.frame_response, h3, c::FrameSupports::free_free_inertia_relief);
   fmt::print("beam frame, fixed rear end: first modes {:.2f} {:.2f} {:.2f} Hz; free-free: {:.2f} {:.2f} {:.2f} Hz\n", fx.r.frequencies_hz(0),
@@ -283,7 +282,7 @@ int main(int argc, char** argv) {
   fmt::print("{:>6} {:>5} | {:>9} {:>9} | {:>9} {:>9} {:>9} {:>9} | {:>9} {:>9} {:>9} {:>6} {:>9} | {:>6}\n", "X", "q", "2D mean", "2D full",
              "2D FEld", "2D mnt", "2D tube", "2D plow", "3D cut", "FE stat", "FE dyn", "lag", "FE free", "dyn/st");
   std::map<double, std::map<std::string, Series>> keep;
-  const framedyn::rigid::VehicleModel model2 = framedyn::rigid::build_vehicle_model(s2.machine);
+  const framedyn::rigid::VehicleModel model2 = framedyn::rigid::build_vehicle_model(s2.machine_2d());
   double max_dev_2d = 0;
   for (double xin : cuts_in) {
     const double x = xin * kIn;
@@ -293,10 +292,10 @@ int main(int argc, char** argv) {
     const RailCut rcf = rail_cut(ff.r.model, x);
     std::map<std::string, Series> srs;
     for (std::size_t i = 0; i < t2.size(); ++i) {
-      const Cut all = cut_2d(r2.frame_loads, i, x, nullptr), fe = cut_2d(r2.frame_loads, i, x, &fe_carried),
-                   mnt = cut_2d(r2.frame_loads, i, x, &mounted);
+      const Cut all = cut_2d(r2.frame_loads_2d, i, x, nullptr), fe = cut_2d(r2.frame_loads_2d, i, x, &fe_carried),
+                   mnt = cut_2d(r2.frame_loads_2d, i, x, &mounted);
       // Eq. 2.47 at X: the loads in front and the tube's distributed inertia in front (as frame_stress_resultants).
-      const c::SectionLoad d = c::tube_inertia_in_front(model2, s2.machine.frame, r2.trajectory.a[i], x, 0.0);
+      const c::SectionLoad d = c::tube_inertia_in_front(model2, s2.machine_2d().frame, r2.trajectory.a[i], x, 0.0);
       const double full_srx = all.srx - d.force.x(), full_srmy = all.srmy + d.moment;
       if (it != sr.output_x.end()) {  // the study's own output agrees
         const std::size_t k = static_cast<std::size_t>(it - sr.output_x.begin());
@@ -449,9 +448,9 @@ int main(int argc, char** argv) {
   s2c.response->duration = duration;
   s2c.response->output_interval = 0.00025;  // the 3-D chain run's samples
   const c::RigidResults r2c = c::run_rigid_study(s2c);
-  const c::RigidStudy3D s3c = c::read_rigid_study_3d(src + "/examples/chain_pipeline.yaml");
-  const c::RigidResults3D r3c = c::run_rigid_study_3d(s3c);
-  FrameRun fc = run_frame(*s3c.frame_response, r3c.frame_loads->points, c::FrameSupports::fixed_rear_end);
+  const c::RigidStudy s3c = c::read_rigid_study(src + "/examples/chain_pipeline.yaml");
+  const c::RigidResults r3c = c::run_rigid_study(s3c);
+  FrameRun fc = run_frame(*s3c.frame_response, r3c.frame_loads_3d->points, c::FrameSupports::fixed_rear_end);
 
   // Stress at X = 36 in: 2-D (rail top, Eq. 2.47d) and beam frame (largest corner); plow and chain.
   auto point_index = [](const c::StressResultants& s, double xin) {
@@ -589,7 +588,7 @@ int main(int argc, char** argv) {
     const Spectrum a0 = spectrum(r2c.trajectory.time, m2c, 0.0, duration, 10), b0 = spectrum(fc.t, mc, 0.0, duration, 10);
     fmt::print("    chain over the whole run 0-{:.1f} s (start-up included): 2-D {:.3f}, beam frame {:.3f}\n", duration, a0.share_below, b0.share_below);
     Series m3s;
-    for (int i = 0; i < r3c.frame_loads->points.time_count(); ++i) m3s.push_back(cut_3d(r3c.frame_loads->points, i, 36 * kIn).srmy / kLbfIn);
+    for (int i = 0; i < r3c.frame_loads_3d->points.time_count(); ++i) m3s.push_back(cut_3d(r3c.frame_loads_3d->points, i, 36 * kIn).srmy / kLbfIn);
     const Spectrum c0 = spectrum(fc.t, m3s, t0, duration, 10);
     double rd = 0, rs = 0;
     int nn = 0;
@@ -617,7 +616,7 @@ int main(int argc, char** argv) {
     std::vector<double> jump_times;
     for (const auto& e : r3c.trajectory.events) jump_times.push_back(e.time);
     Series m3c;  // static cut of the 3-D chain loads at 36
-    for (int i = 0; i < r3c.frame_loads->points.time_count(); ++i) m3c.push_back(cut_3d(r3c.frame_loads->points, i, 36 * kIn).srmy / kLbfIn);
+    for (int i = 0; i < r3c.frame_loads_3d->points.time_count(); ++i) m3c.push_back(cut_3d(r3c.frame_loads_3d->points, i, 36 * kIn).srmy / kLbfIn);
     for (std::size_t i = 1; i < tc.size(); ++i) {
       if (tc[i] < t0) continue;
       bool jump = false;

@@ -13,7 +13,7 @@
 //                      [--min-cpu SECONDS]  (each timing block at least this long; default 0.25)
 //
 // Every run: the study's duration and output interval, from rest at the
-// static equilibrium, CVODE with the tolerances coupling::run_rigid_study_3d
+// static equilibrium, CVODE with the tolerances coupling::run_rigid_study
 // uses (rtol 1e-8, atol 1e-12 m, velocity_scale 100 1/s). CPU time is
 // CLOCK_PROCESS_CPUTIME_ID, as bench/rigid_response_benchmark.cpp measures it.
 // Results: docs/benchmarks.md, "3-D rigid-body response".
@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "coupling/frame_loads_3d.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "rigid/machine_3d.h"
 #include "rigid/vehicle_model.h"
 #include "rigid/vehicle_run.h"
@@ -66,7 +66,7 @@ rigid::VehicleRun integrate(const rigid::VehicleModel& m, const Method& method, 
   o.end_time = req.duration;
   o.output_interval = req.output_interval;
   o.relative_tolerance = method.rk4 ? req.relative_tolerance : method.value;
-  o.absolute_tolerance = 1e-12;  // as coupling::run_rigid_study_3d
+  o.absolute_tolerance = 1e-12;  // as coupling::run_rigid_study
   o.velocity_scale = 100.0;
   o.max_steps = 100000000;
   run.trajectory = method.rk4 ? rigid::integrate_rk4(dynamics, zero, zero, method.value, o) : rigid::integrate_event_located(dynamics, zero, zero, o);
@@ -155,16 +155,16 @@ std::string describe(const LoadDifference& d) {
 }
 
 void benchmark(const std::string& what, const std::string& file, double thesis_step) {
-  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(file);
+  const coupling::RigidStudy study = coupling::read_rigid_study(file);
   if (!study.response) throw std::invalid_argument(file + " has no analysis.response");
   const coupling::ResponseRequest& req = *study.response;
-  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine_3d());
   const Method el{false, req.relative_tolerance}, rk{true, thesis_step}, reference{false, 1e-11};
   const rigid::VehicleRun run_ref = integrate(m, reference, req), run_el = integrate(m, el, req), run_rk = integrate(m, rk, req);
   const rigid::Trajectory &tr_ref = run_ref.trajectory, &tr_el = run_el.trajectory, &tr_rk = run_rk.trajectory;
-  const coupling::FrameLoads3D loads_ref = coupling::frame_loads_3d(m, study.machine, run_ref.state, tr_ref);
-  const coupling::FrameLoads3D loads_el = coupling::frame_loads_3d(m, study.machine, run_el.state, tr_el);
-  const coupling::FrameLoads3D loads_rk = coupling::frame_loads_3d(m, study.machine, run_rk.state, tr_rk);
+  const coupling::FrameLoads3D loads_ref = coupling::frame_loads_3d(m, study.machine_3d(), run_ref.state, tr_ref);
+  const coupling::FrameLoads3D loads_el = coupling::frame_loads_3d(m, study.machine_3d(), run_el.state, tr_el);
+  const coupling::FrameLoads3D loads_rk = coupling::frame_loads_3d(m, study.machine_3d(), run_rk.state, tr_rk);
   const LoadDifference d_el = compare_loads(loads_el, loads_ref, kSettled), d_rk = compare_loads(loads_rk, loads_ref, kSettled);
   const PairTiming t = time_pair([&] { (void)integrate(m, el, req); }, [&] { (void)integrate(m, rk, req); });
   const std::string dofs = fmt::format("{} DOF", m.size());

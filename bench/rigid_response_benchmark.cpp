@@ -477,7 +477,7 @@ int main(int argc, char** argv) {
   }
   try {
     const coupling::RigidStudy study = coupling::read_rigid_study(study_file);
-    const rigid::Machine2DParameters shipped = study.machine;
+    const rigid::Machine2DParameters shipped = study.machine_2d();
     if (shipped.attachment != rigid::Attachment::plow) throw std::invalid_argument(study_file + " is not a plowing study");
     struct Case {
       std::string name, title;
@@ -507,7 +507,7 @@ int main(int argc, char** argv) {
       throughput(cases.front().name + ", samples only at 0 and 0.5 s", cases.front().p, {0.0005}, kDuration);
       if (!chain_file.empty() && std::ifstream(chain_file).good()) {
         const coupling::RigidStudy chain = coupling::read_rigid_study(chain_file);
-        throughput("digging chain (" + chain_file.substr(chain_file.find_last_of('/') + 1) + ")", chain.machine, {0.00025, 0.0001});
+        throughput("digging chain (" + chain_file.substr(chain_file.find_last_of('/') + 1) + ")", chain.machine_2d(), {0.00025, 0.0001});
       } else {
         fmt::print("\nDigging: no chain study at {}; pass --chain-study FILE to time one.\n", chain_file);
       }

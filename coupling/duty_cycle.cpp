@@ -13,7 +13,7 @@
 #include <set>
 #include <thread>
 
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 
 namespace framedyn::coupling {
 
@@ -64,7 +64,7 @@ DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleS
   const auto start = std::chrono::steady_clock::now();
   if (const std::string model = study_model(spec.study.string()); model != "rigid_3d")
     throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block", "'" + spec.study.string() + "', model " + model);
-  const RigidStudy3D study = read_rigid_study_3d(spec.study.string());
+  const RigidStudy study = read_rigid_study(spec.study.string());
   if (!study.frame_response || !study.response)
     throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block",
                            "'" + spec.study.string() + "', without " + (study.response ? "frame_response" : "analysis.response"));
@@ -72,8 +72,8 @@ DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleS
   request.fatigue = q.fatigue;
   request.fatigue->hours = spec.hours;
   request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
-  const RigidResults3D r = run_rigid_study_3d(study);
-  const LoadHistory loads = all_frame_loads(*r.frame_loads), static_loads = all_frame_loads(*r.static_frame_loads);
+  const RigidResults r = run_rigid_study(study);
+  const LoadHistory loads = all_frame_loads(*r.frame_loads_3d), static_loads = all_frame_loads(*r.static_frame_loads_3d);
   DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;

@@ -1,16 +1,19 @@
-// Reading and running rigid-body studies; see rigid_study.h.
+// The one study reader and the one runner of vehicle studies, 2-D and 3-D;
+// see rigid_study.h. The machine's keys are its model's builder's
+// (coupling/study_machine.h); everything else is read and run here, once.
 #include "coupling/rigid_study.h"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
-#include <tuple>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "coupling/frame_loads_2d.h"
+#include "coupling/frame_loads_3d.h"
 #include "coupling/study_blocks.h"
+#include "coupling/study_machine.h"
 #include "coupling/yaml_input.h"
 
 namespace framedyn::coupling {
@@ -18,184 +21,56 @@ namespace framedyn::coupling {
 namespace {
 
 using core::Quantity;
-constexpr double kGravity = 9.80665;  // m/s^2, to turn weights into masses
 constexpr double kDegree = M_PI / 180.0;
 
-double inertia_of(const YamlMap& m, double mass, const std::string& what) {
-  const bool has_i = m.has("inertia"), has_k = m.has("radius_of_gyration");
-  if (has_i == has_k)
-    throw m.error("", "exactly one of 'inertia' or 'radius_of_gyration' for the " + what, has_i ? "both" : "neither");
-  if (has_i) return m.non_negative("inertia", Quantity::rotary_inertia);
-  const double k = m.non_negative("radius_of_gyration", Quantity::length);
-  return mass * k * k;
-}
-
-// The mass and pitch inertia (about Y) of a declared body (DeclaredBodySize::body) of the
-// machine: an added mass of the frame, the cab or the plow (docs/theory/rigid.md, section 16).
-BodyInertia body_inertia_2d(const rigid::Machine2DParameters& p, const DeclaredBodySize& b) {
-  for (const rigid::AddedMass& a : p.frame.added_masses)
-    if (b.body == "frame.added_masses[" + a.name + "]") return {a.mass, Eigen::Vector3d(0.0, a.inertia, 0.0)};
-  if (b.body == "cab") return {p.cab.mass, Eigen::Vector3d(0.0, p.cab.inertia, 0.0)};
-  if (b.body == "plow") return {p.plow.mass, Eigen::Vector3d(0.0, p.plow.inertia, 0.0)};
-  return {};
-}
-
-// A 2-D body's declared box must hold the points the model puts on the body
-// (its c.g., its mounts, pins and contact points, [X, Z]): a declared length
-// (X) or height (Z) shorter than their span along it describes no body
-// (STUDY-146, at the body's dimensions key; docs/theory/rigid.md, section 16).
-void check_box_holds_points(const DeclaredBodySize& b, const std::vector<std::pair<const char*, Eigen::Vector2d>>& points,
-                            const core::UnitSystem& units) {
-  const std::string L = units.label(Quantity::length);
-  for (const auto& [side, along, name] : {std::tuple(0, 0, "length (X)"), std::tuple(2, 1, "height (Z)")}) {
-    if (!b.box.side[static_cast<std::size_t>(side)]) continue;
-    const double declared = *b.box.side[static_cast<std::size_t>(side)];
-    std::size_t lo = 0, hi = 0;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-      if (points[i].second[along] < points[lo].second[along]) lo = i;
-      if (points[i].second[along] > points[hi].second[along]) hi = i;
-    }
-    const double span = points[hi].second[along] - points[lo].second[along];
-    if (span <= declared * (1 + 1e-9)) continue;
-    throw core::InputError(b.where,
-                           fmt::format("a {} of at least {:.4g} {} for {} (the span of its own points, from its {} at {:.4g} to its {} at {:.4g} {}: "
-                                       "the box holds the whole body; docs/theory/rigid.md, section 16)",
-                                       name, units.from_si(span, Quantity::length), L, b.body, points[lo].first,
-                                       units.from_si(points[lo].second[along], Quantity::length), points[hi].first,
-                                       units.from_si(points[hi].second[along], Quantity::length), L),
-                           fmt::format("{:.4g} {}", units.from_si(declared, Quantity::length), L));
-  }
-}
-
-rigid::Tire2D tire(const YamlMap& m) {
-  m.allow_only({"contact", "normal", "tractive", "normal_input", "tractive_input"});
-  rigid::Tire2D t;
-  t.contact = m.point("contact");
-  t.normal = read_spring_damper(m.map("normal"));
-  t.tractive = read_spring_damper(m.map("tractive"));
-  if (auto in = m.optional_map("normal_input")) t.normal_input = read_ground_input(*in, /*with_table=*/true);
-  if (auto in = m.optional_map("tractive_input")) t.tractive_input = read_ground_input(*in, /*with_table=*/true);
-  return t;
-}
-
-// F.30 in 2-D (docs/theory/fatigue.md section 11): a road input without `behind` runs
-// behind = x_tire - x_front behind the front axle (X grows rearward): the wheelbase for the
-// rear tire, 0 for the front one. A rear tire ahead of the front one needs `behind` (STUDY-160).
-void derive_road_delays(rigid::Machine2DParameters& p, const YamlMap& tires) {
-  const double x_front = p.front_tire.contact.x();
-  const double scale = std::max({1.0, std::abs(x_front), std::abs(p.rear_tire.contact.x())});
-  for (const auto& [axle, t] : {std::pair("front", &p.front_tire), std::pair("rear", &p.rear_tire)})
-    for (const auto& [key, input] : {std::pair("normal_input", &t->normal_input), std::pair("tractive_input", &t->tractive_input)}) {
-      if (input->kind != rigid::GroundInput::Kind::road || input->behind_given) continue;
-      const double behind = t->contact.x() - x_front;
-      if (behind < -1e-9 * scale)
-        throw tires.map(axle).map(key).error(
-            "", "a rear tire on or behind the front tire (contact X >= the front tire's X, X growing rearward) to derive its road delay, or 'behind'",
-            fmt::format("contact X {} ahead of the front tire's {}", tires.map(axle).node()["contact"][0].Scalar(), tires.map("front").node()["contact"][0].Scalar()));
-      input->behind = std::max(0.0, behind);
-    }
-}
-
-rigid::CabMount mount(const YamlMap& m) {
-  m.allow_only({"position", "stiffness", "damping"});
-  return {m.point("position"), {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)}};
+template <class Machine>
+Machine& machine_of(std::variant<rigid::Machine2DParameters, rigid::Machine3DParameters>& m, const char* model) {
+  if (Machine* p = std::get_if<Machine>(&m)) return *p;
+  throw std::logic_error(std::string("the study's machine is not a ") + model + " machine");
 }
 
 }  // namespace
 
-std::vector<std::string> calibratable_parameters() {
-  return {"tires.front.normal.stiffness", "tires.front.tractive.stiffness", "tires.rear.normal.stiffness", "tires.rear.tractive.stiffness",
-          "tires.tractive.stiffness", "tires.contact_depth", "cab.front_mount.stiffness", "cab.rear_mount.stiffness", "cab.mass",
-          "cab.inertia", "plow.mass", "plow.inertia", "plow.bounce_tire.stiffness", "plow.lift_cylinder.stiffness", "soil.stiffness",
-          "frame.mass_per_length", "frame.added_masses.<name>.mass", "frame.added_masses.<name>.inertia"};
+const rigid::Machine2DParameters& machine_2d(const MachineParameters& m) { return machine_of<rigid::Machine2DParameters>(const_cast<MachineParameters&>(m), "2-D"); }
+rigid::Machine2DParameters& machine_2d(MachineParameters& m) { return machine_of<rigid::Machine2DParameters>(m, "2-D"); }
+const rigid::Machine3DParameters& machine_3d(const MachineParameters& m) { return machine_of<rigid::Machine3DParameters>(const_cast<MachineParameters&>(m), "3-D"); }
+rigid::Machine3DParameters& machine_3d(MachineParameters& m) { return machine_of<rigid::Machine3DParameters>(m, "3-D"); }
+
+rigid::VehicleModel build_vehicle_model(const MachineParameters& p) {
+  return std::visit([](const auto& m) { return rigid::build_vehicle_model(m); }, p);
+}
+
+std::vector<std::string> calibratable_parameters(const MachineParameters& p) {
+  return p.index() == 0 ? internal::calibratable_parameters_2d() : internal::calibratable_parameters_3d();
+}
+
+double get_parameter(const MachineParameters& p, const std::string& name) {
+  return p.index() == 0 ? internal::get_parameter_2d(machine_2d(p), name) : internal::get_parameter_3d(machine_3d(p), name);
+}
+
+void set_parameter(MachineParameters& p, const std::string& name, double value) {
+  if (p.index() == 0) internal::set_parameter_2d(machine_2d(p), name, value);
+  else internal::set_parameter_3d(machine_3d(p), name, value);
+}
+
+core::Quantity parameter_quantity(const MachineParameters& p, const std::string& name) {
+  return p.index() == 0 ? internal::parameter_quantity_2d(machine_2d(p), name) : internal::parameter_quantity_3d(name);
+}
+
+BodyInertia body_inertia(const MachineParameters& p, const DeclaredBodySize& b) {
+  return p.index() == 0 ? internal::body_inertia_2d(machine_2d(p), b) : internal::body_inertia_3d(machine_3d(p), b);
+}
+
+std::string study_model(const std::string& file) { return study_model(load_yaml_file(file), file); }
+
+std::string study_model(const YAML::Node& doc, const std::string& file) {
+  core::UnitSystem si = core::UnitSystem::si();
+  return YamlMap(doc, "", file, &si).text("model");
 }
 
 namespace {
 
-// The storage of a plain parameter, or nullptr for derived ones and unknown names.
-double* parameter_slot(rigid::Machine2DParameters& p, const std::string& name, Quantity& q) {
-  q = Quantity::translational_stiffness;
-  if (name == "tires.front.normal.stiffness") return &p.front_tire.normal.stiffness;
-  if (name == "tires.front.tractive.stiffness" || name == "tires.tractive.stiffness") return &p.front_tire.tractive.stiffness;
-  if (name == "tires.rear.normal.stiffness") return &p.rear_tire.normal.stiffness;
-  if (name == "tires.rear.tractive.stiffness") return &p.rear_tire.tractive.stiffness;
-  if (name == "cab.front_mount.stiffness") return &p.cab.front.vertical.stiffness;
-  if (name == "cab.rear_mount.stiffness") return &p.cab.rear.vertical.stiffness;
-  if (name == "plow.bounce_tire.stiffness") return &p.plow.bounce_tire.stiffness;
-  if (name == "plow.lift_cylinder.stiffness") return &p.plow.lift_cylinder.stiffness;
-  if (name == "soil.stiffness") return &p.soil.stiffness;
-  q = Quantity::translational_damping;
-  if (name == "soil.damping") return &p.soil.damping;  // C5, for sweeps
-  q = Quantity::mass;
-  if (name == "cab.mass") return &p.cab.mass;
-  if (name == "plow.mass") return &p.plow.mass;
-  q = Quantity::rotary_inertia;
-  if (name == "cab.inertia") return &p.cab.inertia;
-  if (name == "plow.inertia") return &p.plow.inertia;
-  q = Quantity::mass_per_length;
-  if (name == "frame.mass_per_length") return &p.frame.mass_per_length;
-  if (name.rfind("frame.added_masses.", 0) == 0) {
-    // frame.added_masses.<name>.mass or .inertia
-    const std::string rest = name.substr(19);
-    const std::size_t dot = rest.rfind('.');
-    if (dot == std::string::npos) return nullptr;
-    const std::string mass_name = rest.substr(0, dot), field = rest.substr(dot + 1);
-    for (rigid::AddedMass& a : p.frame.added_masses)
-      if (a.name == mass_name && field == "mass") return q = Quantity::mass, &a.mass;
-      else if (a.name == mass_name && field == "inertia") return q = Quantity::rotary_inertia, &a.inertia;
-  }
-  return nullptr;
-}
-
-}  // namespace
-
-core::Quantity parameter_quantity(const rigid::Machine2DParameters& p, const std::string& name) {
-  if (name == "tires.contact_depth") return Quantity::length;
-  rigid::Machine2DParameters copy = p;
-  Quantity q;
-  if (!parameter_slot(copy, name, q)) throw std::invalid_argument("unknown parameter '" + name + "'");
-  return q;
-}
-
-double get_parameter(const rigid::Machine2DParameters& p, const std::string& name) {
-  // The tractive springs' line of action, as a depth below the rails' axis.
-  if (name == "tires.contact_depth") return -0.5 * (p.front_tire.contact.y() + p.rear_tire.contact.y());
-  rigid::Machine2DParameters copy = p;
-  Quantity q;
-  const double* slot = parameter_slot(copy, name, q);
-  if (!slot) throw std::invalid_argument("unknown parameter '" + name + "'");
-  return *slot;
-}
-
-void set_parameter(rigid::Machine2DParameters& p, const std::string& name, double value) {
-  if (name == "tires.contact_depth") {
-    p.front_tire.contact.y() = -value;
-    p.rear_tire.contact.y() = -value;
-    return;
-  }
-  if (name == "tires.tractive.stiffness") {
-    // Front and rear together, keeping their ratio: one parameter for the x mode.
-    const double ratio = p.front_tire.tractive.stiffness > 0 ? p.rear_tire.tractive.stiffness / p.front_tire.tractive.stiffness : 1.0;
-    p.front_tire.tractive.stiffness = value;
-    p.rear_tire.tractive.stiffness = value * ratio;
-    return;
-  }
-  Quantity q;
-  double* slot = parameter_slot(p, name, q);
-  if (!slot) throw std::invalid_argument("unknown parameter '" + name + "'");
-  *slot = value;
-}
-
-namespace {
 // The study in an already-parsed document; `file` names it in messages.
-RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file);
-}  // namespace
-
-RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study_document(load_yaml_file(file), file); }
-
-RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) { return read_rigid_study_document(doc, file); }
-
-namespace {
 RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& file) {
   {
     // The model first: another model's keys would otherwise be reported as unknown.
@@ -204,7 +79,6 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
     const std::string model = top.text("model");
     if (model == "frame_transient")
       throw top.error("model", "a rigid-body study (rigid_2d; rigid_3d with framedyn run)", "'frame_transient' (a frame study: run it with framedyn frame-response)");
-    if (model == "rigid_3d") throw top.error("model", "rigid_2d (framedyn sweep varies the 2-D machine)", "'rigid_3d'");
     // The frame pipeline takes the 3-D model's six load components at the load points; the 2-D model
     // has no lateral force and no roll or yaw moment to give it (docs/theory/coupling.md section 17).
     if (model == "rigid_2d" && top.has("frame_response"))
@@ -212,216 +86,174 @@ RigidStudy read_rigid_study_document(const YAML::Node& doc, const std::string& f
                       "model: rigid_3d for the frame pipeline (it loads the frame with lateral forces and roll and yaw moments, which the "
                       "2-D model does not have; docs/theory/coupling.md section 17), or frame_output for the 2-D frame loads and resultants",
                       "a frame_response block in a rigid_2d study");
+    // Eq. 2.47's resultants are those of the 2-D model's one frame tube; the 3-D frame is the beam model's (STUDY-139).
+    if (model == "rigid_3d" && top.has("frame_output"))
+      throw top.error("frame_output",
+                      "model: rigid_2d for frame_output (the resultants of Eq. 2.47 along the 2-D model's one frame tube; the 3-D model "
+                      "gives its frame loads at points 24-31 in rigid.frame_loads and, with a frame_response block, the beam model's section "
+                      "forces and stresses along both rails)",
+                      "a frame_output block in a rigid_3d study");
   }
-  const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires",
-                                                          "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_output"});
+  const bool three_d = study_model(doc, file) == "rigid_3d";
+  // The top-level keys: the common ones and the model's own (any other model: the 2-D list, then its refusal below).
+  const StudyHeader header =
+      three_d ? read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle", "cab",
+                                              "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"})
+              : read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "cab", "tires", "plow",
+                                              "chain", "soil", "analysis", "calibration", "contacts", "frame_output"});
   RigidStudy s;
   s.file = file;
   s.name = header.name;
   s.units = header.units;
   YamlMap root(doc, "", file, &s.units);
   const std::string model = root.text("model");
-  if (model != "rigid_2d") throw root.error("model", "rigid_2d or rigid_3d (framedyn run), or frame_transient (framedyn frame-response)", "'" + model + "'");
+  if (model != "rigid_2d" && model != "rigid_3d")
+    throw root.error("model", "rigid_2d or rigid_3d (framedyn run), or frame_transient (framedyn frame-response)", "'" + model + "'");
 
-  rigid::Machine2DParameters& p = s.machine;
-  p.attachment = read_attachment(root);
-  p.contacts = read_contact_law(root);
+  // The machine: its model's builder.
+  const rigid::Attachment attachment = read_attachment(root);
+  const rigid::ContactLaw contacts = read_contact_law(root);
+  internal::StudyFrameParts frame_parts;
+  if (three_d) s.machine = internal::read_machine_3d(root, attachment, contacts, s.body_sizes, frame_parts);
+  else s.machine = internal::read_machine_2d(root, attachment, contacts, s.body_sizes);
 
-  const GroundBlock ground = read_ground(root, /*with_travel_angle=*/false);
-  p.ground_slope = ground.slope;
-  p.forward_speed = ground.forward_speed;
-
-  const YamlMap frame = root.map("frame");
-  frame.allow_only({"uniform_section", "added_masses"});
-  const YamlMap tube = frame.map("uniform_section");
-  tube.allow_only({"front_end", "length", "mass_per_length", "weight_per_length"});
-  p.frame.front_end = tube.number("front_end", Quantity::length);
-  p.frame.length = tube.positive("length", Quantity::length);
-  if (tube.has("mass_per_length") == tube.has("weight_per_length"))
-    throw tube.error("", "exactly one of 'mass_per_length' or 'weight_per_length'", tube.has("mass_per_length") ? "both" : "neither");
-  p.frame.mass_per_length = tube.has("mass_per_length") ? tube.non_negative("mass_per_length", Quantity::mass_per_length)
-                                                        : tube.non_negative("weight_per_length", Quantity::force_per_length) / kGravity;
-  const std::vector<YamlMap> added = frame.list_of_maps("added_masses");
-  if (added.size() > 30) throw frame.error("added_masses", "at most 30 added masses (the thesis's limit)", fmt::format("{}", added.size()));
-  require_distinct_names(added, "added mass", part_load_names_2d());
-  for (const YamlMap& a : added) {
-    a.allow_only({"name", "mass", "weight", "inertia", "radius_of_gyration", "position", "attachment", "dimensions", "distributed"});
-    rigid::AddedMass m;
-    m.name = a.text("name");
-    read_body_size(a, "frame.added_masses[" + m.name + "]", "frame.added_masses." + m.name + ".", {1}, s.body_sizes);
-    m.mass = a.mass(kGravity);
-    m.inertia = inertia_of(a, m.mass, "added mass " + m.name);
-    m.position = a.point("position");
-    m.attachment = a.has("attachment") ? a.point("attachment") : m.position;
-    p.frame.added_masses.push_back(m);
-  }
-  // The frame's x, z and theta_y need inertia: the tube or an added mass must weigh something.
-  if (!(p.frame.mass_per_length > 0) && p.frame.added_masses.empty())
-    throw tube.error(tube.has("mass_per_length") ? "mass_per_length" : "weight_per_length",
-                     "a frame with mass (a positive mass or weight per length, or frame.added_masses)", "0 and no added masses");
-
-  const YamlMap cab = root.map("cab");
-  cab.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "position", "front_mount", "rear_mount", "dimensions", "distributed"});
-  p.cab.mass = cab.mass(kGravity);
-  p.cab.inertia = inertia_of(cab, p.cab.mass, "cab");
-  // theta_v has no other inertia: a zero one would leave M singular.
-  if (!(p.cab.inertia > 0))
-    throw cab.error(cab.has("inertia") ? "inertia" : "radius_of_gyration", "a positive value (the cab's pitch theta_v needs inertia)", "0");
-  p.cab.cg = cab.point("position");
-  p.cab.front = mount(cab.map("front_mount"));
-  p.cab.rear = mount(cab.map("rear_mount"));
-  const std::size_t sizes_before_cab = s.body_sizes.size();
-  read_body_size(cab, "cab", "cab.", {1}, s.body_sizes);
-  if (s.body_sizes.size() > sizes_before_cab)
-    check_box_holds_points(s.body_sizes.back(), {{"c.g.", p.cab.cg}, {"front mount", p.cab.front.position}, {"rear mount", p.cab.rear.position}}, s.units);
-
-  const YamlMap tires = root.map("tires");
-  tires.allow_only({"front", "rear"});
-  p.front_tire = tire(tires.map("front"));
-  p.rear_tire = tire(tires.map("rear"));
-  derive_road_delays(p, tires);
-
-  if (auto soil = attachment_block(root, "soil", p.attachment != rigid::Attachment::none, "no soil data without an attachment", "a soil map")) {
-    soil->allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference"});
-    read_soil_law(*soil, p.soil, /*with_soil_line=*/true);
-  }
-
-  if (auto plow_block = attachment_block(root, "plow", p.attachment == rigid::Attachment::plow, "no plow data unless attachment is plow", "a plow map")) {
-    const YamlMap& plow = *plow_block;
-    plow.allow_only({"mass", "weight", "inertia", "radius_of_gyration", "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder",
-                     "dimensions", "distributed"});
-    rigid::Plow2D& pl = p.plow;
-    pl.mass = plow.mass(kGravity);
-    pl.inertia = inertia_of(plow, pl.mass, "plow");
-    pl.cg = plow.point("cg");
-    read_plow_linkage_to_bounce_tire(plow, pl, /*with_table=*/true);
-    const YamlMap cyl = plow.map("lift_cylinder");
-    cyl.allow_only({"frame_point", "arm_point", "stiffness", "damping"});
-    pl.cylinder_frame_point = cyl.point("frame_point");
-    pl.cylinder_arm_point = cyl.point("arm_point");
-    if (pl.cylinder_arm_point == pl.cylinder_frame_point)
-      throw cyl.error("arm_point", "a point apart from frame_point (a lift cylinder of nonzero length)", "frame_point's point");
-    pl.lift_cylinder = {cyl.non_negative("stiffness", Quantity::translational_stiffness), cyl.non_negative_or("damping", Quantity::translational_damping, 0.0)};
-    // The plow body is the shank (link l2) with what it carries: pins 9 and 10, the blade, the shaker, the bounce tire.
-    const std::size_t sizes_before_plow = s.body_sizes.size();
-    read_body_size(plow, "plow", "plow.", {1}, s.body_sizes);
-    if (s.body_sizes.size() > sizes_before_plow)
-      check_box_holds_points(s.body_sizes.back(),
-                             {{"c.g.", pl.cg}, {"upper joint", pl.linkage.upper_joint}, {"lower joint", pl.linkage.lower_joint},
-                              {"blade point", pl.blade_point}, {"shaker point", pl.shaker_point}, {"bounce tire point", pl.bounce_tire_point}},
-                             s.units);
-  }
-  if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
-    read_chain(*chain, p.chain);
-
+  // What to compute, the same keys in 2-D and 3-D.
   AnalysisBlock analysis = read_analysis(root);
   s.modes = analysis.modes;
   s.fixed_coordinates = std::move(analysis.fixed_coordinates);
   s.modal_soil = analysis.modal_soil;
   s.response = analysis.response;
-  if (auto fo = root.optional_map("frame_output")) {
-    fo->allow_only({"points", "height", "rail"});
-    FrameOutputRequest req;
-    req.points = fo->numbers("points", Quantity::length);
-    if (req.points.empty() || req.points.size() > 24)
-      throw fo->error("points", "a list of 1 to 24 X positions (the thesis's limit)", fmt::format("{} points", req.points.size()));
-    // The resultants of Eq. 2.47 exist only along the frame tube (FLT from its front end).
-    const double front = p.frame.front_end, rear = p.frame.front_end + p.frame.length, slack = 1e-9 * p.frame.length;
-    for (double x : req.points)
-      if (x < front - slack || x > rear + slack)
-        throw fo->error("points", fmt::format("X positions on the frame, from {:g} to {:g} {}", s.units.from_si(front, Quantity::length),
-                                              s.units.from_si(rear, Quantity::length), s.units.label(Quantity::length)),
-                        fmt::format("{:g}", s.units.from_si(x, Quantity::length)));
-    req.height = fo->number_or("height", Quantity::length, 0.0);
-    if (auto rail = fo->optional_map("rail")) {
-      rail->allow_only({"area", "second_moment", "top_fiber"});
-      req.rail_area = rail->positive("area", Quantity::area);
-      req.rail_second_moment = rail->positive("second_moment", Quantity::second_moment_of_area);
-      req.rail_top_fiber = rail->positive("top_fiber", Quantity::length);
-    }
-    s.frame_output = req;
-  }
+  if (auto fo = root.optional_map("frame_output")) s.frame_output = internal::read_frame_output(*fo, s.machine_2d(), s.units);  // 2-D (above)
   if (auto cal = root.optional_map("calibration"))
     s.calibration = read_calibration_request(
-        *cal, [&](const std::string& name) { return get_parameter(p, name); },
-        [&](const std::string& name) { return parameter_quantity(p, name); }, calibratable_parameters(), false);
-  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_2d(p, b); });
+        *cal, [&](const std::string& name) { return get_parameter(s.machine, name); },
+        [&](const std::string& name) { return parameter_quantity(s.machine, name); }, calibratable_parameters(s.machine), three_d);
+  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia(s.machine, b); });
+  if (three_d) internal::read_frame_response(root, file, frame_parts, s);
   // Build once now so that geometric errors (a toggle linkage, a massless
   // coordinate) are reported against the study file.
-  check_machine(p, s.fixed_coordinates, root, file);
-  for (const DeclaredBodySize& b : s.body_sizes) check_stated_inertia(b, body_inertia_2d(p, b), s.units);
+  check_machine(s.machine, s.fixed_coordinates, root, file);
+  for (const DeclaredBodySize& b : s.body_sizes) check_stated_inertia(b, body_inertia(s.machine, b), s.units);
   return s;
 }
+
+}  // namespace
+
+RigidStudy read_rigid_study(const std::string& file) { return read_rigid_study_document(load_yaml_file(file), file); }
+
+RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file) { return read_rigid_study_document(doc, file); }
+
+namespace {
+
+// The blade's (or boom's) motion and soil force at every sample, and the
+// peaks of that force (set_plow_force_peaks, one meaning in 2-D and 3-D);
+// the series are named as each model's response.csv has them: 2-D blade_x,
+// blade_z, plow_force_x, plow_force_z, the signed magnitude and the angle
+// (Eqs. 2.38-2.39); 3-D blade_x, blade_y, blade_z, soil_force_x, _y, _z.
+void blade_series(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& state, RigidResults& r) {
+  const rigid::Trajectory& tr = r.trajectory;
+  const std::size_t ns = tr.time.size();
+  const bool two_d = study.dimensions() == 2;
+  const rigid::Jacobian& j = model.multibody.points()[static_cast<std::size_t>(model.blade_point)].displacement;
+  Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
+  const char* force = two_d ? "plow_force" : "soil_force";
+  Series fx{std::string(force) + "_x", Quantity::force, {}}, fy{std::string(force) + "_y", Quantity::force, {}}, fz{std::string(force) + "_z", Quantity::force, {}};
+  Series mag{"plow_force_signed_magnitude", Quantity::force, {}}, angle{"plow_force_angle_deg", Quantity::dimensionless, {}};
+  std::vector<double> magnitude(ns);
+  std::vector<bool> cutting(ns);
+  for (std::size_t i = 0; i < ns; ++i) {
+    const Eigen::Vector3d d = j * tr.q[i];
+    bx.values.push_back(d.x());
+    by.values.push_back(d.y());
+    bz.values.push_back(d.z());
+    // The soil's force on the blade is minus the sum of the soil elements' pull on it.
+    const Eigen::Vector3d f = rigid::plow_force(model, state, tr.time[i], tr.q[i], tr.v[i]);
+    fx.values.push_back(f.x());
+    fy.values.push_back(f.y());
+    fz.values.push_back(f.z());
+    cutting[i] = rigid::soil_state_at(state, tr.time[i]).cutting;
+    if (!two_d) {
+      magnitude[i] = f.norm();
+      continue;
+    }
+    // Eq. 2.38-2.39 (with |RPFX|): magnitude positive for forward blade travel (RPFX < 0).
+    const Eigen::Vector2d f2(f.x(), f.z());
+    const double m = f2.norm();
+    mag.values.push_back(f2.x() < 0 ? m : -m);
+    magnitude[i] = m;
+    double phi;
+    if (f2.x() > 0) phi = -std::atan(f2.y() / std::abs(f2.x())) + M_PI;
+    else if (f2.x() < 0) phi = std::atan(f2.y() / std::abs(f2.x()));
+    else phi = (f2.y() >= 0 ? 1.0 : -1.0) * M_PI / 2;
+    angle.values.push_back(phi / kDegree);
+  }
+  const double shaker_hz = study.attachment() == rigid::Attachment::plow ? study.shaker_frequency() : 0.0;
+  set_plow_force_peaks(tr.time, bz.values, magnitude, cutting, shaker_hz, study.response->duration, r);
+  if (two_d)
+    for (Series* s : {&bx, &bz, &fx, &fz, &mag, &angle}) r.series.push_back(std::move(*s));
+  else
+    for (Series* s : {&bx, &by, &bz, &fx, &fy, &fz}) r.series.push_back(std::move(*s));
+}
+
 }  // namespace
 
 RigidResults run_rigid_study(const RigidStudy& study_in) {
   RigidStudy study = study_in;
   RigidResults r;
   if (study.calibration)
-    r.calibration = calibrate_parameters(study.machine, *study.calibration, get_parameter, set_parameter, [&](const rigid::VehicleModel& m) {
+    r.calibration = calibrate_parameters(study.machine, *study.calibration, [&](const rigid::VehicleModel& m) {
       return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
     });
   if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
-  for (core::Warning& w : body_size_warnings(study.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_2d(study.machine, b); },
+  for (core::Warning& w : body_size_warnings(study.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia(study.machine, b); },
                                              study.calibration, study.units))
     r.warnings.push_back(std::move(w));
-  const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
+  r.machine = study.machine;
+  const rigid::VehicleModel model = build_vehicle_model(study.machine);
   const std::optional<rigid::VehicleRunState> run =
       run_vehicle_study(model, study.modes, study.fixed_coordinates, study.modal_soil, study.response, study.units, r);
   if (!run) return r;
-  const ResponseRequest& req = *study.response;
   const rigid::VehicleRunState& state = *run;
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
-
-  // Element forces: spring + damper + static (Eq. 2.42), compression positive.
   const rigid::Multibody& mb = model.multibody;
-  for (std::size_t e = 0; e < mb.elements().size(); ++e)
-    if (mb.elements()[e].name.rfind("soil", 0) != 0)  // the soil's force is the plow/boom force below
-      r.series.push_back(element_force_series(model, state, tr, static_cast<int>(e)));
-  if (model.blade_point >= 0) {
-    const rigid::Jacobian& j = mb.points()[static_cast<std::size_t>(model.blade_point)].displacement;
-    Series bx{"blade_x", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
-    Series fx{"plow_force_x", Quantity::force, {}}, fz{"plow_force_z", Quantity::force, {}};
-    Series mag{"plow_force_signed_magnitude", Quantity::force, {}}, angle{"plow_force_angle_deg", Quantity::dimensionless, {}};
-    std::vector<double> magnitude(ns);
-    std::vector<bool> cutting(ns);
-    for (std::size_t i = 0; i < ns; ++i) {
-      const Eigen::Vector3d d = j * tr.q[i];
-      bx.values.push_back(d(0));
-      bz.values.push_back(d(2));
-      const Eigen::Vector3d f3 = rigid::plow_force(model, state, tr.time[i], tr.q[i], tr.v[i]);
-      const Eigen::Vector2d f(f3.x(), f3.z());
-      fx.values.push_back(f.x());
-      fz.values.push_back(f.y());
-      // Eq. 2.38-2.39 (with |RPFX|): magnitude positive for forward blade travel (RPFX < 0).
-      const double m = f.norm();
-      mag.values.push_back(f.x() < 0 ? m : -m);
-      magnitude[i] = m;
-      cutting[i] = rigid::soil_state_at(state, tr.time[i]).cutting;
-      double phi;
-      if (f.x() > 0) phi = -std::atan(f.y() / std::abs(f.x())) + M_PI;
-      else if (f.x() < 0) phi = std::atan(f.y() / std::abs(f.x()));
-      else phi = (f.y() >= 0 ? 1.0 : -1.0) * M_PI / 2;
-      angle.values.push_back(phi / kDegree);
+
+  // The recovered series, in each model's order of response.csv's columns.
+  if (study.dimensions() == 2)
+    // Element forces: spring + damper + static (Eq. 2.42), compression positive.
+    for (std::size_t e = 0; e < mb.elements().size(); ++e)
+      if (mb.elements()[e].name.rfind("soil", 0) != 0)  // the soil's force is the plow/boom force below
+        r.series.push_back(element_force_series(model, state, tr, static_cast<int>(e)));
+  if (model.blade_point >= 0) blade_series(study, model, state, r);
+  if (study.attachment() == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
+
+  if (study.dimensions() == 2) {
+    if (study.frame_output) {
+      const rigid::Machine2DParameters& p = study.machine_2d();
+      const FrameOutputRequest& fo = *study.frame_output;
+      r.frame_loads_2d = frame_loads_2d(model, p, state, tr);
+      r.resultants = frame_stress_resultants(model, p.frame, tr, r.frame_loads_2d, fo.points, fo.height);
+      if (fo.rail_area > 0) {
+        // Each of the two rails carries half of the whole frame's resultants (Eq. 2.47d).
+        r.rail_top_stress.assign(ns, std::vector<double>(fo.points.size(), 0.0));
+        for (std::size_t i = 0; i < ns; ++i)
+          for (std::size_t k = 0; k < fo.points.size(); ++k)
+            r.rail_top_stress[i][k] = 0.5 * r.resultants->srx[i][k] / fo.rail_area -
+                                      0.5 * r.resultants->srmy[i][k] * fo.rail_top_fiber / fo.rail_second_moment;
+      }
     }
-    const double shaker_hz = study.machine.attachment == rigid::Attachment::plow ? study.machine.plow.shaker_frequency : 0.0;
-    set_plow_force_peaks(tr.time, bz.values, magnitude, cutting, shaker_hz, req.duration, r);
-    for (Series* s : {&bx, &bz, &fx, &fz, &mag, &angle}) r.series.push_back(std::move(*s));
-  }
-  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
-  if (study.frame_output) {
-    const FrameOutputRequest& fo = *study.frame_output;
-    r.frame_loads = frame_loads_2d(model, study.machine, state, tr);
-    r.resultants = frame_stress_resultants(model, study.machine.frame, tr, r.frame_loads, fo.points, fo.height);
-    if (fo.rail_area > 0) {
-      // Each of the two rails carries half of the whole frame's resultants (Eq. 2.47d).
-      r.rail_top_stress.assign(ns, std::vector<double>(fo.points.size(), 0.0));
-      for (std::size_t i = 0; i < ns; ++i)
-        for (std::size_t k = 0; k < fo.points.size(); ++k)
-          r.rail_top_stress[i][k] = 0.5 * r.resultants->srx[i][k] / fo.rail_area -
-                                    0.5 * r.resultants->srmy[i][k] * fo.rail_top_fiber / fo.rail_second_moment;
-    }
+  } else {
+    const rigid::Machine3DParameters& p = study.machine_3d();
+    r.frame_loads_3d = frame_loads_3d(model, p, state, tr);
+    r.static_frame_loads_3d = static_frame_loads_3d(model, p);
+    // The tires' forces, vertical, longitudinal and lateral, as the 2-D model's tire normal and
+    // tractive forces (Eq. 2.42, compression positive): response.csv's last columns (issue 20).
+    // Before assess_response, so that rigid.steady.peaks holds each tire's peaks as the 2-D model
+    // holds its contacts' (issue 15); the detector watches only the blade and the frame loads, so
+    // reached_at does not depend on them.
+    for (const char* tire : {"front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire"})
+      for (const char* direction : {"_vertical", "_longitudinal", "_lateral"})
+        r.series.push_back(element_force_series(model, state, tr, mb.element_index(std::string(tire) + direction)));
   }
   assess_response(study, model, state, r);  // steady operation, validity warnings (issue 15)
   return r;

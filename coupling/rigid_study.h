@@ -1,6 +1,7 @@
-// Rigid-body studies (the thesis's CMW2D runs): a YAML study file describes
-// the machine and what to compute — natural frequencies with their dominant
-// coordinates, a forced response with force recovery. Reading and running are
+// Rigid-body studies (the thesis's CMW2D and CMW3D runs, model: rigid_2d or
+// rigid_3d): a YAML study file describes the machine and what to compute —
+// natural frequencies with their dominant coordinates, a forced response with
+// force recovery, the frame loads. Reading and running are
 // separate: read_rigid_study turns the file into plain data (SI), and
 // run_rigid_study computes results without touching files.
 // The study format: docs/user-guide.md, "Study files".
@@ -9,6 +10,7 @@
 #include <optional>
 #include <limits>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/error.h"
@@ -18,12 +20,16 @@ namespace YAML { class Node; }
 #include "coupling/contact_report.h"
 #include "coupling/static_report.h"
 #include "coupling/frame_loads_2d.h"
+#include "coupling/frame_loads_3d.h"
+#include "coupling/frame_study.h"
 #include "coupling/steady_report.h"
 #include "rigid/calibration.h"
 #include "rigid/calibration_limits.h"
 #include "rigid/machine_2d.h"
+#include "rigid/machine_3d.h"
 #include "rigid/rigid_modes.h"
 #include "rigid/time_integration.h"
+#include "rigid/vehicle_model.h"
 
 namespace framedyn::coupling {
 
@@ -91,13 +97,6 @@ struct DeclaredBodySize {
   std::vector<int> axes;         // the axes the model gives the body inertia about (3-D: 0, 1, 2; 2-D: 1)
 };
 
-// The machine parameters a calibration may adjust, by name (SI values).
-// Throw std::invalid_argument for an unknown name.
-std::vector<std::string> calibratable_parameters();
-double get_parameter(const rigid::Machine2DParameters& p, const std::string& name);
-void set_parameter(rigid::Machine2DParameters& p, const std::string& name, double value);
-core::Quantity parameter_quantity(const rigid::Machine2DParameters& p, const std::string& name);
-
 // Where to report the frame's stress resultants (Eq. 2.47) and the rail's
 // top-fiber stress: up to 24 output points along the frame.
 struct FrameOutputRequest {
@@ -108,24 +107,87 @@ struct FrameOutputRequest {
   double rail_top_fiber = 0.0;     // distance from the rail's axis to its top, m
 };
 
+// The machine of a study: the 2-D model's parameters (model: rigid_2d) or the
+// 3-D model's (model: rigid_3d), each turned into the one rigid::VehicleModel
+// by its builder (rigid::build_vehicle_model).
+using MachineParameters = std::variant<rigid::Machine2DParameters, rigid::Machine3DParameters>;
+
+// The machine's parameters of one model; a std::logic_error for the other
+// model's (a caller that asked a 2-D study for its 3-D machine).
+const rigid::Machine2DParameters& machine_2d(const MachineParameters& m);
+rigid::Machine2DParameters& machine_2d(MachineParameters& m);
+const rigid::Machine3DParameters& machine_3d(const MachineParameters& m);
+rigid::Machine3DParameters& machine_3d(MachineParameters& m);
+// The one vehicle model of either machine (rigid::build_vehicle_model).
+rigid::VehicleModel build_vehicle_model(const MachineParameters& m);
+
+// The machine parameters a calibration may adjust, by name (SI values), for
+// the machine's model (docs/user-guide.md, calibration). 2-D names:
+//   tires.<front|rear>.<normal|tractive>.stiffness, tires.tractive.stiffness (front and rear together),
+//   tires.contact_depth, cab.<front_mount|rear_mount>.stiffness, cab.mass, cab.inertia, plow.mass,
+//   plow.inertia, plow.bounce_tire.stiffness, plow.lift_cylinder.stiffness, soil.stiffness,
+//   (soil.damping, for sweeps), frame.mass_per_length, frame.added_masses.<name>.<mass|inertia>
+// 3-D names:
+//   tires.<front|rear>.<vertical|longitudinal|lateral>.stiffness  (both tires of the axle)
+//   tires.contact_depth (all four contacts), cab.<mounts|front_mounts|rear_mounts>.<x|y|z>.stiffness
+//   (all four, the two ahead of or behind the mounts' mean X), cab.mass, cab.inertia.<xx|yy|zz>
+//   frame.parts.mass_scale, frame.parts.inertia_scale.<xx|yy|zz> (the parts' total; setting it scales every part alike)
+//   front_axle.inertia.xx, front_axle.mass, plow.swing_spring.stiffness, soil.stiffness, soil.lateral.stiffness,
+//   plow.bounce_tire.stiffness, plow.lift_cylinder.stiffness, plow.mass
+// get/set/parameter_quantity throw std::invalid_argument for an unknown name.
+std::vector<std::string> calibratable_parameters(const MachineParameters& p);
+double get_parameter(const MachineParameters& p, const std::string& name);
+void set_parameter(MachineParameters& p, const std::string& name, double value);
+core::Quantity parameter_quantity(const MachineParameters& p, const std::string& name);
+
+// The `model:` key of a study file ("rigid_2d", "rigid_3d", ...); throws
+// core::InputError if the file cannot be read or has no such key.
+std::string study_model(const std::string& file);
+std::string study_model(const YAML::Node& doc, const std::string& file);  // of a parsed document
+
+// A vehicle study, 2-D or 3-D: the blocks every model reads the same way
+// (units, analysis: modes, fixed coordinates, modal soil and response;
+// calibration; contacts; the bodies' declared sizes) once, the machine of
+// its model, and the one block each model alone has, refused in the other
+// with the reason (docs/user-guide.md, "Study files": which keys are common).
 struct RigidStudy {
   std::string file;
   std::string name;
   core::UnitSystem units;
-  rigid::Machine2DParameters machine;
+  MachineParameters machine;
   bool modes = true;
   std::vector<std::string> fixed_coordinates;   // held in the modal analysis
   // The soil stiffness the modal analysis (and a calibration) sees:
-  // analysis.modal_soil = cutting (K5, the default), backing (REK K5) or none.
-  // The thesis does not say which CMW2D used; docs/theory/rigid.md, section 5.
+  // analysis.modal_soil = cutting (K5, the default: the state the response starts in, Eq. 11.7),
+  // backing (REK K5) or none. The thesis does not say which CMW2D used; docs/theory/rigid.md, section 5.
   rigid::ModalSoil modal_soil = rigid::ModalSoil::cutting;
   std::optional<ResponseRequest> response;
-  std::optional<CalibrationRequest> calibration;
-  std::optional<FrameOutputRequest> frame_output;
+  std::optional<CalibrationRequest> calibration;  // parameter names of calibratable_parameters(machine)
   std::vector<DeclaredBodySize> body_sizes;  // bodies with declared dimensions (section 15)
+  // 2-D only (STUDY-139 in a 3-D study): the frame loads and the resultants of Eq. 2.47 along the tube.
+  std::optional<FrameOutputRequest> frame_output;
+  // 3-D only (STUDY-142 in a 2-D study): the pipeline (issue 5), this run's
+  // frame loads at points 24-31 into the beam model of the frame
+  // (coupling/frame_study.h). Needs analysis.response; takes no `loads` key.
+  std::optional<FrameStudyRequest> frame_response;
+
+  int dimensions() const { return machine.index() == 0 ? 2 : 3; }
+  const char* model() const { return dimensions() == 2 ? "rigid_2d" : "rigid_3d"; }
+  const rigid::Machine2DParameters& machine_2d() const { return coupling::machine_2d(machine); }
+  rigid::Machine2DParameters& machine_2d() { return coupling::machine_2d(machine); }
+  const rigid::Machine3DParameters& machine_3d() const { return coupling::machine_3d(machine); }
+  rigid::Machine3DParameters& machine_3d() { return coupling::machine_3d(machine); }
+  rigid::Attachment attachment() const {
+    return std::visit([](const auto& m) { return m.attachment; }, machine);
+  }
+  double shaker_frequency() const {  // Hz; the plow's (0 without one)
+    return std::visit([](const auto& m) { return m.attachment == rigid::Attachment::plow ? m.plow.shaker_frequency : 0.0; }, machine);
+  }
 };
 
-// Throws core::InputError naming the file, line and key path.
+// The one reader of vehicle studies (model: rigid_2d or rigid_3d): the
+// common blocks once, the machine by its model's builder. Throws
+// core::InputError naming the file, line and key path.
 RigidStudy read_rigid_study(const std::string& file);
 // The same from a parsed document; `file` names it in messages and anchors relative paths.
 RigidStudy read_rigid_study(const YAML::Node& doc, const std::string& file);
@@ -165,14 +227,26 @@ struct VehicleResults {
   std::optional<double> average_peak_backing_force;
 };
 
-// The 2-D model's results: the common ones and its frame's resultants.
+// The results of a run of either model: the common ones (VehicleResults),
+// the machine as analysed and the frame loads of the model's own kind.
 struct RigidResults : VehicleResults {
-  // Frame loads and resultants (with a response and a frame_output request).
-  std::vector<FrameLoad2D> frame_loads;
+  MachineParameters machine;  // as analysed (after any calibration)
+  // 2-D, with a response and a frame_output request: the loads on the frame
+  // tube and its resultants (Eq. 2.47).
+  std::vector<FrameLoad2D> frame_loads_2d;
   std::optional<StressResultants> resultants;
   std::vector<std::vector<double>> rail_top_stress;  // Pa, [sample][output point]: (SRX/2)/A - (SRMY/2) c / I
+  // 3-D, with a response: the loads at points 24-31 and 19, over the run and
+  // at the static equilibrium (static_frame_loads_3d).
+  std::optional<FrameLoads3D> frame_loads_3d;
+  std::optional<FrameLoads3D> static_frame_loads_3d;
+
+  const rigid::Machine2DParameters& machine_2d() const { return coupling::machine_2d(machine); }
+  const rigid::Machine3DParameters& machine_3d() const { return coupling::machine_3d(machine); }
 };
 
+// The one runner: calibration, modes, statics, the response with its
+// recovered series, the model's frame loads, steady operation and warnings.
 RigidResults run_rigid_study(const RigidStudy& study);
 
 }  // namespace framedyn::coupling

@@ -7,7 +7,6 @@
 
 #include "coupling/frame_loads_2d.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
 #include "coupling/validity_warnings.h"
 
 namespace framedyn::coupling {
@@ -59,8 +58,7 @@ SteadyReport steady_report(const rigid::Trajectory& trajectory, double shaker_hz
   return rep;
 }
 
-template <class Study, class Results>
-void add_validity_warnings(const Study& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, Results& r) {
+void add_validity_warnings(const RigidStudy& study, const rigid::Multibody& model, double shaker_hz, const std::string& modes_label, RigidResults& r) {
   const ResponseRequest& req = *study.response;
   if (auto w = rotation_warning(largest_body_rotation(model, r.trajectory))) r.warnings.push_back(*w);
   const double window = switching_window(shaker_hz);
@@ -72,27 +70,36 @@ void add_validity_warnings(const Study& study, const rigid::Multibody& model, do
     if (auto w = steady_warning(r.steady.operation, r.steady.criterion, req.duration)) r.warnings.push_back(*w);
 }
 
-double shaker_of(rigid::Attachment a, double frequency) { return a == rigid::Attachment::plow ? frequency : 0.0; }
-
 }  // namespace
 
 void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& run, RigidResults& r) {
   if (!study.response) return;
-  const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
-  // The frame loads (computed here if the study did not ask for frame_output).
-  const std::vector<FrameLoad2D> computed = r.frame_loads.empty() ? frame_loads_2d(model, study.machine, run, r.trajectory) : std::vector<FrameLoad2D>{};
-  const std::vector<FrameLoad2D>& loads = r.frame_loads.empty() ? computed : r.frame_loads;
+  const double shaker_hz = study.shaker_frequency();
+  // The frame loads the detector watches: 2-D the loads on the tube (computed here if the study did not
+  // ask for frame_output), 3-D the six components at each load point.
   std::vector<History> frame;
-  for (const FrameLoad2D& l : loads) {
-    History fx{l.name + "_fx", Quantity::force, {}}, fz{l.name + "_fz", Quantity::force, {}}, my{l.name + "_my", Quantity::moment, l.moment};
-    for (const Eigen::Vector2d& f : l.force) {
-      fx.values.push_back(f.x());
-      fz.values.push_back(f.y());
+  if (study.dimensions() == 2) {
+    const std::vector<FrameLoad2D> computed =
+        r.frame_loads_2d.empty() ? frame_loads_2d(model, study.machine_2d(), run, r.trajectory) : std::vector<FrameLoad2D>{};
+    const std::vector<FrameLoad2D>& loads = r.frame_loads_2d.empty() ? computed : r.frame_loads_2d;
+    for (const FrameLoad2D& l : loads) {
+      History fx{l.name + "_fx", Quantity::force, {}}, fz{l.name + "_fz", Quantity::force, {}}, my{l.name + "_my", Quantity::moment, l.moment};
+      for (const Eigen::Vector2d& f : l.force) {
+        fx.values.push_back(f.x());
+        fz.values.push_back(f.y());
+      }
+      for (History* h : {&fx, &fz, &my}) frame.push_back(std::move(*h));
     }
-    for (History* h : {&fx, &fz, &my}) frame.push_back(std::move(*h));
+  } else if (r.frame_loads_3d) {
+    for (const LoadPointHistory& p : all_frame_loads(*r.frame_loads_3d).points)
+      for (int c = 0; c < 6; ++c) {
+        History h{p.name + "_" + kLoadComponents[c], c < 3 ? Quantity::force : Quantity::moment, {}};
+        for (Eigen::Index i = 0; i < p.values.rows(); ++i) h.values.push_back(p.values(i, c));
+        frame.push_back(std::move(h));
+      }
   }
   r.steady = steady_report(r.trajectory, shaker_hz, r.series, frame);
-  // The rail's top-fiber stress at the output points (frame_output.rail): peaks only.
+  // The rail's top-fiber stress at the output points (frame_output.rail, 2-D): peaks only.
   if (r.steady.assessed && !r.rail_top_stress.empty())
     for (std::size_t k = 0; k < r.rail_top_stress.front().size(); ++k) {
       std::vector<double> s;
@@ -100,26 +107,14 @@ void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, 
       r.steady.peaks.push_back({fmt::format("rail_top_stress_point_{}", k + 1), Quantity::stress,
                                 rigid::split_peaks(r.trajectory.time, s, r.steady.operation.reached_at)});
     }
-  add_validity_warnings(study, model.multibody, shaker_hz, fmt::format("with analysis.modal_soil: {}", modal_soil_key(study.modal_soil)), r);
-}
-
-void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model, RigidResults3D& r) {
-  if (!study.response) return;
-  const double shaker_hz = shaker_of(study.machine.attachment, study.machine.plow.shaker_frequency);
-  std::vector<History> frame;
-  if (r.frame_loads)
-    for (const LoadPointHistory& p : all_frame_loads(*r.frame_loads).points)
-      for (int c = 0; c < 6; ++c) {
-        History h{p.name + "_" + kLoadComponents[c], c < 3 ? Quantity::force : Quantity::moment, {}};
-        for (Eigen::Index i = 0; i < p.values.rows(); ++i) h.values.push_back(p.values(i, c));
-        frame.push_back(std::move(h));
-      }
-  r.steady = steady_report(r.trajectory, shaker_hz, r.series, frame);
-  // The default state is the one the response starts in; another one is named (its key's value).
-  add_validity_warnings(study, model.multibody, shaker_hz,
-                        study.modal_soil == rigid::ModalSoil::cutting ? std::string("of the 3-D model")
-                                                                       : fmt::format("of the 3-D model with analysis.modal_soil: {}", modal_soil_key(study.modal_soil)),
-                        r);
+  // The modes' label in the shaker_near_mode warning: 2-D names the modal soil state; 3-D names it
+  // only when it is not the default (the state the response starts in).
+  const std::string modes_label =
+      study.dimensions() == 2 ? fmt::format("with analysis.modal_soil: {}", modal_soil_key(study.modal_soil))
+      : study.modal_soil == rigid::ModalSoil::cutting
+          ? std::string("of the 3-D model")
+          : fmt::format("of the 3-D model with analysis.modal_soil: {}", modal_soil_key(study.modal_soil));
+  add_validity_warnings(study, model.multibody, shaker_hz, modes_label, r);
 }
 
 }  // namespace framedyn::coupling

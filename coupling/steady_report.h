@@ -37,14 +37,11 @@ struct SteadyReport {
 
 struct RigidStudy;
 struct RigidResults;
-struct RigidStudy3D;
-struct RigidResults3D;
 
 // After the response (and its series and frame loads) is in `r`: sets
 // r.steady and appends the validity warnings (rotation range, chattering,
 // shaker near a mode, steady not reached) to r.warnings.
 // `model` is the study's model, `run` the state its response left.
 void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& run, RigidResults& r);
-void assess_response(const RigidStudy3D& study, const rigid::VehicleModel& model, RigidResults3D& r);
 
 }  // namespace framedyn::coupling

@@ -34,7 +34,7 @@ void read_chain_into(const YamlMap& chain, Chain& c, ReadPoint point) {
 }
 
 template <class Plow>
-void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool with_table) {
+void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl) {
   const YamlMap link = plow.map("linkage");
   link.allow_only({"upper_pivot", "lower_pivot", "upper_joint", "lower_joint"});
   pl.linkage = {link.point("upper_pivot"), link.point("lower_pivot"), link.point("upper_joint"), link.point("lower_joint")};
@@ -54,13 +54,14 @@ void read_plow_linkage_to_bounce_tire_into(const YamlMap& plow, Plow& pl, bool w
   bounce.allow_only({"point", "stiffness", "damping", "input"});
   pl.bounce_tire_point = bounce.point("point");
   pl.bounce_tire = {bounce.non_negative("stiffness", Quantity::translational_stiffness), bounce.non_negative_or("damping", Quantity::translational_damping, 0.0)};
-  if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in, with_table);
+  if (auto in = bounce.optional_map("input")) pl.bounce_input = read_ground_input(*in);
 }
 
-template <class Parameters>
-void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
+}  // namespace
+
+void check_machine(const MachineParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file) {
   try {
-    const rigid::VehicleModel check = rigid::build_vehicle_model(p);
+    const rigid::VehicleModel check = build_vehicle_model(p);
     // Each value is in range (yaml_input.cpp); their products need not be: a 1e200 lbf/in spring 1e200 in from the CG.
     for (const auto& [name, matrix] : {std::pair<const char*, Eigen::MatrixXd>{"mass", check.m},
                                        {"stiffness", check.k_full}, {"damping", check.c_full}})
@@ -85,8 +86,6 @@ void check_machine_of(const Parameters& p, const std::vector<std::string>& fixed
   }
 }
 
-}  // namespace
-
 std::optional<YamlMap> attachment_block(const YamlMap& root, const std::string& key, bool wanted, const std::string& refusal,
                                         const std::string& found) {
   if (wanted) return root.map(key);
@@ -98,15 +97,6 @@ Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key) {
   const std::vector<double> v = m.numbers(key, Quantity::length);
   if (!m.has(key) || v.size() != 3) throw m.error(key, "a point [X, Y, Z]", m.has(key) ? fmt::format("{} numbers", v.size()) : "nothing");
   return {v[0], v[1], v[2]};
-}
-
-void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file) {
-  check_machine_of(p, fixed_coordinates, root, file);
-}
-void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file) {
-  check_machine_of(p, fixed_coordinates, root, file);
 }
 
 StudyHeader read_study_header(const YAML::Node& doc, const std::string& file, std::initializer_list<const char*> top_keys) {
@@ -145,10 +135,8 @@ rigid::SpringDamperValues read_spring_damper(const YamlMap& m) {
   return {m.non_negative("stiffness", Quantity::translational_stiffness), m.non_negative_or("damping", Quantity::translational_damping, 0.0)};
 }
 
-rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
-  if (with_table)
-    m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values", "class", "speed", "behind", "seed", "length"});
-  else m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "class", "speed", "behind", "seed", "length"});
+rigid::GroundInput read_ground_input(const YamlMap& m) {
+  m.allow_only({"kind", "amplitude", "frequency_hz", "phase_deg", "start", "duration", "times", "values", "class", "speed", "behind", "seed", "length"});
   rigid::GroundInput g;
   const std::string kind = m.text("kind");
   if (kind == "sine") {
@@ -161,7 +149,7 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
     g.amplitude = m.number("amplitude", Quantity::length);
     g.start = m.non_negative("start", Quantity::time);
     g.duration = m.positive("duration", Quantity::time);
-  } else if (kind == "table" && with_table) {
+  } else if (kind == "table") {
     g.kind = rigid::GroundInput::Kind::table;
     g.times = m.numbers("times", Quantity::time);
     g.values = m.numbers("values", Quantity::length);
@@ -189,7 +177,7 @@ rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table) {
     g.behind_given = m.has("behind");
     g.behind = g.behind_given ? m.non_negative("behind", Quantity::length) : 0.0;
   } else {
-    throw m.error("kind", with_table ? "sine, bump, table or road" : "sine, bump or road", "'" + kind + "'");
+    throw m.error("kind", "sine, bump, table or road", "'" + kind + "'");
   }
   return g;
 }
@@ -207,7 +195,12 @@ void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line
                        "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact), soil_line (from the point of "
                        "contact, carried rearward with the unpenetrated soil at VS) or cut_face (no spring while the blade cuts)",
                        "'" + reference + "'");
-    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil).
+    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil; STUDY-140).
+    if (reference == "soil_line")
+      throw soil.error("spring_reference",
+                       "equilibrium, contact or cut_face in a 3-D study (soil_line carries the springs' anchor rearward with the soil at VS, "
+                       "which only the 2-D model does: the 3-D model's soil anchors do not move; model: rigid_2d for soil_line)",
+                       "'soil_line'");
     throw soil.error("spring_reference",
                      "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or cut_face (no spring while the blade cuts)",
                      "'" + reference + "'");
@@ -226,11 +219,11 @@ void read_chain(const YamlMap& chain, rigid::Chain2D& c) {
 }
 void read_chain(const YamlMap& chain, rigid::Chain3D& c) { read_chain_into(chain, c, read_point3); }
 
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table) {
-  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl);
 }
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table) {
-  read_plow_linkage_to_bounce_tire_into(plow, pl, with_table);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl) {
+  read_plow_linkage_to_bounce_tire_into(plow, pl);
 }
 
 ResponseRequest read_response_request(const YamlMap& r) {
@@ -820,6 +813,51 @@ std::optional<double> average_cycle_peak(const std::vector<double>& time, const 
   });
   if (counted > 0) return sum / counted;
   return std::nullopt;
+}
+
+}  // namespace framedyn::coupling
+
+namespace framedyn::coupling {
+
+rigid::CalibrationResult calibrate_parameters(MachineParameters& parameters, const CalibrationRequest& c,
+                                              const std::function<std::vector<rigid::RigidMode>(const rigid::VehicleModel&)>& modes) {
+  CalibrationRequest request = c;
+  {
+    // Measured shapes seen through the nominal machine (the calibrated
+    // parameters do not move its points or change its coordinates).
+    const rigid::VehicleModel nominal = build_vehicle_model(parameters);
+    const auto jacobian = [&](const std::vector<double>& point) {
+      // Frame points are [X, Z] in 2-D, [X, Y, Z] in 3-D.
+      return nominal.dimensions == 2 ? rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), 0.0, point.at(1)))
+                                     : rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
+    };
+    for (std::size_t t = 0; t < c.shapes.size(); ++t)
+      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.multibody, jacobian);
+  }
+  const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
+    MachineParameters p = parameters;
+    for (std::size_t i = 0; i < values.size(); ++i) set_parameter(p, c.parameters[i], values[i]);
+    return modes(build_vehicle_model(p));
+  };
+  rigid::ModeFamily family;
+  if (c.symmetric_modes) {
+    const rigid::VehicleModel nominal = build_vehicle_model(parameters);
+    family = calibration_mode_family(c, nominal.multibody.coordinate_names());
+    std::size_t n = 0;
+    const auto modes_now = modes(nominal);
+    for (const rigid::RigidMode& m : modes_now) n += family(m) ? 1 : 0;
+    if (n < c.targets.size())
+      throw core::InputError(c.pair_with_where, fmt::format("as many modes symmetric about the X-Z plane as targets ({})", c.targets.size()),
+                             fmt::format("{} of the machine's {} modes (a machine not symmetric about X-Z has none)", n, modes_now.size()));
+  }
+  rigid::CalibrationResult result;
+  try {
+    result = run_calibration(request, [&](const std::string& name) { return get_parameter(parameters, name); }, modes_of, family);
+  } catch (const rigid::UnderdeterminedFit& e) {
+    throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
+  }
+  for (std::size_t i = 0; i < c.parameters.size(); ++i) set_parameter(parameters, c.parameters[i], result.fitted[i]);
+  return result;
 }
 
 }  // namespace framedyn::coupling

@@ -1,5 +1,5 @@
 // Readers of the YAML blocks that the 2-D and the 3-D rigid-body study files
-// share (coupling/rigid_study.h, coupling/rigid_study_3d.h): the header
+// share (coupling/rigid_study.h, coupling/study_machine.h): the header
 // (format version, name, units), the attachment, spring-dampers, ground
 // inputs, the soil law, the chain, the plow's linkage, shaker and bounce
 // tire, analysis.response and the calibration block. Each reads strictly in
@@ -59,12 +59,13 @@ Eigen::Vector3d read_point3(const YamlMap& m, const std::string& key);
 // {stiffness, damping} (damping optional, 0).
 rigid::SpringDamperValues read_spring_damper(const YamlMap& m);
 
-// A reference ground input: kind sine or bump, and with `with_table` also table.
-rigid::GroundInput read_ground_input(const YamlMap& m, bool with_table);
+// A reference ground input: kind sine, bump, table or road (the same under a 2-D and a 3-D tire).
+rigid::GroundInput read_ground_input(const YamlMap& m);
 
 // The soil law's keys (after the caller's allow_only): stiffness, damping,
 // stiffness_reduction, damping_reduction, spring_reference (equilibrium,
-// contact, and with `with_soil_line` soil_line: 2-D only).
+// contact, and with `with_soil_line` soil_line: 2-D only; refused in 3-D with
+// the reason, STUDY-140).
 void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line);
 
 // The chain block: boom_point, chain_pin ([X, Z] in 2-D, [X, Y, Z] in 3-D),
@@ -73,17 +74,14 @@ void read_chain(const YamlMap& chain, rigid::Chain2D& c);
 void read_chain(const YamlMap& chain, rigid::Chain3D& c);
 
 // The plow's keys from linkage to bounce_tire (after cg): the four-bar
-// linkage, blade point, shaker and bounce tire (ground input `with_table`).
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl, bool with_table);
-void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl, bool with_table);
+// linkage, blade point, shaker and bounce tire (with its ground input).
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow2D& pl);
+void read_plow_linkage_to_bounce_tire(const YamlMap& plow, rigid::Plow3D& pl);
 
 // Builds the machine once so that geometric errors (a toggle linkage, a
 // massless coordinate) are reported against the study file, and checks the
 // names of analysis.fixed_coordinates.
-void check_machine(const rigid::Machine2DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file);
-void check_machine(const rigid::Machine3DParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root,
-                   const std::string& file);
+void check_machine(const MachineParameters& p, const std::vector<std::string>& fixed_coordinates, const YamlMap& root, const std::string& file);
 
 // analysis.response.
 ResponseRequest read_response_request(const YamlMap& r);
@@ -179,6 +177,11 @@ struct BodyInertia {
 void bound_inertias_by_body_sizes(CalibrationRequest& c, const std::vector<DeclaredBodySize>& sizes,
                                   const std::function<BodyInertia(const DeclaredBodySize&)>& inertia_of);
 
+// A declared body's mass and inertias in the machine of either model
+// (DeclaredBodySize::body: 2-D an added mass of the frame, the cab or the
+// plow, about Y; 3-D any part, about its own axes); zero for an unknown body.
+BodyInertia body_inertia(const MachineParameters& p, const DeclaredBodySize& b);
+
 // A stated radius of gyration beyond the corners of its body's declared box
 // (Eq. 14.3: no mass inside the box reaches it) is an InputError at the
 // body's dimensions key: the study's statements contradict each other.
@@ -195,50 +198,12 @@ std::vector<core::Warning> body_size_warnings(const std::vector<DeclaredBodySize
                                               const std::optional<CalibrationRequest>& calibration, const core::UnitSystem& units);
 
 // Calibrates `parameters` in place (run_calibration, then the fitted values
-// set): get(p, name) and set(p, name, value) read and write a named
-// parameter, modes(model) gives a vehicle model's modes as the analysis sees
-// them (the model built from the trial parameters by rigid::build_vehicle_model).
-// A fit the targets cannot determine is an InputError at the calibration block.
-template <class Parameters, class Get, class Set, class Modes>
-rigid::CalibrationResult calibrate_parameters(Parameters& parameters, const CalibrationRequest& c, Get get, Set set, Modes modes) {
-  CalibrationRequest request = c;
-  {
-    // Measured shapes seen through the nominal machine (the calibrated
-    // parameters do not move its points or change its coordinates).
-    const rigid::VehicleModel nominal = rigid::build_vehicle_model(parameters);
-    const auto jacobian = [&](const std::vector<double>& point) {
-      // Frame points are [X, Z] in 2-D, [X, Y, Z] in 3-D.
-      return nominal.dimensions == 2 ? rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), 0.0, point.at(1)))
-                                     : rigid::frame_point_jacobian(nominal, Eigen::Vector3d(point.at(0), point.at(1), point.at(2)));
-    };
-    for (std::size_t t = 0; t < c.shapes.size(); ++t)
-      if (c.shapes[t]) request.targets[t].shape = shape_target(*c.shapes[t], nominal.multibody, jacobian);
-  }
-  const rigid::ModesOfParameters modes_of = [&](const std::vector<double>& values) {
-    Parameters p = parameters;
-    for (std::size_t i = 0; i < values.size(); ++i) set(p, c.parameters[i], values[i]);
-    return modes(rigid::build_vehicle_model(p));
-  };
-  rigid::ModeFamily family;
-  if (c.symmetric_modes) {
-    const rigid::VehicleModel nominal = rigid::build_vehicle_model(parameters);
-    family = calibration_mode_family(c, nominal.multibody.coordinate_names());
-    std::size_t n = 0;
-    const auto modes_now = modes(nominal);
-    for (const rigid::RigidMode& m : modes_now) n += family(m) ? 1 : 0;
-    if (n < c.targets.size())
-      throw core::InputError(c.pair_with_where, fmt::format("as many modes symmetric about the X-Z plane as targets ({})", c.targets.size()),
-                             fmt::format("{} of the machine's {} modes (a machine not symmetric about X-Z has none)", n, modes_now.size()));
-  }
-  rigid::CalibrationResult result;
-  try {
-    result = run_calibration(request, [&](const std::string& name) { return get(parameters, name); }, modes_of, family);
-  } catch (const rigid::UnderdeterminedFit& e) {
-    throw core::InputError(c.where, "no more parameters than independent targets, or calibration.regularization.weight", e.what());
-  }
-  for (std::size_t i = 0; i < c.parameters.size(); ++i) set(parameters, c.parameters[i], result.fitted[i]);
-  return result;
-}
+// set with set_parameter): modes(model) gives a vehicle model's modes as the
+// analysis sees them (the model built from the trial parameters by
+// build_vehicle_model). A fit the targets cannot determine is an InputError at
+// the calibration block.
+rigid::CalibrationResult calibrate_parameters(MachineParameters& parameters, const CalibrationRequest& c,
+                                              const std::function<std::vector<rigid::RigidMode>(const rigid::VehicleModel&)>& modes);
 
 // The forced response from rest (q = v = 0 at t = 0), event-located or RK4
 // as requested, of a switched system; the coordinate names (or none) name the

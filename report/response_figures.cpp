@@ -31,10 +31,10 @@ void add_frame_figures(const coupling::RigidStudy& study, const coupling::RigidR
   const core::UnitSystem& u = study.units;
   const coupling::StressResultants& sr = *r.resultants;
   const std::vector<double>& time = r.trajectory.time;
-  const double period = study.machine.attachment == rigid::Attachment::plow && study.machine.plow.shaker_frequency > 0
-                            ? 1.0 / study.machine.plow.shaker_frequency
+  const double period = study.attachment() == rigid::Attachment::plow && study.shaker_frequency() > 0
+                            ? 1.0 / study.shaker_frequency()
                             : 0.06;
-  const bool plow = study.machine.attachment == rigid::Attachment::plow;
+  const bool plow = study.attachment() == rigid::Attachment::plow;
   std::vector<std::size_t> instants;
   for (double fraction : {1.0, 2.0 / 3.0, 1.0 / 3.0}) {
     const double t = time.back() - fraction * period;
@@ -110,7 +110,7 @@ std::vector<std::string> write_response_figures(const coupling::RigidStudy& stud
   };
   for (const Figure& f : figures) {
     const coupling::Series* s = find_series(r, f.series);
-    if (f.attachment != study.machine.attachment) continue;
+    if (f.attachment != study.attachment()) continue;
     if (!s || s->values.size() != time.size() || time.empty()) continue;
     report::LinePlot plot;
     plot.title = f.title + ": " + study.name;

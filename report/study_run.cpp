@@ -142,74 +142,51 @@ std::vector<std::string> write_load_point_figures(const coupling::LoadHistory& h
 }
 
 // ---- The vehicle studies (rigid_2d, rigid_3d): one set of writers --------------------------------
-// The summary parts, the files and the stages that are the same in 2-D and 3-D are written once, from
-// coupling::VehicleResults and the study's common fields (docs/theory/coupling.md section 15); each
-// model adds only its extras (2-D: the frame_output block's loads and resultants, the response
-// figures; 3-D: the road inputs, the frame loads at the load points and the frame pipeline).
-
-// The fields of a vehicle study the common writers read, the same in 2-D and 3-D.
-struct VehicleStudyFields {
-  const char* model;  // rigid_2d or rigid_3d
-  const std::string& name;
-  const core::UnitSystem& units;
-  const std::vector<std::string>& fixed_coordinates;
-  rigid::ModalSoil modes_state;  // the contact state rigid.modes is in
-  const std::optional<coupling::ResponseRequest>& response;
-  const std::optional<coupling::CalibrationRequest>& calibration;
-  std::function<Quantity(const std::string&)> parameter_quantity;  // of a calibrated parameter
-};
-
-VehicleStudyFields vehicle_fields(const coupling::RigidStudy& s) {
-  return {"rigid_2d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration,
-          [&s](const std::string& name) { return coupling::parameter_quantity(s.machine, name); }};
-}
-VehicleStudyFields vehicle_fields(const coupling::RigidStudy3D& s) {
-  return {"rigid_3d", s.name, s.units, s.fixed_coordinates, s.modal_soil, s.response, s.calibration, coupling::parameter_quantity_3d};
-}
+// The summary parts, the files and the stages are written once from coupling::RigidStudy and
+// coupling::RigidResults (docs/theory/coupling.md section 15); the frame is each model's own (2-D: the
+// frame_output block's loads and resultants, the response figures; 3-D: the frame loads at the load
+// points and the frame pipeline).
 
 // The stage message of the run.
-std::string running_stage(const coupling::RigidStudy& s) { return s.response ? "modes and forced response" : "modes"; }
-std::string running_stage(const coupling::RigidStudy3D& s) {
+std::string running_stage(const coupling::RigidStudy& s) {
+  if (s.dimensions() == 2) return s.response ? "modes and forced response" : "modes";
   return s.response ? "rigid-body modes and forced response (3-D)" : "rigid-body modes (3-D)";
 }
 
 // The model's keys after rigid.fixed_coordinates: the road inputs' delays behind the front axle
 // (docs/theory/fatigue.md section 11), the same in 2-D and 3-D (coupling::road_delays).
-template <class Machine>
-void add_road_inputs(nlohmann::ordered_json& rigid, const Machine& machine, const core::UnitSystem& u) {
+void add_road_inputs(nlohmann::ordered_json& rigid, const coupling::RigidStudy& study) {
+  const core::UnitSystem& u = study.units;
   const double lf = 1.0 / u.to_si_factor(Quantity::length);
   nlohmann::ordered_json road = nlohmann::ordered_json::array();
-  for (const coupling::RoadDelay& d : coupling::road_delays(machine))
+  for (const coupling::RoadDelay& d : std::visit([](const auto& m) { return coupling::road_delays(m); }, study.machine))
     road.push_back({{"tire", d.tire}, {"behind", report::quantity(d.behind * lf, u.label(Quantity::length))},
                     {"delay", report::quantity(d.delay, "s")}, {"source", d.given ? "behind (given)" : "derived from the tire positions"}});
   if (!road.empty()) rigid["road_inputs"] = road;
 }
-void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy& study) { add_road_inputs(rigid, study.machine, study.units); }
-void add_model_keys(nlohmann::ordered_json& rigid, const coupling::RigidStudy3D& study) { add_road_inputs(rigid, study.machine, study.units); }
 
 // The summary's rigid block up to the response: model, dofs, coordinates, fixed coordinates, the
-// model's keys, modes (rigid_modes.csv), modes by contact state, the static contacts, the calibration.
-template <class Study>
-nlohmann::ordered_json rigid_block(const Study& study, const VehicleStudyFields& s, const coupling::VehicleResults& r,
-                                   const core::ResultsFolder& folder) {
+// road inputs, modes (rigid_modes.csv), modes by contact state, the static contacts, the calibration.
+nlohmann::ordered_json rigid_block(const coupling::RigidStudy& s, const coupling::RigidResults& r, const core::ResultsFolder& folder) {
   nlohmann::ordered_json rigid;
-  rigid["model"] = s.model;
+  rigid["model"] = s.model();
   rigid["dofs"] = r.coordinates.size();
   rigid["coordinates"] = r.coordinates;
   rigid["fixed_coordinates"] = s.fixed_coordinates;
-  add_model_keys(rigid, study);
+  add_road_inputs(rigid, s);
   rigid["modes"] = report::write_rigid_modes(r.coordinates, r.modes, folder);
-  rigid["modes_state"] = coupling::contact_state_name(s.modes_state);
+  rigid["modes_state"] = coupling::contact_state_name(s.modal_soil);
   rigid["modes_by_state"] = modes_by_state_json(r.modes_by_state);
   rigid["static"] = static_json(r.static_contacts, s.units);
   if (r.calibration && s.calibration)
-    rigid["calibration"] = report::write_calibration(*s.calibration, *r.calibration, s.units, s.parameter_quantity, folder);
+    rigid["calibration"] = report::write_calibration(*s.calibration, *r.calibration, s.units,
+                                                     [&s](const std::string& name) { return coupling::parameter_quantity(s.machine, name); }, folder);
   return rigid;
 }
 
 // With a response: rigid.response (method, steps, the blade's peaks), rigid.contacts, rigid.steady, and
 // (to a folder) response.csv (time, coordinates, recovered series) and events.csv.
-void add_response(const VehicleStudyFields& s, const coupling::VehicleResults& r, const core::ResultsFolder& folder, nlohmann::ordered_json& rigid) {
+void add_response(const coupling::RigidStudy& s, const coupling::RigidResults& r, const core::ResultsFolder& folder, nlohmann::ordered_json& rigid) {
   const core::UnitSystem& u = s.units;
   const rigid::Trajectory& tr = r.trajectory;
   nlohmann::ordered_json resp;
@@ -248,10 +225,9 @@ void add_response(const VehicleStudyFields& s, const coupling::VehicleResults& r
   folder.write_text("events.csv", ev.str());
 }
 
-// The 2-D response's extras: with frame_output, the frame loads (frame_loads.csv) and the stress
+// The 2-D response's frame: with frame_output, the frame loads (frame_loads.csv) and the stress
 // resultants of Eq. 2.47 with the rail's top-fiber stress (frame_resultants.csv, rigid.frame).
-void add_response_extras(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions&, const core::ResultsFolder& folder,
-                         nlohmann::ordered_json& rigid, StudyRun&) {
+void add_frame_output_2d(const coupling::RigidStudy& study, const coupling::RigidResults& r, const core::ResultsFolder& folder, nlohmann::ordered_json& rigid) {
   if (!r.resultants) return;
   const core::UnitSystem& u = study.units;
   const rigid::Trajectory& tr = r.trajectory;
@@ -260,12 +236,12 @@ void add_response_extras(const coupling::RigidStudy& study, const coupling::Rigi
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force);
   const double mf = 1.0 / u.to_si_factor(Quantity::moment), sf = 1.0 / u.to_si_factor(Quantity::stress);
   std::vector<std::string> lh = {report::column("time", u.label(Quantity::time))};
-  for (const coupling::FrameLoad2D& l : r.frame_loads)
+  for (const coupling::FrameLoad2D& l : r.frame_loads_2d)
     for (const char* c : {"_fx", "_fz", "_my"}) lh.push_back(report::column(l.name + c, std::string(c) == "_my" ? M : F));
   report::CsvTable lcsv(lh);
   for (std::size_t i = 0; tables && i < tr.time.size(); ++i) {
     lcsv.row().add(tr.time[i]);
-    for (const coupling::FrameLoad2D& l : r.frame_loads) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
+    for (const coupling::FrameLoad2D& l : r.frame_loads_2d) lcsv.add(l.force[i].x() * ff).add(l.force[i].y() * ff).add(l.moment[i] * mf);
   }
   if (tables) folder.write_text("frame_loads.csv", lcsv.str());
   const coupling::StressResultants& sr = *r.resultants;
@@ -303,26 +279,26 @@ void add_response_extras(const coupling::RigidStudy& study, const coupling::Rigi
   rigid["frame"] = {{"units", {{"x", L}, {"force", F}, {"moment", M}, {"stress", u.label(Quantity::stress)}}},
                     {"loads", [&] {
                        std::vector<std::string> names;
-                       for (const auto& l : r.frame_loads) names.push_back(l.name);
+                       for (const auto& l : r.frame_loads_2d) names.push_back(l.name);
                        return names;
                      }()},
                     {"output_points", points}};
 }
 
-// The 3-D response's extras: the frame loads at the load points 24-31 and the attachment's at point 19
+// The 3-D response's frame loads at the load points 24-31 and the attachment's at point 19
 // (frame_loads.csv, rigid.frame_loads' peaks) and, with figures, the load-point figures (Figures 22-24).
-void add_response_extras(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options,
-                         const core::ResultsFolder& folder, nlohmann::ordered_json& rigid, StudyRun& run) {
-  if (!r.frame_loads) return;
+void add_load_points_3d(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions& options,
+                        const core::ResultsFolder& folder, nlohmann::ordered_json& rigid, StudyRun& run) {
+  if (!r.frame_loads_3d) return;
   const core::UnitSystem& u = study.units;
   const double lf = 1.0 / u.to_si_factor(Quantity::length), ff = 1.0 / u.to_si_factor(Quantity::force), mf = 1.0 / u.to_si_factor(Quantity::moment);
-  if (!folder.in_memory()) folder.write_text("frame_loads.csv", coupling::format_load_history(coupling::all_frame_loads(*r.frame_loads), u));
+  if (!folder.in_memory()) folder.write_text("frame_loads.csv", coupling::format_load_history(coupling::all_frame_loads(*r.frame_loads_3d), u));
   if (options.figures) {
-    const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads->points, study.machine.attachment, study.name, u, folder);
+    const std::vector<std::string> drawn = write_load_point_figures(r.frame_loads_3d->points, study.attachment(), study.name, u, folder);
     run.figures.insert(run.figures.end(), drawn.begin(), drawn.end());
   }
   nlohmann::ordered_json loads;
-  for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads).points) {
+  for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads_3d).points) {
     nlohmann::ordered_json jp;
     jp["location"] = {{"value", {p.location.x() * lf, p.location.y() * lf, p.location.z() * lf}}, {"unit", u.label(Quantity::length)}};
     for (int c = 0; c < 6; ++c) {
@@ -334,17 +310,6 @@ void add_response_extras(const coupling::RigidStudy3D& study, const coupling::Ri
     loads[p.name] = jp;
   }
   rigid["frame_loads"] = loads;
-}
-
-// After the rigid block and its warnings, 2-D: the response figures.
-void finish_model(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions& options, const Stage& stage,
-                  core::ResultsFolder& folder, nlohmann::ordered_json&, StudyRun& run, StudyRunDetails& details) {
-  if (options.figures) {
-    stage("figures");
-    run.figures = report::write_response_figures(study, r, folder);
-  }
-  details.study_2d = study;
-  details.results_2d = r;
 }
 
 // The frame block's keys that come from the frame's modes, loads and rails (report::frame_summary and
@@ -386,19 +351,17 @@ bool summary_needs_frame(const std::vector<std::string>& paths) {
 
 // After the rigid block and its warnings, 3-D: the pipeline, this run's frame loads into the beam model
 // of the frame (summary frame and fatigue blocks, the frame's files and figures).
-void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResults3D& r, const StudyRunOptions& options, const Stage& stage,
+void run_pipeline(const coupling::RigidStudy& study, const coupling::RigidResults& r, const StudyRunOptions& options, const Stage& stage,
                   core::ResultsFolder& folder, nlohmann::ordered_json& j, StudyRun& run, StudyRunDetails& details) {
-  details.study_3d = study;
-  details.results_3d = r;
   if (!study.frame_response) return;
   // A summary read only in its input and rigid blocks, in memory (a design whose outputs are all the
   // vehicle's, a sweep): the frame is not run at all.
   if (!options.out && options.summary_outputs && !summary_needs_frame(*options.summary_outputs)) return;
   const core::UnitSystem& u = study.units;
   // Every load on the frame (points 24-31 and the attachment's at point 19).
-  const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+  const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads_3d);
   stage("frame transient (pipeline)");
-  const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads);  // at the static equilibrium
+  const coupling::LoadHistory static_loads = coupling::all_frame_loads(*r.static_frame_loads_3d);  // at the static equilibrium
   // A summary read only where no hot spot shows, in memory: the frame's stress histories are skipped.
   const bool hot_spots = options.out || !options.summary_outputs || summary_needs_hot_spots(*options.summary_outputs);
   std::optional<coupling::FrameStudyRequest> summary_only;
@@ -435,9 +398,9 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
     j["frame"]["compared_supports"].push_back(c);
   }
   // The shaker near an elastic mode of the frame model (Eq. 8.3's band, on the beam model's modes).
-  if (study.machine.attachment == rigid::Attachment::plow) {
+  if (study.attachment() == rigid::Attachment::plow) {
     const std::vector<double> frame_hz(frame.frequencies_hz.data(), frame.frequencies_hz.data() + frame.frequencies_hz.size());
-    add_warnings(j, coupling::frame_resonance_warnings(study.machine.plow.shaker_frequency, frame_hz, study.frame_response->mesh.filename().string()),
+    add_warnings(j, coupling::frame_resonance_warnings(study.shaker_frequency(), frame_hz, study.frame_response->mesh.filename().string()),
                  options.warning);
   }
   if (!options.figures) return;
@@ -468,36 +431,41 @@ void finish_model(const coupling::RigidStudy3D& study, const coupling::RigidResu
   }
 }
 
-// model: rigid_2d or rigid_3d, one runner for both: read, run (modes with their dominant coordinates, a
-// forced response with recovered forces), then the summary, rigid_modes.csv, response.csv and
-// events.csv written once for both models, and each model's extras (above).
-template <class Study, class Results>
-StudyRun run_vehicle(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options, const Stage& stage,
-                     Study (*read)(const YAML::Node&, const std::string&), Results (*run_model)(const Study&)) {
+// model: rigid_2d or rigid_3d, one reader, one runner and one set of writers for both: read, run
+// (modes with their dominant coordinates, a forced response with recovered forces), then the summary,
+// rigid_modes.csv, response.csv and events.csv, and the frame: 2-D the frame_output block's loads and
+// resultants and the response figures; 3-D the frame loads at the load points and the pipeline.
+StudyRun run_vehicle(const YAML::Node& doc, const std::filesystem::path& file, const StudyRunOptions& options, const Stage& stage) {
   const std::string file_s = file.string();
   stage("reading " + file_s);
-  const Study study = read(doc, file_s);
-  const VehicleStudyFields s = vehicle_fields(study);
+  const coupling::RigidStudy study = coupling::read_rigid_study(doc, file_s);
   StudyRun run;
-  run.model = s.model;
+  run.model = study.model();
   stage(running_stage(study));
-  const Results r = run_model(study);
+  const coupling::RigidResults r = coupling::run_rigid_study(study);
   stage("writing results");
   const std::unique_ptr<core::ResultsFolder> folder_owner = results_folder(options, {file});
   core::ResultsFolder& folder = *folder_owner;
 
   nlohmann::ordered_json j;
   j["framedyn"] = {{"version", FRAMEDYN_VERSION}, {"command", "run"}};
-  j["input"] = {{"study", file_s}, {"name", s.name}, {"units", s.units.name()}};
-  nlohmann::ordered_json rigid = rigid_block(study, s, r, folder);
-  if (s.response) {
-    add_response(s, r, folder, rigid);
-    add_response_extras(study, r, options, folder, rigid, run);
+  j["input"] = {{"study", file_s}, {"name", study.name}, {"units", study.units.name()}};
+  nlohmann::ordered_json rigid = rigid_block(study, r, folder);
+  if (study.response) {
+    add_response(study, r, folder, rigid);
+    if (study.dimensions() == 2) add_frame_output_2d(study, r, folder, rigid);
+    else add_load_points_3d(study, r, options, folder, rigid, run);
   }
   j["rigid"] = rigid;
   add_warnings(j, r.warnings, options.warning);
   auto details = std::make_shared<StudyRunDetails>();
-  finish_model(study, r, options, stage, folder, j, run, *details);
+  details->study = study;
+  details->results = r;
+  if (study.dimensions() == 3) run_pipeline(study, r, options, stage, folder, j, run, *details);
+  else if (options.figures) {
+    stage("figures");
+    run.figures = report::write_response_figures(study, r, folder);
+  }
   run.summary = std::move(j);
   if (!folder.in_memory()) folder.write_text("summary.json", run.summary.dump(2) + "\n");
   folder.commit();
@@ -539,10 +507,9 @@ StudyRun run_study_document(const YAML::Node& doc, const std::filesystem::path& 
   if (options.out) core::check_results_target(*options.out, {file});  // before the run: a refusal costs no time
   const std::function<void(const std::string&)> stage = options.stage ? options.stage : [](const std::string&) {};
   const std::string model = coupling::study_model(doc, file.string());
-  if (model == "rigid_3d") return run_vehicle(doc, file, options, stage, &coupling::read_rigid_study_3d, &coupling::run_rigid_study_3d);  // issue 4
   if (model == "duty_cycle") return run_duty_cycle(doc, file, options, stage);  // issue 18
-  // read_rigid_study refuses any other model
-  return run_vehicle(doc, file, options, stage, &coupling::read_rigid_study, &coupling::run_rigid_study);
+  // rigid_2d and rigid_3d; read_rigid_study refuses any other model
+  return run_vehicle(doc, file, options, stage);
 }
 
 StudyRun run_study_file(const std::filesystem::path& file, const StudyRunOptions& options) {

@@ -104,12 +104,12 @@ StudySeries study_series(const StudyRun& run) {
   StudySeries out;
   if (!run.details) return out;
   const StudyRunDetails& d = *run.details;
-  if (d.study_2d && d.results_2d) {
-    const core::UnitSystem& u = d.study_2d->units;
-    const coupling::RigidResults& r = *d.results_2d;
+  if (d.study && d.results) {
+    const core::UnitSystem& u = d.study->units;
+    const coupling::RigidResults& r = *d.results;
     out.units = u.name();
     rigid_response(r, u, out);
-    for (const coupling::FrameLoad2D& l : r.frame_loads) {
+    for (const coupling::FrameLoad2D& l : r.frame_loads_2d) {
       std::vector<double> fx, fz;
       for (const Eigen::Vector2d& f : l.force) fx.push_back(f.x()), fz.push_back(f.y());
       out.frame_loads.push_back(convert(l.name + ".FX", u, Quantity::force, fx));
@@ -120,18 +120,12 @@ StudySeries study_series(const StudyRun& run) {
       for (std::size_t p = 0; p < r.rail_top_stress.front().size(); ++p) {
         std::vector<double> s;
         for (const std::vector<double>& sample : r.rail_top_stress) s.push_back(sample[p]);
-        const double x = d.study_2d->frame_output ? d.study_2d->frame_output->points[p] / u.to_si_factor(Quantity::length) : 0.0;
+        const double x = d.study->frame_output ? d.study->frame_output->points[p] / u.to_si_factor(Quantity::length) : 0.0;
         out.rail_stress.push_back(convert("rail_top_stress.X=" + core::format_number(x), u, Quantity::stress, s));
       }
-  }
-  if (d.study_3d && d.results_3d) {
-    const core::UnitSystem& u = d.study_3d->units;
-    const coupling::RigidResults3D& r = *d.results_3d;
-    out.units = u.name();
-    rigid_response(r, u, out);
-    if (r.frame_loads) {
-      load_points(r.frame_loads->points, u, out);
-      load_points(r.frame_loads->direct, u, out);
+    if (r.frame_loads_3d) {
+      load_points(r.frame_loads_3d->points, u, out);
+      load_points(r.frame_loads_3d->direct, u, out);
     }
     if (d.frame) frame_transient(*d.frame, u, out);
   }

@@ -26,7 +26,7 @@ struct GroundInput {
   std::shared_ptr<const RoadProfile> road;  // road: the ground's profile (shared by the tires that drive over it)
   double speed = 0.0;       // m/s (road: forward speed over the ground)
   double behind = 0.0;      // m (road: how far behind the front axle the tire runs; the wheelbase for the rear tires)
-  bool behind_given = false;  // road: `behind` set by the study (else derived from the tire positions, coupling/rigid_study_3d.h)
+  bool behind_given = false;  // road: `behind` set by the study (else derived from the tire positions, coupling/study_machine_3d.cpp)
 
   double displacement(double t) const;  // m
   double velocity(double t) const;      // m/s

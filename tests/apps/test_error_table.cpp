@@ -466,7 +466,7 @@ std::vector<Row> rows() {
       study_row("STUDY-80", "analysis:\n",
                 "calibration: {parameters: [cab.mass], targets: [{frequency_hz: 6}], bounds: [{parameter: cab.mass, dimensions: [1, 1, 1]}]}\nanalysis:\n",
                 "calibration", "calibration.bounds[0].dimensions"),
-      // ---- 3-D rigid-body studies (coupling/rigid_study_3d.cpp)
+      // ---- 3-D rigid-body studies (coupling/study_machine_3d.cpp)
       study_row("STUDY-37", "pin: [72, 0, 0]", "pin: [72, 0]", "pin: [72, 0]", "frame.rear_axle.pin", kStudy3D),
       study_row("STUDY-38", "  front:\n    steering_deg: 0", "  front:\n    steering_deg: 95", "steering_deg: 95", "tires.front.steering_deg", kStudy3D),
       study_row("STUDY-39", "leveling_cylinder: [68, 15, 0]", "leveling_cylinder: [68, 0, 0]", "leveling_cylinder", "frame.rear_axle.leveling_cylinder",
@@ -515,6 +515,10 @@ std::vector<Row> rows() {
                 "tires.rear.normal_input"),
       // ---- the frame pipeline asked of the 2-D model (docs/theory/coupling.md section 17)
       study_row("STUDY-142", "name: error table, 2-D\n", "name: error table, 2-D\nframe_response: {mesh: frame.inp}\n", "frame_response:", "frame_response"),
+      // A feature of one model in a study of the other, refused with the reason (issue 15).
+      study_row("STUDY-139", "name: error table, 3-D\n", "name: error table, 3-D\nframe_output: {points: [0]}\n", "frame_output:", "frame_output", kStudy3D),
+      study_row("STUDY-140", "attachment: none\n", "attachment: chain\nsoil: {stiffness: 1, damping: 1, spring_reference: soil_line}\n",
+                "spring_reference: soil_line", "soil.spring_reference", kStudy3D),
       // ---- duty cycles (coupling/duty_cycle.cpp)
       Row{"STUDY-123", {{"study.yaml", kDutyCycle + "scenarios: []\n"}}, "run study.yaml --out results -q", at("study.yaml", kDutyCycle + "scenarios: []\n", "scenarios", "scenarios")},
       Row{"STUDY-124", {{"study.yaml", kDutyCycle + "scenarios:\n  - {name: plowing, study: plowing.yaml, hours: 50}\n"}}, "run study.yaml --out results -q",
@@ -593,7 +597,7 @@ std::vector<Row> rows() {
         return Row{"STUDY-128", {{"study.yaml", text}, {"frame.inp", shipped_frame()}}, "run study.yaml --out results -q",
                    at("study.yaml", text, "compare_supports", "frame_response.compare_supports")};
       }(),
-      // ---- a frame part's mounts on the frame mesh (coupling/rigid_study_3d.cpp, frame_parts.cpp)
+      // ---- a frame part's mounts on the frame mesh (coupling/study_machine_3d.cpp, frame_parts.cpp)
       mounts_row("STUDY-110", "[12, left]", "frame.parts[1].mounts[1]"),
       mounts_row("STUDY-111", "[12, 34, 14, 99]", "frame.parts[1].mounts[3]"),
       mounts_row("STUDY-112", "[12, 13, 14]", "frame.parts[1].mounts"),

@@ -26,7 +26,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/load_mapping.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "fem/assembly.h"
 #include "fem/inp_reader.h"
 #include "rigid/machine_3d.h"
@@ -49,8 +49,8 @@ std::string read_text(const std::string& p) {
 
 // The main job's first 0.25 s, vehicle model only (the frame block is read, not run).
 struct Start {
-  coupling::RigidStudy3D study;
-  coupling::RigidResults3D results;
+  coupling::RigidStudy study;
+  coupling::RigidResults results;
 };
 const Start& offset_plowing() {
   static const Start start = [] {
@@ -64,13 +64,13 @@ const Start& offset_plowing() {
     swap("duration: 10.0", "duration: 0.25");
     swap("../meshes/r100_frame.inp", kSource + "/meshes/r100_frame.inp");
     Start out;
-    out.study = coupling::read_rigid_study_3d(dir.write("offset.yaml", t).string());
-    out.results = coupling::run_rigid_study_3d(out.study);
+    out.study = coupling::read_rigid_study(dir.write("offset.yaml", t).string());
+    out.results = coupling::run_rigid_study(out.study);
     return out;
   }();
   return start;
 }
-const coupling::RigidResults3D& offset_plowing_start() { return offset_plowing().results; }
+const coupling::RigidResults& offset_plowing_start() { return offset_plowing().results; }
 
 fem::FrameModel r100_mesh() { return fem::read_inp(kSource + "/meshes/r100_frame.inp"); }
 
@@ -112,9 +112,9 @@ TEST(FrameBalance, BareFrameModelHasTheTubesMassCentreOfGravityAndInertiaOfTheMe
 }
 
 TEST(FrameBalance, LoadsOnTheMeshIncludingTheSwingPinEqualTheVehicleFrameAssemblysInertiaForceAtEverySample) {
-  const coupling::RigidResults3D& r = offset_plowing_start();
-  ASSERT_TRUE(r.frame_loads);
-  const coupling::LoadHistory all = coupling::all_frame_loads(*r.frame_loads);
+  const coupling::RigidResults& r = offset_plowing_start();
+  ASSERT_TRUE(r.frame_loads_3d);
+  const coupling::LoadHistory all = coupling::all_frame_loads(*r.frame_loads_3d);
   ASSERT_EQ(all.points.size(), 9u);
   EXPECT_EQ(all.points.back().name, "P19_PLOW_SWING_PIN");
   const fem::FrameModel mesh = r100_mesh();
@@ -132,7 +132,7 @@ TEST(FrameBalance, LoadsOnTheMeshIncludingTheSwingPinEqualTheVehicleFrameAssembl
   where.pop_back();
   const coupling::LoadResultants without_19 = coupling::applied_load_resultants(mesh, body, coupling::map_load_points(mesh, where), without);
 
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(r.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(r.machine_3d());
   double scale_f = 0, scale_m = 0, worst_f = 0, worst_m = 0, missing_f = 0;
   // Inertia relief's rigid-body acceleration of the bare model against the vehicle model's frame
   // acceleration at the mesh's c.g., with and without point 19: least-squares slope and correlation.
@@ -171,7 +171,7 @@ TEST(FrameBalance, LoadsOnTheMeshIncludingTheSwingPinEqualTheVehicleFrameAssembl
 }
 
 TEST(InertiaRelief, AppliedLoadsMinusTheFreeFrameModelsInertiaForcesHaveNoResultantAtEveryOutputTime) {
-  const coupling::RigidResults3D& r = offset_plowing_start();
+  const coupling::RigidResults& r = offset_plowing_start();
   const framedyn::testing::TempDir dir("framedyn_test_inertia_relief");
   // The shipped mesh with one node set of all its nodes, for the accelerations of every node.
   const std::string mesh = dir.write("frame.inp", "*INCLUDE, INPUT=" + kSource + "/meshes/r100_frame.inp\n*NSET, NSET=ALL_NODES, GENERATE\n1, 51, 1\n").string();
@@ -183,7 +183,7 @@ TEST(InertiaRelief, AppliedLoadsMinusTheFreeFrameModelsInertiaForcesHaveNoResult
   q.modes = -1;
   q.method = coupling::FrameMethod::mode_acceleration;
   q.node_outputs = {{"all", "ALL_NODES"}};
-  const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads);
+  const coupling::LoadHistory loads = coupling::all_frame_loads(*r.frame_loads_3d);
   const coupling::FrameStudyResults f = coupling::run_frame_study(q, &loads);
   ASSERT_EQ(f.response.times.size(), loads.times.size());
   const fem::FrameModel& model = f.model;
@@ -249,10 +249,10 @@ TEST(FrameParts, ShippedPipelinesInertiaReliefAccelerationIsTheVehicleModelsFram
   q.paraview = coupling::ParaviewOutput::none;
   EXPECT_EQ(q.structure_part, "frame_structure");
   EXPECT_EQ(q.parts.size(), 5u);
-  const coupling::LoadHistory loads = coupling::all_frame_loads(*s.results.frame_loads);
+  const coupling::LoadHistory loads = coupling::all_frame_loads(*s.results.frame_loads_3d);
   const coupling::FrameStudyResults f = coupling::run_frame_study(q, &loads);
   // The frame model's rigid-body mass is the vehicle model's frame assembly (Eq. 9.3), to round-off.
-  const rigid::RigidPart3D vehicle = rigid::combine(s.results.machine.frame.parts, "frame");
+  const rigid::RigidPart3D vehicle = rigid::combine(s.results.machine_3d().frame.parts, "frame");
   const double iu = kMassUnit * kInch * kInch;
   std::printf("[ measured ] frame model with parts: %.6f lbf s^2/in (%.2f lb), c.g. (%.4f, %.2e, %.4f) in; vehicle frame assembly %.6f lbf s^2/in, "
               "c.g. (%.4f, %.2e, %.4f) in; inertia differs by %.1e relative\n",
@@ -266,7 +266,7 @@ TEST(FrameParts, ShippedPipelinesInertiaReliefAccelerationIsTheVehicleModelsFram
 
   // Inertia relief's rigid-body acceleration at the assembly's c.g. against the vehicle model's, every sample.
   const coupling::LoadResultants res = coupling::applied_load_resultants(f.model, f.mass, f.mapping, f.loads);
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(s.results.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(s.results.machine_3d());
   std::vector<double> vehicle_a[6], relief_a[6];
   double worst = 0, scale = 0, worst_rot = 0, scale_rot = 0;
   for (std::size_t i = 0; i < s.results.trajectory.time.size(); ++i) {

@@ -23,7 +23,7 @@
 #include "coupling/frame_loads_3d.h"
 #include "coupling/frame_study.h"
 #include "coupling/load_mapping.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "fem/direct_integration.h"
 #include "fem/distributed_loads.h"
 #include "fem/section_forces.h"
@@ -104,10 +104,10 @@ struct ShippedStatics {
   double frame_assembly_weight = 0.0;  // N, the vehicle model's frame assembly (mesh tubes and parts)
 };
 ShippedStatics shipped_statics(double slope_deg, bool gravity_along_ground_normal = false) {
-  coupling::RigidStudy3D study = coupling::read_rigid_study_3d(kSource + "/examples/offset_plowing.yaml");
-  study.machine.ground_slope = slope_deg * 3.14159265358979323846 / 180.0;
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
-  const coupling::LoadHistory loads = coupling::all_frame_loads(coupling::static_frame_loads_3d(machine, study.machine));
+  coupling::RigidStudy study = coupling::read_rigid_study(kSource + "/examples/offset_plowing.yaml");
+  study.machine_3d().ground_slope = slope_deg * 3.14159265358979323846 / 180.0;
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine_3d());
+  const coupling::LoadHistory loads = coupling::all_frame_loads(coupling::static_frame_loads_3d(machine, study.machine_3d()));
   coupling::FrameStudyRequest q = *study.frame_response;
   fem::FrameModel model = coupling::read_frame_mesh(q);
   std::vector<coupling::LoadPointLocation> where;
@@ -116,11 +116,11 @@ ShippedStatics shipped_statics(double slope_deg, bool gravity_along_ground_norma
   coupling::mount_frame_parts(model, q.parts);
   mapping.distribution.conservativeResize(model.dof_count(), mapping.distribution.cols());
   const Eigen::VectorXd p = loads.component_matrix().col(0);
-  const double g = study.machine.gravity, th = study.machine.ground_slope;
+  const double g = study.machine_3d().gravity, th = study.machine_3d().ground_slope;
   const Vector3d gravity = gravity_along_ground_normal ? Vector3d(-g * std::sin(th), 0, -g * std::cos(th)) : q.gravity;
   ShippedStatics out;
   out.state = coupling::frame_static_state(model, gravity, &mapping.distribution, &p, q.rails, q.stations);
-  out.frame_assembly_weight = rigid::combine(study.machine.frame.parts, "frame").mass * g;
+  out.frame_assembly_weight = rigid::combine(study.machine_3d().frame.parts, "frame").mass * g;
   return out;
 }
 

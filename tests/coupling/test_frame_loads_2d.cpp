@@ -21,16 +21,16 @@ struct PlowRun {
   rigid::VehicleModel model;
   rigid::VehicleRunState state;
   rigid::Trajectory trajectory;
-  std::vector<coupling::FrameLoad2D> loads() const { return coupling::frame_loads_2d(model, study.machine, state, trajectory); }
+  std::vector<coupling::FrameLoad2D> loads() const { return coupling::frame_loads_2d(model, study.machine_2d(), state, trajectory); }
   coupling::StressResultants resultants(const std::vector<coupling::FrameLoad2D>& loads, const std::vector<double>& x) const {
-    return coupling::frame_stress_resultants(model, study.machine.frame, trajectory, loads, x);
+    return coupling::frame_stress_resultants(model, study.machine_2d().frame, trajectory, loads, x);
   }
 };
 
 PlowRun plowing(double duration, const std::string& example = "r100_plow_2d.yaml") {
   PlowRun r;
   r.study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/" + example);
-  r.model = rigid::build_vehicle_model(r.study.machine);
+  r.model = rigid::build_vehicle_model(r.study.machine_2d());
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(r.model.size());
   rigid::IntegrationOptions o;
   o.end_time = duration;
@@ -73,7 +73,7 @@ TEST(FrameLoads2D, PartLoadNamesAreTheLoadsOfThePlowAndChainMachines) {
   for (const char* example : {"r100_plow_2d.yaml", "r100_chain_2d.yaml"}) {
     const PlowRun r = plowing(0.01, example);
     std::set<std::string> added;
-    for (const rigid::AddedMass& a : r.study.machine.frame.added_masses) added.insert(a.name);
+    for (const rigid::AddedMass& a : r.study.machine_2d().frame.added_masses) added.insert(a.name);
     ASSERT_FALSE(added.empty()) << example;
     for (const coupling::FrameLoad2D& l : r.loads())
       if (!added.count(l.name)) given.insert(l.name);

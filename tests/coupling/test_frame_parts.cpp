@@ -37,7 +37,7 @@
 #include "coupling/frame_balance.h"
 #include "coupling/frame_mass_source.h"
 #include "coupling/frame_parts.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "fem/assembly.h"
 #include "fem/beam_element.h"
 #include "fem/inp_reader.h"
@@ -345,8 +345,8 @@ TEST(FrameMassSource, RigidOnlyStudiesOfTheShippedMachineCarryTheMeshsFrameStruc
               radii.y() / kInch, radii.z() / kInch,
               std::max({std::abs(mesh.inertia(0, 1)), std::abs(mesh.inertia(0, 2)), std::abs(mesh.inertia(1, 2))}) / mesh.inertia.maxCoeff());
   for (const char* study : {"r100_plow_straight", "r100_plow_offset", "r100_chain_center", "r100_chain_offset"}) {
-    const coupling::RigidStudy3D s = coupling::read_rigid_study_3d(source + "/examples/" + study + ".yaml");
-    const auto& parts = s.machine.frame.parts;
+    const coupling::RigidStudy s = coupling::read_rigid_study(source + "/examples/" + study + ".yaml");
+    const auto& parts = s.machine_3d().frame.parts;
     const auto it = std::find_if(parts.begin(), parts.end(), [](const rigid::RigidPart3D& p) { return p.name == "frame_structure"; });
     ASSERT_NE(it, parts.end()) << study;
     // The study prints weight to 0.1 lb, the c.g. to 0.01 in, the radii to 0.01 in: agreement to those digits.

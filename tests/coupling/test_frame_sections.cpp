@@ -18,7 +18,7 @@
 #include "coupling/frame_model_cache.h"
 #include "coupling/frame_sections.h"
 #include "coupling/frame_study.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "coupling/study_key_path.h"
 #include "coupling/yaml_input.h"
 #include "fem/modal_analysis.h"
@@ -99,13 +99,13 @@ TEST(FrameSections, RailWallChangesTheVehicleFrameMassByDensityTimesLengthTimesA
   const auto structure_mass = [&](double t1) {
     YAML::Node doc = YAML::Clone(base);
     coupling::set_study_number(doc, "frame_response.sections.RAILS.t1", t1, file.string());
-    const coupling::RigidStudy3D s = coupling::read_rigid_study_3d(doc, file.string());
-    for (const rigid::RigidPart3D& p : s.machine.frame.parts)
+    const coupling::RigidStudy s = coupling::read_rigid_study(doc, file.string());
+    for (const rigid::RigidPart3D& p : s.machine_3d().frame.parts)
       if (p.name == "frame_structure") return p.mass;
     ADD_FAILURE() << "no frame_structure part";
     return 0.0;
   };
-  const coupling::RigidStudy3D s0 = coupling::read_rigid_study_3d(base, file.string());
+  const coupling::RigidStudy s0 = coupling::read_rigid_study(base, file.string());
   const fem::FrameModel mesh = coupling::read_frame_mesh(*s0.frame_response);
   double length = 0.0, density = 0.0;
   for (int id : mesh.element_sets.at("RAILS")) {
@@ -152,7 +152,7 @@ TEST(FrameSections, BatchGridOverRailWallStepsTheFrameMassByTheClosedFormAndBuil
   EXPECT_EQ(cache.builds(), 3u);   // one per wall
   EXPECT_EQ(cache.reuses(), 3u);   // the second damping of each wall
   // rho in lbf*s^2/in^4 (the mesh's 0.2836 lb/in^3 steel over g = 386.09 in/s^2) from the mesh itself.
-  const coupling::RigidStudy3D s = coupling::read_rigid_study_3d(coupling::load_yaml_file(study.string()), study.string());
+  const coupling::RigidStudy s = coupling::read_rigid_study(coupling::load_yaml_file(study.string()), study.string());
   const fem::FrameModel mesh = coupling::read_frame_mesh(*s.frame_response);
   const double density_in = mesh.sections[0].material.density / s.units.to_si_factor(core::Quantity::density);
   const double step = density_in * (2 * 105.0) * 0.0625 * (3.0 - 0.5);  // rho L dt1 (b - t2 - t4), lbf*s^2/in

@@ -60,18 +60,18 @@ TEST(QuasiStaticCut, BeamFrameUnderSlowlyAppliedPlowLoadsReproducesTheStaticCutO
   c::RigidStudy study = c::read_rigid_study(src + "/examples/r100_plow_2d.yaml");
   study.response->duration = 0.25;  // past the start-up: the loads of steady plowing
   const c::RigidResults run = c::run_rigid_study(study);
-  ASSERT_FALSE(run.frame_loads.empty());
+  ASSERT_FALSE(run.frame_loads_2d.empty());
   const std::size_t i = run.trajectory.time.size() - 1;
 
   // Eq. 2.47 at that instant with the frame at rest (no tube inertia): the static cut of the loads.
-  const framedyn::rigid::VehicleModel machine = framedyn::rigid::build_vehicle_model(study.machine);
+  const framedyn::rigid::VehicleModel machine = framedyn::rigid::build_vehicle_model(study.machine_2d());
   framedyn::rigid::Trajectory still;
   still.time = {0.0};
   still.q = {Eigen::VectorXd::Zero(run.trajectory.q[i].size())};
   still.v = still.q;
   still.a = still.q;
   std::vector<c::FrameLoad2D> loads;
-  for (const c::FrameLoad2D& l : run.frame_loads) loads.push_back({l.name, l.point, {l.force[i]}, {l.moment[i]}});
+  for (const c::FrameLoad2D& l : run.frame_loads_2d) loads.push_back({l.name, l.point, {l.force[i]}, {l.moment[i]}});
 
   // The same loads on the beam frame, ramped on linearly over T and held. Each
   // 2-D load (X, Z) is a 3-D point (X, 0, Z) carried by a rigid spider to its
@@ -125,7 +125,7 @@ TEST(QuasiStaticCut, BeamFrameUnderSlowlyAppliedPlowLoadsReproducesTheStaticCutO
     if (!straddled) cuts.push_back(x);
   }
   ASSERT_GE(cuts.size(), 8u);
-  const c::StressResultants cut = c::frame_stress_resultants(machine, study.machine.frame, still, loads, cuts, 0.0);
+  const c::StressResultants cut = c::frame_stress_resultants(machine, study.machine_2d().frame, still, loads, cuts, 0.0);
 
   // Bound of the dynamic residual of a linear ramp of duration T on an
   // undamped oscillator of circular frequency w: 2 / (w T) of the static

@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "tests/support/calculix.h"
 #include "tests/support/temp_dir.h"
 
@@ -175,20 +175,20 @@ RigidPart3D sum_of(const std::vector<RigidPart3D>& parts) {
 // given steering angles (rad) and the tires' lateral stiffness scaled by
 // `lateral_scale` (front, rear).
 void compare_with_calculix(double front_steering, double rear_steering, double front_lateral_scale = 1.0, double rear_lateral_scale = 1.0) {
-  framedyn::coupling::RigidStudy3D study =
-      framedyn::coupling::read_rigid_study_3d(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/thesis/case2.yaml");
+  framedyn::coupling::RigidStudy study =
+      framedyn::coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/thesis/case2.yaml");
   study.calibration.reset();  // the shipped data as they stand, not the fit to CMW3D
   study.response.reset();
   study.modes = true;
   study.fixed_coordinates = {"eta", "u", "v", "w", "theta_u", "theta_v", "theta_w"};
-  study.machine.front_tires.steering_angle = front_steering;
-  study.machine.rear_tires.steering_angle = rear_steering;
-  for (framedyn::rigid::Tire3D* t : {&study.machine.front_tires.left, &study.machine.front_tires.right}) t->lateral.stiffness *= front_lateral_scale;
-  for (framedyn::rigid::Tire3D* t : {&study.machine.rear_tires.left, &study.machine.rear_tires.right}) t->lateral.stiffness *= rear_lateral_scale;
-  const framedyn::coupling::RigidResults3D framedyn_result = framedyn::coupling::run_rigid_study_3d(study);
+  study.machine_3d().front_tires.steering_angle = front_steering;
+  study.machine_3d().rear_tires.steering_angle = rear_steering;
+  for (framedyn::rigid::Tire3D* t : {&study.machine_3d().front_tires.left, &study.machine_3d().front_tires.right}) t->lateral.stiffness *= front_lateral_scale;
+  for (framedyn::rigid::Tire3D* t : {&study.machine_3d().rear_tires.left, &study.machine_3d().rear_tires.right}) t->lateral.stiffness *= rear_lateral_scale;
+  const framedyn::coupling::RigidResults framedyn_result = framedyn::coupling::run_rigid_study(study);
   ASSERT_EQ(framedyn_result.modes.size(), 6u);
 
-  const framedyn::rigid::Machine3DParameters& p = study.machine;
+  const framedyn::rigid::Machine3DParameters& p = study.machine_3d();
   std::vector<RigidPart3D> parts = p.frame.parts;
   parts.push_back(p.frame.reel_and_carrier);
   parts.push_back(p.frame.rear_axle);

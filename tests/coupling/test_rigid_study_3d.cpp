@@ -1,4 +1,4 @@
-// 3-D rigid-body studies (coupling/rigid_study_3d.h, apps/run_3d.cpp):
+// 3-D rigid-body studies (coupling/rigid_study.h, model: rigid_3d; the console apps/run_command.cpp):
 //   1. the thesis's 3-D cases from their case files: Table IV cases 2 and 3 and
 //      Table V's 3-D columns of cases 4-6, each fitted within 1 % with the
 //      thesis's dominant coordinates (targets from thesis-figures.md);
@@ -18,7 +18,7 @@
 
 #include "core/error.h"
 #include "coupling/load_history.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/rigid_study.h"
 #include "coupling/study_blocks.h"
 #include "report/study_run.h"
 #include "report/study_run_details.h"
@@ -42,10 +42,10 @@ std::string read_text(const std::string& file) {
 // A thesis case, fitted: the fit's properties (tests/support/calibration_checks.h);
 // the table's agreement is printed, not asserted (docs/validation.md, Calibration).
 void check_case(const std::string& file, std::size_t targets) {
-  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(source(file));
+  const coupling::RigidStudy study = coupling::read_rigid_study(source(file));
   ASSERT_TRUE(study.calibration.has_value());
   ASSERT_EQ(study.calibration->targets.size(), targets);
-  const coupling::RigidResults3D r = coupling::run_rigid_study_3d(study);
+  const coupling::RigidResults r = coupling::run_rigid_study(study);
   ASSERT_TRUE(r.calibration.has_value());
   framedyn::test::expect_fit_properties(file, *study.calibration, *r.calibration, r.modes,
                                         coupling::calibration_mode_family(*study.calibration, r.coordinates));
@@ -59,13 +59,13 @@ void check_case(const std::string& file, std::size_t targets) {
 framedyn::report::StudyRun expect_reported_not_converged(const std::string& file, std::size_t targets,
                                                         const std::vector<std::string>& message_parts) {
   framedyn::report::StudyRun run = framedyn::report::run_study_file(file);
-  const bool complete = run.details && run.details->study_3d && run.details->results_3d &&
-                        run.details->study_3d->calibration.has_value() &&
-                        run.details->results_3d->calibration.has_value();
+  const bool complete = run.details && run.details->study && run.details->results &&
+                        run.details->study->calibration.has_value() &&
+                        run.details->results->calibration.has_value();
   EXPECT_TRUE(complete) << file;
   if (!complete) return run;
-  const coupling::RigidStudy3D& study = *run.details->study_3d;
-  const coupling::RigidResults3D& r = *run.details->results_3d;
+  const coupling::RigidStudy& study = *run.details->study;
+  const coupling::RigidResults& r = *run.details->results;
   EXPECT_EQ(study.calibration->targets.size(), targets) << file;
   if (study.calibration->targets.size() != targets) return run;
   framedyn::test::expect_fit_properties(file, *study.calibration, *r.calibration, r.modes,
@@ -111,27 +111,27 @@ TEST(ThesisCases3D, CalibrationFitOfTableVCase5Plow3DColumnIsReportedNotConverge
       expect_reported_not_converged(source("examples/thesis/case5_3d.yaml"), 6,
                                     {"not a converged fit", "the 7.765 Hz target (w) on a 7.117 Hz mode (x-led)",
                                      "held at a bound: tires.front.longitudinal.stiffness"});
-  ASSERT_TRUE(run.details && run.details->study_3d && run.details->results_3d);
-  ASSERT_TRUE(run.details->results_3d->calibration.has_value());
+  ASSERT_TRUE(run.details && run.details->study && run.details->results);
+  ASSERT_TRUE(run.details->results->calibration.has_value());
   EXPECT_GT(run.summary["rigid"]["calibration"]["residual_max"].get<double>(), 0.05);
   // The front tires' longitudinal stiffness, the one parameter that raises the mode, is on its bound.
-  EXPECT_EQ(run.details->study_3d->calibration->parameters[0], "tires.front.longitudinal.stiffness");
-  EXPECT_TRUE(run.details->results_3d->calibration->at_bound[0]);
+  EXPECT_EQ(run.details->study->calibration->parameters[0], "tires.front.longitudinal.stiffness");
+  EXPECT_TRUE(run.details->results->calibration->at_bound[0]);
 }
 TEST(ThesisCases3D, CalibrationFitOfTableVCase6Chain3DColumn) { check_case("examples/thesis/case6_3d.yaml", 5); }
 
 TEST(ShippedExamples3D, PlowStudiesHave15AndChainStudies13Coordinates) {
   for (const char* f : {"examples/r100_plow_straight.yaml", "examples/r100_plow_offset.yaml"})
-    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study_3d(source(f)).machine).size(), 15) << f;
+    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study(source(f)).machine_3d()).size(), 15) << f;
   for (const char* f : {"examples/r100_chain_center.yaml", "examples/r100_chain_offset.yaml"})
-    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study_3d(source(f)).machine).size(), 13) << f;
-  const auto offset = coupling::read_rigid_study_3d(source("examples/r100_plow_offset.yaml")).machine;
+    EXPECT_EQ(framedyn::rigid::build_vehicle_model(coupling::read_rigid_study(source(f)).machine_3d()).size(), 13) << f;
+  const auto offset = coupling::read_rigid_study(source("examples/r100_plow_offset.yaml")).machine_3d();
   EXPECT_NEAR(offset.front_tires.steering_angle, 22 * M_PI / 180, 1e-15);
   EXPECT_NEAR(offset.rear_tires.steering_angle, 22 * M_PI / 180, 1e-15);
   EXPECT_NEAR(offset.plow.blade_angle, 22 * M_PI / 180, 1e-15);
   EXPECT_NEAR(offset.plow.boom_angle, -1 * M_PI / 180, 1e-15);
   EXPECT_NEAR(offset.travel_angle, 22 * M_PI / 180, 1e-15);
-  const auto chain = coupling::read_rigid_study_3d(source("examples/r100_chain_offset.yaml")).machine;
+  const auto chain = coupling::read_rigid_study(source("examples/r100_chain_offset.yaml")).machine_3d();
   EXPECT_NEAR(chain.chain.chain_pin.y(), 35 * 0.0254, 1e-15);
 }
 
@@ -144,10 +144,10 @@ std::string edited(const std::string& from, const std::string& to) {
 }
 
 void expect_error(const std::string& text, const std::string& where, const std::string& expected) {
-  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study");
   const std::string file = dir.write("study.yaml", text).string();
   try {
-    (void)coupling::read_rigid_study_3d(file);
+    (void)coupling::read_rigid_study(file);
     ADD_FAILURE() << "no error for " << where;
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -186,28 +186,28 @@ TEST(StudyReader3D, APartSoFarAwayThatTheMassMatrixIsSingularIsAnInputErrorAtMac
 
 // ... and with REK = 0 it is taken, and the soil then resists the cutting blade by its damping alone.
 TEST(StudyReader3D, CutFaceReadingIsTakenWithoutSpringsWhileBacking) {
-  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study");
   const std::string file = dir.write("study.yaml", edited("  spring_reference: cut_face", "  spring_reference: cut_face")).string();
-  const coupling::RigidStudy3D study = coupling::read_rigid_study_3d(file);
-  EXPECT_TRUE(study.machine.soil.cut_face);
-  EXPECT_DOUBLE_EQ(study.machine.soil.stiffness_factor(true), 0.0);
-  EXPECT_DOUBLE_EQ(study.machine.soil.damping_factor(true), 1.0);
+  const coupling::RigidStudy study = coupling::read_rigid_study(file);
+  EXPECT_TRUE(study.machine_3d().soil.cut_face);
+  EXPECT_DOUBLE_EQ(study.machine_3d().soil.stiffness_factor(true), 0.0);
+  EXPECT_DOUBLE_EQ(study.machine_3d().soil.damping_factor(true), 1.0);
 }
 
 // analysis.modal_soil, read by the one analysis reader of 2-D and 3-D: with `none` the 3-D modes
 // are those of the same machine whose soil springs (K5 along and vertical, K15 across) are
 // removed by hand, and they differ from the default `cutting` modes under Eq. 2.37 as printed.
 TEST(StudyReader3D, ModalSoilNoneGivesTheModesOfTheMachineWithItsSoilSpringsRemoved) {
-  const framedyn::testing::TempDir dir("framedyn_test_rigid_study_3d");
+  const framedyn::testing::TempDir dir("framedyn_test_rigid_study");
   const auto modes_hz = [&](const std::string& modal_soil, bool remove_soil_springs) {
     std::string text = edited("  spring_reference: cut_face", "  spring_reference: equilibrium");
     const std::size_t at = text.find("\nanalysis:\n  modes: true\n");
     if (at == std::string::npos) throw std::logic_error("no analysis block");
     text = text.substr(0, at) + "\nanalysis:\n  modes: true\n  modal_soil: " + modal_soil + "\n";  // modes only, no response
-    coupling::RigidStudy3D study = coupling::read_rigid_study_3d(dir.write("study.yaml", text).string());
-    if (remove_soil_springs) study.machine.soil.stiffness = study.machine.soil_lateral.stiffness = 0.0;
+    coupling::RigidStudy study = coupling::read_rigid_study(dir.write("study.yaml", text).string());
+    if (remove_soil_springs) study.machine_3d().soil.stiffness = study.machine_3d().soil_lateral.stiffness = 0.0;
     std::vector<double> hz;
-    for (const auto& m : coupling::run_rigid_study_3d(study).modes) hz.push_back(m.frequency_hz);
+    for (const auto& m : coupling::run_rigid_study(study).modes) hz.push_back(m.frequency_hz);
     return hz;
   };
   const std::vector<double> none = modes_hz("none", false), removed = modes_hz("cutting", true), cutting = modes_hz("cutting", false);

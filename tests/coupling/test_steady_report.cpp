@@ -64,7 +64,7 @@ TEST(SteadyReport, ShakerMovedOntoAModeWarns) {
   EXPECT_TRUE(modes.warnings.empty());
   // Without a response there is nothing to warn about; with one, 5 % above mode 3 warns about mode 3.
   study = read_rigid_study(shipped("r100_plow_2d.yaml"));
-  study.machine.plow.shaker_frequency = 1.05 * modes.modes[2].frequency_hz;
+  study.machine_2d().plow.shaker_frequency = 1.05 * modes.modes[2].frequency_hz;
   study.response->duration = 0.05;
   const RigidResults r = run_rigid_study(study);
   bool mode3 = false;

@@ -8,9 +8,12 @@
 //     frame.convert_units: true; converted, the history gives the same frame
 //     response as the same loads written in the study's units.
 // And the rear tires' road delay (docs/theory/fatigue.md section 11): derived from the
-// tire positions unless the study gives `behind`.
+// tire positions unless the study gives `behind`. And the one reader of 2-D and 3-D studies
+// (issue 15): the common blocks read to the same values in both models, a feature of one
+// model refused in the other with the reason.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -22,7 +25,7 @@
 #include "coupling/frame_study.h"
 #include "coupling/load_history.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
+#include "coupling/road_delays.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -92,8 +95,8 @@ TEST(StrictStudy, UnitNamesAreReadInAnyLetterCase) {
   const auto lower = coupling::read_rigid_study(dir.write("a.yaml", text).string());
   const auto upper = coupling::read_rigid_study(dir.write("b.yaml", replaced(text, "units: in-lbf-s", "units: IN-LBF-S")).string());
   EXPECT_EQ(upper.units.name(), "in-lbf-s");
-  EXPECT_EQ(upper.machine.cab.mass, lower.machine.cab.mass);
-  EXPECT_NEAR(upper.machine.cab.mass, 650 * 4.4482216152605 / 9.80665, 1e-12 * 300);
+  EXPECT_EQ(upper.machine_2d().cab.mass, lower.machine_2d().cab.mass);
+  EXPECT_NEAR(upper.machine_2d().cab.mass, 650 * 4.4482216152605 / 9.80665, 1e-12 * 300);
 }
 
 // Two load points of the shipped frame, in in-lbf-s, and the same loads written in SI.
@@ -154,7 +157,7 @@ TEST(RoadDelay, RearTiresRunTheWheelbaseBehindFromTheTirePositionsAndBehindOverr
   const framedyn::testing::TempDir dir;
   std::string text = read_text(kSource / "examples" / "transport_rough_ground.yaml");
   text = replaced(text, "  mesh: ../meshes/r100_frame.inp", "  mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
-  const auto delays_of = [&](const std::string& study) { return coupling::road_delays(coupling::read_rigid_study_3d(dir.write("study.yaml", study).string()).machine); };
+  const auto delays_of = [&](const std::string& study) { return coupling::road_delays(coupling::read_rigid_study(dir.write("study.yaml", study).string()).machine_3d()); };
   const std::vector<coupling::RoadDelay> derived = delays_of(text);
   ASSERT_EQ(derived.size(), 4u);
   const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
@@ -186,7 +189,7 @@ TEST(RoadDelay, TwoDimensionalRearTireRunsTheWheelbaseBehindFromTheTirePositions
   std::string text = read_text(kSource / "examples" / "r100_plow_2d.yaml");
   text = replaced(text, "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: " + road + "\n");
   text = replaced(text, "    contact: [72, -26]\n", "    contact: [72, -26]\n    normal_input: " + road + "\n");
-  const auto machine_of = [&](const std::string& study) { return coupling::read_rigid_study(dir.write("study2d.yaml", study).string()).machine; };
+  const auto machine_of = [&](const std::string& study) { return coupling::read_rigid_study(dir.write("study2d.yaml", study).string()).machine_2d(); };
   const auto derived = machine_of(text);
   const double wheelbase = 72 * 0.0254, speed = 78.74 * 0.0254;
   EXPECT_EQ(derived.front_tire.normal_input.behind, 0.0);
@@ -205,6 +208,108 @@ TEST(RoadDelay, TwoDimensionalRearTireRunsTheWheelbaseBehindFromTheTirePositions
   const std::string ahead = replaced(text, "    contact: [72, -26]\n    normal_input:", "    contact: [-10, -26]\n    normal_input:");
   const std::string m = error_of([&] { machine_of(ahead); });
   EXPECT_NE(m.find("tires.rear.normal_input: expected a rear tire on or behind the front tire"), std::string::npos) << m;
+}
+
+// One reader for both models (issue 15, "one study reader, one runner, one set of writers"): the
+// blocks the two models share are read by the same code into the same fields, so the same text
+// gives the same values in a 2-D and a 3-D study. The shipped 2-D plow and 3-D straight plow, each
+// given the same ground, contacts, soil and analysis blocks.
+TEST(OneStudyReader, TheSameCommonBlocksGiveTheSameValuesIn2DAnd3D) {
+  const framedyn::testing::TempDir dir;
+  const std::string common =
+      "contacts: linear\n"
+      "analysis:\n"
+      "  modes: false\n"
+      "  modal_soil: backing\n"
+      "  response: {duration: 0.25, output_interval: 0.002, method: rk4, rk4_step: 0.0001, relative_tolerance: 1e-7}\n";
+  const auto with_common = [&](const std::string& example) {
+    std::string text = read_text(kSource / "examples" / example);
+    text = text.substr(0, text.find("\nanalysis:\n") + 1) + common;  // analysis is each file's last block
+    text = replaced(text, "  slope_deg: 0", "  slope_deg: 3");
+    return text;
+  };
+  const coupling::RigidStudy s2 = coupling::read_rigid_study(dir.write("plow2d.yaml", with_common("r100_plow_2d.yaml")).string());
+  const coupling::RigidStudy s3 = coupling::read_rigid_study(dir.write("plow3d.yaml", with_common("r100_plow_straight.yaml")).string());
+  ASSERT_EQ(s2.dimensions(), 2);
+  ASSERT_EQ(s3.dimensions(), 3);
+  EXPECT_EQ(s2.units.name(), s3.units.name());
+  EXPECT_EQ(s2.attachment(), s3.attachment());
+  EXPECT_EQ(s2.machine_2d().contacts, rigid::ContactLaw::linear);
+  EXPECT_EQ(s3.machine_3d().contacts, rigid::ContactLaw::linear);
+  EXPECT_EQ(s2.machine_2d().ground_slope, s3.machine_3d().ground_slope);
+  EXPECT_NEAR(s2.machine_2d().ground_slope, 3 * M_PI / 180, 1e-15);
+  EXPECT_EQ(s2.machine_2d().forward_speed, s3.machine_3d().forward_speed);
+  EXPECT_EQ(s2.modes, s3.modes);
+  EXPECT_FALSE(s2.modes);
+  EXPECT_EQ(s2.modal_soil, rigid::ModalSoil::backing);
+  EXPECT_EQ(s3.modal_soil, rigid::ModalSoil::backing);
+  ASSERT_TRUE(s2.response && s3.response);
+  EXPECT_EQ(s2.response->duration, s3.response->duration);
+  EXPECT_EQ(s2.response->output_interval, s3.response->output_interval);
+  EXPECT_EQ(s2.response->method, coupling::ResponseRequest::Method::rk4);
+  EXPECT_EQ(s3.response->method, coupling::ResponseRequest::Method::rk4);
+  EXPECT_EQ(s2.response->rk4_step, s3.response->rk4_step);
+  EXPECT_EQ(s2.response->relative_tolerance, s3.response->relative_tolerance);
+  // The soil law: both files give K5 40000 lbf/in, C5 300 lbf*s/in, REK 0, REC 0.25, cut_face.
+  const rigid::SoilLaw& a = s2.machine_2d().soil;
+  const rigid::SoilLaw& b = s3.machine_3d().soil;
+  EXPECT_EQ(a.stiffness, b.stiffness);
+  EXPECT_EQ(a.damping, b.damping);
+  EXPECT_EQ(a.stiffness_reduction, b.stiffness_reduction);
+  EXPECT_EQ(a.damping_reduction, b.damping_reduction);
+  EXPECT_EQ(a.cut_face, b.cut_face);
+  EXPECT_EQ(a.spring_from_contact, b.spring_from_contact);
+  EXPECT_EQ(s2.shaker_frequency(), s3.shaker_frequency());
+}
+
+// A ground input table (piecewise linear heights) reads the same under a 2-D and a 3-D tire: the
+// same times and values (SI), the same height and slope at any time (it used to be 2-D only).
+TEST(OneStudyReader, AGroundTableReadsTheSameUnderA2DAnd3DTire) {
+  const framedyn::testing::TempDir dir;
+  const std::string table = "{kind: table, times: [0, 0.1, 0.3], values: [0, 0.5, -0.25]}";
+  std::string t2 = read_text(kSource / "examples" / "r100_plow_2d.yaml");
+  t2 = replaced(t2, "    contact: [0, -26]\n", "    contact: [0, -26]\n    normal_input: " + table + "\n");
+  std::string t3 = read_text(kSource / "examples" / "r100_plow_straight.yaml");
+  const std::string left = t3.substr(t3.find("    left:"), t3.find("\n", t3.find("    left:")) - t3.find("    left:"));
+  t3 = replaced(t3, left, left.substr(0, left.rfind('}')) + ", vertical_input: " + table + "}");
+  const rigid::GroundInput g2 = coupling::read_rigid_study(dir.write("t2.yaml", t2).string()).machine_2d().front_tire.normal_input;
+  const rigid::GroundInput g3 = coupling::read_rigid_study(dir.write("t3.yaml", t3).string()).machine_3d().front_tires.left.vertical_input;
+  ASSERT_EQ(g2.kind, rigid::GroundInput::Kind::table);
+  ASSERT_EQ(g3.kind, rigid::GroundInput::Kind::table);
+  EXPECT_EQ(g2.times, g3.times);
+  EXPECT_EQ(g2.values, g3.values);
+  // 0.05 s: halfway up the first segment, 0.25 in = 0.00635 m, rising 0.5 in / 0.1 s = 0.127 m/s.
+  for (double t : {0.05, 0.2, 0.29}) {
+    EXPECT_EQ(g2.displacement(t), g3.displacement(t)) << t;
+    EXPECT_EQ(g2.velocity(t), g3.velocity(t)) << t;
+  }
+  EXPECT_NEAR(g3.displacement(0.05), 0.25 * 0.0254, 1e-15);
+  EXPECT_NEAR(g3.velocity(0.05), 0.5 * 0.0254 / 0.1, 1e-12);
+}
+
+// A feature of one model in a study of the other is refused with the reason (issue 15: "every
+// feature works in 2-D and 3-D, or says why not"): frame_output in 3-D (STUDY-139), soil_line in 3-D
+// (STUDY-140), frame_response in 2-D (STUDY-142), calibration.pair_with: symmetric_modes in 2-D (STUDY-137).
+TEST(OneStudyReader, AFeatureOfOneModelInTheOtherIsRefusedWithTheReason) {
+  const framedyn::testing::TempDir dir;
+  const std::string plow2d = read_text(kSource / "examples" / "r100_plow_2d.yaml");
+  const std::string plow3d = read_text(kSource / "examples" / "r100_plow_straight.yaml");
+  const auto error_in = [&](const std::string& text) {
+    const fs::path file = dir.write("study.yaml", text);
+    return error_of([&] { coupling::read_rigid_study(file.string()); });
+  };
+  std::string m = error_in(plow3d + "frame_output: {points: [36]}\n");
+  EXPECT_NE(m.find("frame_output: expected model: rigid_2d for frame_output (the resultants of Eq. 2.47 along the 2-D model's one frame tube"), std::string::npos) << m;
+  EXPECT_NE(m.find("found a frame_output block in a rigid_3d study"), std::string::npos) << m;
+  m = error_in(replaced(plow3d, "  spring_reference: cut_face", "  spring_reference: soil_line"));
+  EXPECT_NE(m.find("soil.spring_reference: expected equilibrium, contact or cut_face in a 3-D study (soil_line carries the springs' anchor rearward with the soil"), std::string::npos) << m;
+  EXPECT_NE(m.find("found 'soil_line'"), std::string::npos) << m;
+  m = error_in(plow2d + "frame_response: {mesh: r100_frame.inp}\n");
+  EXPECT_NE(m.find("frame_response: expected model: rigid_3d for the frame pipeline"), std::string::npos) << m;
+  m = error_in(plow2d + "calibration: {pair_with: symmetric_modes, parameters: [cab.inertia], targets: [{frequency_hz: 6}]}\n");
+  EXPECT_NE(m.find("calibration.pair_with: expected all_modes (symmetric_modes is for 3-D studies)"), std::string::npos) << m;
+  // And the soil line itself still reads in 2-D.
+  EXPECT_EQ(error_in(replaced(plow2d, "spring_reference: cut_face", "spring_reference: soil_line")), "");
 }
 
 }  // namespace

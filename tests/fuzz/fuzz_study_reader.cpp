@@ -1,5 +1,5 @@
 // libFuzzer harness for the YAML study readers: the 2-D and 3-D rigid-body
-// studies (coupling/rigid_study.h, rigid_study_3d.h) and the frame transient
+// studies (coupling/rigid_study.h, both models) and the frame transient
 // study (coupling/frame_study.h), which share coupling/yaml_input. The input
 // goes to the reader of the `model` it names (a reader refuses another
 // model at `model` before it reads any other key). Any input must either read
@@ -19,7 +19,6 @@
 #include "core/error.h"
 #include "coupling/frame_study.h"
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
 #include "rigid/machine_2d.h"
 #include "rigid/machine_3d.h"
 #include "rigid/vehicle_model.h"
@@ -61,13 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) finding("cannot write the harness's temporary file");
   try {
     try {
-      check_machine(framedyn::rigid::build_vehicle_model(fc::read_rigid_study(file).machine));
-      return 0;
-    } catch (const framedyn::core::InputError& e) {
-      if (!refused_at_model(e)) throw;
-    }
-    try {
-      check_machine(framedyn::rigid::build_vehicle_model(fc::read_rigid_study_3d(file).machine));
+      check_machine(fc::build_vehicle_model(fc::read_rigid_study(file).machine));  // rigid_2d and rigid_3d
       return 0;
     } catch (const framedyn::core::InputError& e) {
       if (!refused_at_model(e)) throw;

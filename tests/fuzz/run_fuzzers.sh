@@ -63,7 +63,7 @@ case "$what" in
     harness=$4 corpus=$5
     case "$harness" in
       fuzz_inp_reader)   sources="fem/inp_reader.cpp" ;;
-      fuzz_study_reader) sources="coupling/yaml_input.cpp coupling/study_blocks.cpp coupling/rigid_study.cpp coupling/rigid_study_3d.cpp coupling/frame_study.cpp" ;;
+      fuzz_study_reader) sources="coupling/yaml_input.cpp coupling/study_blocks.cpp coupling/rigid_study.cpp coupling/study_machine_2d.cpp coupling/study_machine_3d.cpp coupling/frame_study.cpp" ;;
       fuzz_load_history_reader) sources="coupling/load_history.cpp" ;;
       *) echo "run_fuzzers: unknown harness '$harness'" >&2; exit 2 ;;
     esac

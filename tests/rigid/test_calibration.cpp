@@ -349,7 +349,7 @@ TEST(CalibrationStudy, MeasuredShapeInTheStudysUnitsIsTheMachinesOwnModeShape) {
   const auto pitch = std::find_if(own.modes.begin(), own.modes.end(), [](const rigid::RigidMode& m) { return m.dominant == "theta_y"; });
   ASSERT_NE(pitch, own.modes.end());
   const rigid::RigidMode& mode = *pitch;
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(base.machine);
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(base.machine_2d());
   const int iz = machine.coordinate("z"), it = machine.coordinate("theta_y");
   const double in = 0.0254, scale = 3.7;
   const double point_z = (rigid::frame_point_jacobian(machine, Eigen::Vector3d(40 * in, 0.0, 10 * in)).row(2) * mode.shape)(0);
@@ -392,7 +392,7 @@ TEST(CalibrationStudy, InertiaBoundsFollowTheDeclaredBox) {
   const coupling::RigidStudy s = case1_with_calibration(
       "calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {frequency_hz: 6.268, dominant: theta_v}\n"
       "  bounds:\n    - {parameter: cab.inertia, dimensions: [40, 40, 30], distributed: true, reason: cab box}\n");
-  const double m = s.machine.cab.mass, in = 0.0254, d2 = (40 * 40 + 30 * 30) * in * in;
+  const double m = s.machine_2d().cab.mass, in = 0.0254, d2 = (40 * 40 + 30 * 30) * in * in;
   ASSERT_EQ(s.calibration->bounds.size(), 1u);
   EXPECT_NEAR(s.calibration->bounds[0].lower, m * d2 / 12, 1e-12 * m * d2);
   EXPECT_NEAR(s.calibration->bounds[0].upper, m * d2 / 4, 1e-12 * m * d2);
@@ -409,7 +409,7 @@ TEST(CalibrationStudy, InertiaBoundsFollowTheDeclaredBox) {
 // fitted value, its k and the limit, in the study's units (in, lbf s^2 in).
 TEST(CalibrationStudy, FittedInertiaOutsideItsBoxIsWarnedOf) {
   const coupling::RigidStudy nominal = case1_with_calibration("");
-  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine);
+  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine_2d());
   double f0 = 0;
   for (const rigid::RigidMode& m : rigid::rigid_modes(model.m, rigid::modal_stiffness(model, nominal.modal_soil), model.multibody.coordinate_names()))
     if (m.dominant == "theta_v") f0 = m.frequency_hz;
@@ -420,15 +420,15 @@ TEST(CalibrationStudy, FittedInertiaOutsideItsBoxIsWarnedOf) {
   const coupling::RigidResults inside = coupling::run_rigid_study(boxed);
   ASSERT_TRUE(inside.calibration.has_value());
   EXPECT_TRUE(inside.calibration->at_bound[0]);
-  EXPECT_NEAR(std::sqrt(inside.calibration->fitted[0] / boxed.machine.cab.mass) / in, k_max, 1e-9 * k_max);
+  EXPECT_NEAR(std::sqrt(inside.calibration->fitted[0] / boxed.machine_2d().cab.mass) / in, k_max, 1e-9 * k_max);
   EXPECT_TRUE(inside.warnings.empty());
   const coupling::RigidStudy loose = case1_with_calibration(
       head + "    - {parameter: cab.inertia, dimensions: [30, 30, 20], distributed: true, upper: " +
-      fmt::format("{:.17g}", boxed.units.from_si(boxed.machine.cab.mass * std::pow(24 * in, 2), core::Quantity::rotary_inertia)) + ", reason: test}\n");
+      fmt::format("{:.17g}", boxed.units.from_si(boxed.machine_2d().cab.mass * std::pow(24 * in, 2), core::Quantity::rotary_inertia)) + ", reason: test}\n");
   const coupling::RigidResults outside = coupling::run_rigid_study(loose);
   ASSERT_TRUE(outside.calibration.has_value());
   EXPECT_EQ(outside.calibration->achieved_dominant[0], "theta_v");
-  const double k = std::sqrt(outside.calibration->fitted[0] / loose.machine.cab.mass) / in;
+  const double k = std::sqrt(outside.calibration->fitted[0] / loose.machine_2d().cab.mass) / in;
   EXPECT_GT(k, k_max * 1.01);
   EXPECT_LT(k, 24.0);
   ASSERT_EQ(outside.warnings.size(), 1u);
@@ -540,7 +540,7 @@ TEST(BodySize, CalibratedInertiaOfADeclaredBodyIsBoundedByItsBox) {
   const std::string cal = "calibration:\n  parameters: [frame.added_masses.boom.inertia]\n  targets:\n    - {frequency_hz: 3.8, dominant: theta_y}\n";
   const coupling::RigidStudy s = case1_with_boom("1100", "24", "dimensions: {length: 20, width: 12, height: 44}, distributed: true", cal);
   ASSERT_TRUE(s.calibration.has_value());
-  const double m = s.machine.frame.added_masses[0].mass, in = 0.0254, d2 = (20.0 * 20 + 44 * 44) * in * in;
+  const double m = s.machine_2d().frame.added_masses[0].mass, in = 0.0254, d2 = (20.0 * 20 + 44 * 44) * in * in;
   const coupling::ParameterBound& b = s.calibration->bounds[0];
   EXPECT_NEAR(b.lower, m * d2 / 12, 1e-12 * m * d2);
   EXPECT_NEAR(b.upper, m * d2 / 4, 1e-12 * m * d2);
@@ -559,7 +559,7 @@ TEST(BodySize, CalibratedInertiaOfADeclaredBodyIsBoundedByItsBox) {
 TEST(BodySize, FittedMassThatTakesAStatedInertiaOutOfItsBoxIsWarnedOf) {
   const std::string box = "dimensions: {length: 20, width: 12, height: 44}";
   const coupling::RigidStudy nominal = case1_with_boom("1100", "24", box);
-  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine);
+  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine_2d());
   double f0 = 0;
   for (const rigid::RigidMode& m : rigid::rigid_modes(model.m, rigid::modal_stiffness(model, nominal.modal_soil), model.multibody.coordinate_names()))
     if (m.dominant == "theta_y") f0 = m.frequency_hz;
@@ -569,7 +569,7 @@ TEST(BodySize, FittedMassThatTakesAStatedInertiaOutOfItsBoxIsWarnedOf) {
       fmt::format("calibration:\n  parameters: [frame.added_masses.boom.mass]\n  targets:\n    - {{frequency_hz: {:.17g}, dominant: theta_y}}\n", 1.03 * f0));
   const coupling::RigidResults r = coupling::run_rigid_study(fit);
   ASSERT_TRUE(r.calibration.has_value());
-  const double m0 = nominal.machine.frame.added_masses[0].mass, m = r.calibration->fitted[0];
+  const double m0 = nominal.machine_2d().frame.added_masses[0].mass, m = r.calibration->fitted[0];
   ASSERT_LT(m, m0 * std::pow(24 / (std::hypot(20.0, 44.0) / 2), 2));  // the fit took k past the box
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(r.warnings[0].code, "calibration_outside_physical_range");
@@ -613,7 +613,7 @@ TEST(BodySize2D, CabAndPlowBoxesBoundTheirCalibratedPitchInertiaByTheBoxsClosedF
                                                   "calibration:\n  parameters: [cab.inertia]\n  targets:\n    - {frequency_hz: 6.268, dominant: theta_v}\n");
   ASSERT_EQ(cab.body_sizes.size(), 1u);
   EXPECT_EQ(cab.body_sizes[0].body, "cab");
-  const double m_cab = cab.machine.cab.mass, d2 = (48.0 * 48 + 60 * 60) * in * in;
+  const double m_cab = cab.machine_2d().cab.mass, d2 = (48.0 * 48 + 60 * 60) * in * in;
   EXPECT_NEAR(m_cab, 650 * 4.4482216152605 / 9.80665, 1e-9 * m_cab);  // 650 lbf over standard gravity
   const coupling::ParameterBound& bc = cab.calibration->bounds[0];
   EXPECT_NEAR(bc.lower, m_cab * d2 / 12, 1e-12 * m_cab * d2);
@@ -624,7 +624,7 @@ TEST(BodySize2D, CabAndPlowBoxesBoundTheirCalibratedPitchInertiaByTheBoxsClosedF
       "r100_plow_2d.yaml", {{"\nanalysis:", "\ncalibration:\n  parameters: [plow.inertia]\n  targets:\n    - {frequency_hz: 5.0}\nanalysis:"}});
   ASSERT_EQ(plow.body_sizes.size(), 2u);  // the shipped cab's and plow's
   EXPECT_EQ(plow.body_sizes[1].body, "plow");
-  const double m_plow = plow.machine.plow.mass, p2 = (20.0 * 20 + 48 * 48) * in * in;
+  const double m_plow = plow.machine_2d().plow.mass, p2 = (20.0 * 20 + 48 * 48) * in * in;
   const coupling::ParameterBound& bp = plow.calibration->bounds[0];
   EXPECT_NEAR(bp.lower, m_plow * std::pow(12 * in / 1.5, 2), 1e-12 * m_plow * p2);
   EXPECT_NEAR(bp.upper, m_plow * p2 / 4, 1e-12 * m_plow * p2);
@@ -672,7 +672,7 @@ TEST(BodySize2D, BoxThatCannotHoldItsBodyIsRefusedAtItsDimensions) {
 TEST(BodySize2D, FitEndingOnTheCabsBoxIsReportedAtItsBound) {
   const std::string box = "  dimensions: {length: 48, height: 60}\n  distributed: true\n";
   const coupling::RigidStudy nominal = case1_with_cab("24", box, "");
-  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine);
+  const rigid::VehicleModel model = rigid::build_vehicle_model(nominal.machine_2d());
   double f0 = 0;
   for (const rigid::RigidMode& m : rigid::rigid_modes(model.m, rigid::modal_stiffness(model, nominal.modal_soil), model.multibody.coordinate_names()))
     if (m.dominant == "theta_v") f0 = m.frequency_hz;
@@ -683,7 +683,7 @@ TEST(BodySize2D, FitEndingOnTheCabsBoxIsReportedAtItsBound) {
   ASSERT_TRUE(r.calibration.has_value());
   ASSERT_EQ(r.calibration->at_bound.size(), 1u);
   EXPECT_TRUE(r.calibration->at_bound[0]);
-  const double k = std::sqrt(r.calibration->fitted[0] / fit.machine.cab.mass) / 0.0254;
+  const double k = std::sqrt(r.calibration->fitted[0] / fit.machine_2d().cab.mass) / 0.0254;
   EXPECT_NEAR(k, std::hypot(48.0, 60.0) / 2, 1e-6 * k);
   EXPECT_GT(r.calibration->max_relative_error, 0.01);
   EXPECT_EQ(r.calibration->achieved_dominant[0], "theta_v");
@@ -725,7 +725,7 @@ TEST(ShippedMachine, TwoDimensionalCabAndPlowRadiiOfGyrationAreInsideTheirDeclar
   const double in = 0.0254;
   for (const coupling::DeclaredBodySize& b : s.body_sizes) {
     const bool cab = b.body == "cab";
-    const double m = cab ? s.machine.cab.mass : s.machine.plow.mass, i = cab ? s.machine.cab.inertia : s.machine.plow.inertia;
+    const double m = cab ? s.machine_2d().cab.mass : s.machine_2d().plow.mass, i = cab ? s.machine_2d().cab.inertia : s.machine_2d().plow.inertia;
     const rigid::GyrationRange g = rigid::gyration_range(b.box, 1);
     const double k = std::sqrt(i / m);
     EXPECT_NEAR(k / in, cab ? 16.0 : 12.0, 1e-9);
@@ -763,7 +763,7 @@ TEST(ThesisCase4, PsiModeMatchesAppendixGFormula) {
   const coupling::RigidResults r = coupling::run_rigid_study(study);
   ASSERT_EQ(r.modes.size(), 1u);
   EXPECT_EQ(r.modes[0].dominant, "psi");
-  const rigid::Machine2DParameters& p = study.machine;
+  const rigid::Machine2DParameters& p = study.machine_2d();
   const double expected = std::sqrt((p.soil.stiffness + p.plow.bounce_tire.stiffness) / p.plow.mass) / kTwoPi;
   EXPECT_NEAR(r.modes[0].frequency_hz / expected, 1.0, 1e-9);
   // A calibration check, not evidence: the file's M2 is computed from the
@@ -796,7 +796,7 @@ TEST(ThesisCase5, CalibrationFitOfTableVCase5KeepsItsBoundsAndReportsItsResidual
 TEST(ThesisCase5, PsiModeOfTheAttachedPlowIsTheIsolatedAppendixGModeExactly) {
   const coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/thesis/case5_2d.yaml");
   for (const double k5 : {0.0, 6000.0 * kNewtonPerMetrePerLbfPerInch, 40000.0 * kNewtonPerMetrePerLbfPerInch, 1e8}) {  // lbf/in -> N/m
-    rigid::Machine2DParameters p = study.machine;
+    rigid::Machine2DParameters p = study.machine_2d();
     p.soil.stiffness = k5;
     const rigid::VehicleModel m = rigid::build_vehicle_model(p);
     const std::vector<rigid::RigidMode> modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names());
@@ -828,22 +828,22 @@ TEST(ThesisCase6, CalibrationFitOfTableVCase6KeepsItsBoundsAndReportsItsResidual
 // blade has no spring: docs/theory/rigid.md section 11), REK or 0.
 TEST(ModalSoil, CuttingBackingAndNoneDifferByTheSoilSpringsShare) {
   coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
-  study.machine.soil.stiffness_reduction = 0.3;
+  study.machine_2d().soil.stiffness_reduction = 0.3;
   {
-    ASSERT_TRUE(study.machine.soil.cut_face);  // the shipped reading
-    const rigid::VehicleModel cut = rigid::build_vehicle_model(study.machine);
+    ASSERT_TRUE(study.machine_2d().soil.cut_face);  // the shipped reading
+    const rigid::VehicleModel cut = rigid::build_vehicle_model(study.machine_2d());
     const double scale = cut.k_full.norm();
     EXPECT_LT((rigid::modal_stiffness(cut, rigid::ModalSoil::cutting) - rigid::modal_stiffness(cut, rigid::ModalSoil::none)).norm(),
               1e-14 * scale);
   }
-  study.machine.soil.cut_face = false;
-  study.machine.soil.spring_from_contact = false;
-  study.machine.soil.contact_moves_with_soil = false;
-  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
+  study.machine_2d().soil.cut_face = false;
+  study.machine_2d().soil.spring_from_contact = false;
+  study.machine_2d().soil.contact_moves_with_soil = false;
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine_2d());
   Eigen::MatrixXd soil = Eigen::MatrixXd::Zero(m.size(), m.size());
   for (int e : m.soil_elements) {
     const Eigen::RowVectorXd g = m.multibody.elongation_map(e);
-    soil += study.machine.soil.stiffness * g.transpose() * g;
+    soil += study.machine_2d().soil.stiffness * g.transpose() * g;
   }
   using S = rigid::ModalSoil;
   const double scale = m.k_full.norm();

@@ -39,7 +39,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include "coupling/rigid_study.h"
-#include "coupling/rigid_study_3d.h"
 #include "rigid/contact_statics.h"
 #include "rigid/machine_2d.h"
 #include "rigid/machine_3d.h"
@@ -169,22 +168,22 @@ double drift_from_statics(const rigid::VehicleModel& machine) {
 
 TEST(ContactStatics, TheShipped2DPlowStartedFromItsStaticsStaysThere) {
   coupling::RigidStudy study = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml");
-  study.machine.plow.shaker_amplitude = 0.0;
-  study.machine.forward_speed = 0.0;
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
+  study.machine_2d().plow.shaker_amplitude = 0.0;
+  study.machine_2d().forward_speed = 0.0;
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine_2d());
   EXPECT_LT(drift_from_statics(machine), 1e-9);
   // The soil carries nothing statically; the contacts carry the weight with the cab mounts and cylinder inside.
   for (int e : machine.soil_elements) EXPECT_EQ(machine.statics.element_forces[static_cast<std::size_t>(e)], 0.0);
 }
 
 TEST(ContactStatics, TheShipped3DOffsetPlowStartedFromItsStaticsStaysThere) {
-  coupling::RigidStudy3D study = coupling::read_rigid_study_3d(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/offset_plowing.yaml");
-  study.machine.plow.shaker_amplitude = 0.0;
-  study.machine.forward_speed = 0.0;
-  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine);
+  coupling::RigidStudy study = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/offset_plowing.yaml");
+  study.machine_3d().plow.shaker_amplitude = 0.0;
+  study.machine_3d().forward_speed = 0.0;
+  const rigid::VehicleModel machine = rigid::build_vehicle_model(study.machine_3d());
   EXPECT_LT(drift_from_statics(machine), 1e-9);
   double weight = 0.0;
-  for (const rigid::Body& b : machine.multibody.bodies()) weight += b.mass * study.machine.gravity;
+  for (const rigid::Body& b : machine.multibody.bodies()) weight += b.mass * study.machine_3d().gravity;
   double carried = 0.0;
   for (std::size_t i = 0; i < machine.statics.contacts.size(); ++i)
     if (machine.statics.engaged[i]) carried += machine.statics.element_forces[static_cast<std::size_t>(machine.statics.contacts[i].normal)];
@@ -269,7 +268,7 @@ TEST(ShippedMachineStatics, TwoDimensionalMachineWithoutItsPlowRestsOnItsAxlesBy
   const std::string file = shipped_variant(dir, "r100_plow_2d.yaml",
       {{"attachment: plow", "attachment: none"}, drop_block("r100_plow_2d.yaml", "plow"), drop_block("r100_plow_2d.yaml", "soil")});
   const WeightSums s = weights_of(file);
-  const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine);
+  const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine_2d());
   std::vector<double> tf, tr;
   const double front = contact_force(m, "front_tire", &tf), rear = contact_force(m, "rear_tire", &tr);
   const double hand_front = (kRearX * s.w - s.wx) / (kRearX - kFrontX);
@@ -301,7 +300,7 @@ TEST(ShippedMachineStatics, ThreeDimensionalMachineWithoutItsPlowRestsOnItsAxles
     const std::string file = shipped_variant(dir, ex,
         {{"attachment: plow", "attachment: none"}, drop_block(ex, "plow"), drop_block(ex, "soil"), {"position: [58, 0, 10]", tank}});
     const WeightSums s = weights_of(file);
-    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study_3d(file).machine);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine_3d());
     std::vector<double> tangential;
     const double fl = contact_force(m, "front_left_tire", &tangential), fr = contact_force(m, "front_right_tire", &tangential);
     const double rl = contact_force(m, "rear_left_tire", &tangential), rr = contact_force(m, "rear_right_tire", &tangential);
@@ -336,7 +335,7 @@ TEST(ShippedMachineStatics, PlowMachinesBalanceTheirWeightAboutTheRearAxleWithTh
     const WeightSums s = weights_of(file);
     const YAML::Node y = YAML::LoadFile(file);
     const double xb = y["plow"]["bounce_tire"]["point"][0].as<double>();
-    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine_2d());
     const double f = contact_force(m, "front_tire"), r = contact_force(m, "rear_tire"), b = contact_force(m, "bounce_tire");
     EXPECT_NEAR(f + r + b, s.w, 1e-9 * s.w);
     EXPECT_NEAR(f * (kFrontX - kRearX) + b * (xb - kRearX), s.wx - kRearX * s.w, 1e-9 * s.w * kRearX);
@@ -348,7 +347,7 @@ TEST(ShippedMachineStatics, PlowMachinesBalanceTheirWeightAboutTheRearAxleWithTh
     const WeightSums s = weights_of(file);
     const YAML::Node y = YAML::LoadFile(file);
     const double xb = y["plow"]["bounce_tire"]["point"][0].as<double>();
-    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study_3d(file).machine);
+    const rigid::VehicleModel m = rigid::build_vehicle_model(coupling::read_rigid_study(file).machine_3d());
     const double fl = contact_force(m, "front_left_tire"), fr = contact_force(m, "front_right_tire");
     const double rl = contact_force(m, "rear_left_tire"), rr = contact_force(m, "rear_right_tire"), b = contact_force(m, "bounce_tire");
     EXPECT_NEAR(fl + fr + rl + rr + b, s.w, 1e-9 * s.w);

@@ -36,7 +36,7 @@ coupling::RigidResults respond(coupling::ResponseRequest::Method method, double 
   coupling::RigidStudy study = coupling::read_rigid_study(shipped_plow());
   // The premise is a linear system: the thesis's bilateral tires (with one-sided
   // ones the bounce tire lifts off, an event, and RK4 drops to first order).
-  study.machine.contacts = rigid::ContactLaw::linear;
+  study.machine_2d().contacts = rigid::ContactLaw::linear;
   study.modes = false;
   study.calibration.reset();
   coupling::ResponseRequest r;  // the shipped study's: 0.5 s, samples every 0.0005 s
@@ -87,8 +87,8 @@ TEST(IntegratorConvergence, Rk4AtTenthMillisecondAgreesWithEventLocatedOnPeakPlo
 // stage time would show order 1 or 2.
 TEST(IntegratorConvergence, Rk4IsFourthOrderOnTheShippedPlowWithoutSwitches) {
   coupling::RigidStudy study = coupling::read_rigid_study(shipped_plow());
-  study.machine.contacts = rigid::ContactLaw::linear;  // a linear system, as above
-  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine);
+  study.machine_2d().contacts = rigid::ContactLaw::linear;  // a linear system, as above
+  const rigid::VehicleModel m = rigid::build_vehicle_model(study.machine_2d());
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.size());
   rigid::IntegrationOptions o;
   o.end_time = 0.5;

@@ -25,7 +25,7 @@ Eigen::Vector2d xz(const Eigen::Vector3d& f) { return {f.x(), f.z()}; }
 // speed through C5) remains. Exact by construction: round-off tolerance.
 TEST(SoilReference, ContactReferenceUnloadsTheSpringsAtTheStartOfACut) {
   coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d_vertical_path.yaml");
-  rigid::Machine2DParameters p = study.machine;
+  rigid::Machine2DParameters p = study.machine_2d();
   p.forward_speed = 0.0;
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
   q(3) = 0.01;  // psi: the plow arm turned, the blade displaced
@@ -66,7 +66,7 @@ TEST(SoilReference, ContactReferenceUnloadsTheSpringsAtTheStartOfACut) {
 // put in the machine, carries only the damper's part. Exact: round-off.
 TEST(SoilReference, SoilLineAnchorIsCarriedRearwardWithTheSoilFromTheStartOfTheCut) {
   coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d_vertical_path.yaml");
-  rigid::Machine2DParameters p = study.machine;
+  rigid::Machine2DParameters p = study.machine_2d();
   p.ground_slope = 0.0;
   p.forward_speed = 0.05;  // m/s
   p.soil.spring_from_contact = true;
@@ -108,7 +108,7 @@ TEST(SoilReference, SoilLineAnchorIsCarriedRearwardWithTheSoilFromTheStartOfTheC
 // C5 (v5 - v_soil), whatever the blade's displacement, and the equations of
 // motion are those of the machine without soil springs. Exact: round-off.
 TEST(SoilReference, CutFaceSpringsCarryNothingWhileTheBladeCuts) {
-  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine;
+  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine_2d();
   ASSERT_TRUE(p.soil.cut_face);
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6), v = Eigen::VectorXd::Zero(6);
   q(3) = 0.01;  // psi: the blade displaced
@@ -146,7 +146,7 @@ TEST(SoilReference, CutFaceSpringsCarryNothingWhileTheBladeCuts) {
 // blade's displacement at the back-off instant t_b. A blade held at a_b is
 // then pulled forward by REK K5 VS (t - t_b) in X, as the soil streams away.
 TEST(SoilReference, CutFaceSpringsActFromTheCutFaceCarriedWithTheSoilWhileBacking) {
-  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine;
+  rigid::Machine2DParameters p = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml").machine_2d();
   p.ground_slope = 0.0;
   p.soil.stiffness_reduction = 0.5;
   const rigid::VehicleModel m = rigid::build_vehicle_model(p);
@@ -183,12 +183,12 @@ TEST(SoilReference, CutFaceResponseAndModesAreIndependentOfK5) {
     coupling::RigidStudy study = coupling::read_rigid_study(FRAMEDYN_SOURCE_DIR "/examples/r100_plow_2d.yaml");
     study.frame_output.reset();
     study.response->duration = 0.25;
-    study.machine.contacts = law;
-    ASSERT_EQ(study.machine.soil.stiffness_reduction, 0.0);
+    study.machine_2d().contacts = law;
+    ASSERT_EQ(study.machine_2d().soil.stiffness_reduction, 0.0);
     std::vector<coupling::RigidResults> runs;
     for (double scale : {0.5, 1.5}) {
       coupling::RigidStudy s = study;
-      s.machine.soil.stiffness *= scale;
+      s.machine_2d().soil.stiffness *= scale;
       runs.push_back(coupling::run_rigid_study(s));
     }
     const rigid::Trajectory &a = runs[0].trajectory, &b = runs[1].trajectory;

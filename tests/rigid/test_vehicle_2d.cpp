@@ -116,11 +116,11 @@ std::string chain_variant_text() {
   return t.substr(0, plow + 1) + chain + t.substr(soil);
 }
 
-rigid::Machine2DParameters shipped_machine() { return coupling::read_rigid_study(example_file()).machine; }
+rigid::Machine2DParameters shipped_machine() { return coupling::read_rigid_study(example_file()).machine_2d(); }
 
 rigid::Machine2DParameters chain_machine() {
   const framedyn::testing::TempDir dir("framedyn_test_vehicle_2d");
-  return coupling::read_rigid_study(dir.write("chain.yaml", chain_variant_text()).string()).machine;
+  return coupling::read_rigid_study(dir.write("chain.yaml", chain_variant_text()).string()).machine_2d();
 }
 
 int coordinate(const rigid::VehicleModel& m, const std::string& name) {
@@ -788,11 +788,11 @@ TEST(AppendixG, ThesisCase4PsiFrequencyIs8321Hz) {
   const std::string file = std::string(FRAMEDYN_SOURCE_DIR) + "/examples/thesis/case4_psi_2d.yaml";
   const coupling::RigidStudy s = coupling::read_rigid_study(file);
   const double lbf_per_in = 4.4482216152605 / 0.0254, mass_unit = 4.4482216152605 / 0.0254;  // N/m, kg per lbf s^2/in
-  EXPECT_NEAR(s.machine.soil.stiffness, 40000 * lbf_per_in, 1e-9 * 40000 * lbf_per_in);
-  EXPECT_NEAR(s.machine.plow.bounce_tire.stiffness, 1500 * lbf_per_in, 1e-9 * 1500 * lbf_per_in);
+  EXPECT_NEAR(s.machine_2d().soil.stiffness, 40000 * lbf_per_in, 1e-9 * 40000 * lbf_per_in);
+  EXPECT_NEAR(s.machine_2d().plow.bounce_tire.stiffness, 1500 * lbf_per_in, 1e-9 * 1500 * lbf_per_in);
   const double m2 = 41500.0 / std::pow(2 * kPi * 8.321, 2);
-  EXPECT_NEAR(s.machine.plow.mass, m2 * mass_unit, 1e-11 * m2 * mass_unit) << "the file's M2 has 14 digits";
-  const rigid::VehicleModel m = rigid::build_vehicle_model(s.machine);
+  EXPECT_NEAR(s.machine_2d().plow.mass, m2 * mass_unit, 1e-11 * m2 * mass_unit) << "the file's M2 has 14 digits";
+  const rigid::VehicleModel m = rigid::build_vehicle_model(s.machine_2d());
   const auto modes = rigid::rigid_modes(m.m, m.k_full, m.multibody.coordinate_names(), s.fixed_coordinates);
   ASSERT_EQ(modes.size(), 1u);
   const double rel = std::abs(modes[0].frequency_hz - 8.321) / 8.321;
@@ -1300,7 +1300,7 @@ rigid::IntegrationOptions short_run() {
 // twice its shaker force, so that the bounce tire also lifts off: runs with
 // soil switches and contact events.
 rigid::Machine2DParameters switching_plow() {
-  rigid::Machine2DParameters p = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml").machine;
+  rigid::Machine2DParameters p = coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml").machine_2d();
   p.plow.shaker_amplitude *= 2.0;
   return p;
 }
@@ -1566,7 +1566,7 @@ TEST(StudyReader, BaseStudyOfTheErrorTableReads) {
   const std::string file = dir.write("base.yaml", kBaseStudy).string();
   const coupling::RigidStudy s = coupling::read_rigid_study(file);
   EXPECT_EQ(s.fixed_coordinates.size(), 2u);
-  EXPECT_NEAR(s.machine.plow.mass, 2800 * 4.4482216152605 / 9.80665, 1e-9);
+  EXPECT_NEAR(s.machine_2d().plow.mass, 2800 * 4.4482216152605 / 9.80665, 1e-9);
 }
 
 TEST(StudyReader, EveryErrorNamesTheFileTheLineAndTheKeyPath) {

@@ -150,7 +150,7 @@ rigid::Machine3DParameters from_2d(const rigid::Machine2DParameters& p, double c
 }
 
 rigid::Machine2DParameters shipped_2d() {
-  return coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml").machine;
+  return coupling::read_rigid_study(std::string(FRAMEDYN_SOURCE_DIR) + "/examples/r100_plow_2d.yaml").machine_2d();
 }
 
 // The offset plow: both axles steered 22 deg right, beta = 22 deg, alpha' = -1 deg, the

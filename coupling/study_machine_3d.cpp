@@ -1,5 +1,5 @@
-// Reading and running 3-D rigid-body studies; see rigid_study_3d.h.
-#include "coupling/rigid_study_3d.h"
+// The 3-D machine builder of the one study reader (model: rigid_3d); see study_machine.h.
+#include "coupling/study_machine.h"
 
 #include "coupling/frame_mass_source.h"
 
@@ -13,7 +13,7 @@
 #include "coupling/yaml_input.h"
 #include "fem/frame_model.h"
 
-namespace framedyn::coupling {
+namespace framedyn::coupling::internal {
 
 namespace {
 
@@ -52,19 +52,6 @@ rigid::RigidPart3D part(const YamlMap& m, const std::string& name) {
   return r;
 }
 
-// The mass and the inertias about its own axes of a declared body (DeclaredBodySize::body) of the machine.
-BodyInertia body_inertia_3d(const rigid::Machine3DParameters& p, const DeclaredBodySize& b) {
-  const auto of = [](const rigid::RigidPart3D& r) { return BodyInertia{r.mass, r.inertia.diagonal()}; };
-  if (b.body == "cab") return of(p.cab.body);
-  if (b.body == "front_axle") return of(p.front_axle.axle);
-  if (b.body == "frame.reel_and_carrier") return of(p.frame.reel_and_carrier);
-  if (b.body == "frame.rear_axle") return of(p.frame.rear_axle);
-  if (b.body == "plow") return {p.plow.mass, p.plow.inertia_boom_axes.diagonal()};
-  for (const rigid::RigidPart3D& part : p.frame.parts)
-    if (b.body == "frame.parts[" + part.name + "]") return of(part);
-  return {};
-}
-
 rigid::Tire3D tire(const YamlMap& m) {
   m.allow_only({"contact", "vertical", "longitudinal", "lateral", "vertical_input", "longitudinal_input"});
   rigid::Tire3D t;
@@ -72,8 +59,8 @@ rigid::Tire3D tire(const YamlMap& m) {
   t.vertical = read_spring_damper(m.map("vertical"));
   t.longitudinal = read_spring_damper(m.map("longitudinal"));
   t.lateral = read_spring_damper(m.map("lateral"));
-  if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in, /*with_table=*/false);
-  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in, /*with_table=*/false);
+  if (auto in = m.optional_map("vertical_input")) t.vertical_input = read_ground_input(*in);
+  if (auto in = m.optional_map("longitudinal_input")) t.longitudinal_input = read_ground_input(*in);
   return t;
 }
 
@@ -179,11 +166,17 @@ void read_part_mounts(const YamlMap& a, StudyFramePart& sp) {
 
 }  // namespace
 
-std::string study_model(const std::string& file) { return study_model(load_yaml_file(file), file); }
-
-std::string study_model(const YAML::Node& doc, const std::string& file) {
-  core::UnitSystem si = core::UnitSystem::si();
-  return YamlMap(doc, "", file, &si).text("model");
+// The mass and the inertias about its own axes of a declared body (DeclaredBodySize::body) of the machine.
+BodyInertia body_inertia_3d(const rigid::Machine3DParameters& p, const DeclaredBodySize& b) {
+  const auto of = [](const rigid::RigidPart3D& r) { return BodyInertia{r.mass, r.inertia.diagonal()}; };
+  if (b.body == "cab") return of(p.cab.body);
+  if (b.body == "front_axle") return of(p.front_axle.axle);
+  if (b.body == "frame.reel_and_carrier") return of(p.frame.reel_and_carrier);
+  if (b.body == "frame.rear_axle") return of(p.frame.rear_axle);
+  if (b.body == "plow") return {p.plow.mass, p.plow.inertia_boom_axes.diagonal()};
+  for (const rigid::RigidPart3D& part : p.frame.parts)
+    if (b.body == "frame.parts[" + part.name + "]") return of(part);
+  return {};
 }
 
 std::vector<std::string> calibratable_parameters_3d() {
@@ -278,29 +271,11 @@ void set_parameter_3d(rigid::Machine3DParameters& p, const std::string& name, do
   *s = value;
 }
 
-namespace {
-// The study in an already-parsed document; `file` names it in messages.
-RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file);
-}  // namespace
-
-RigidStudy3D read_rigid_study_3d(const std::string& file) { return read_rigid_study_3d_document(load_yaml_file(file), file); }
-
-RigidStudy3D read_rigid_study_3d(const YAML::Node& doc, const std::string& file) { return read_rigid_study_3d_document(doc, file); }
-
-namespace {
-RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::string& file) {
-  const StudyHeader header = read_study_header(doc, file, {"framedyn_study", "name", "units", "model", "attachment", "ground", "frame", "front_axle",
-                                                          "cab", "tires", "plow", "chain", "soil", "analysis", "calibration", "contacts", "frame_response"});
-  RigidStudy3D s;
-  s.file = file;
-  s.name = header.name;
-  s.units = header.units;
-  YamlMap root(doc, "", file, &s.units);
-  const std::string model = root.text("model");
-  if (model != "rigid_3d") throw root.error("model", "rigid_3d", "'" + model + "'");
-  rigid::Machine3DParameters& p = s.machine;
-  p.attachment = read_attachment(root);
-  p.contacts = read_contact_law(root);
+rigid::Machine3DParameters read_machine_3d(const YamlMap& root, rigid::Attachment attachment, rigid::ContactLaw contacts,
+                                           std::vector<DeclaredBodySize>& body_sizes, StudyFrameParts& frame_parts) {
+  rigid::Machine3DParameters p;
+  p.attachment = attachment;
+  p.contacts = contacts;
 
   const YamlMap tires = root.map("tires");
   tires.allow_only({"front", "rear"});
@@ -319,7 +294,9 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   const std::vector<YamlMap> parts = frame.list_of_maps("parts");
   require_distinct_names(parts, "frame part");
   // `from: frame_mesh`: the part the frame mesh models, its values from the mesh (coupling/frame_mass_source.h).
-  std::vector<StudyFramePart> study_parts;
+  std::vector<StudyFramePart>& study_parts = frame_parts.parts;
+  frame_parts.entries = parts;
+  frame_parts.where = frame.location("parts");
   for (const YamlMap& a : parts) {
     StudyFramePart sp;
     sp.where = a.location("");
@@ -337,7 +314,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
     if (sp.has_values) {
       a.allow_only({"name", "mass", "weight", "position", "inertia", "radii_of_gyration", "products", "from", "mounts", "dimensions", "distributed"});
       sp.part = part(a, a.text("name"));
-      read_body_size(a, "frame.parts[" + sp.part.name + "]", "frame.parts.", {0, 1, 2}, s.body_sizes);
+      read_body_size(a, "frame.parts[" + sp.part.name + "]", "frame.parts.", {0, 1, 2}, body_sizes);
       // The part the mesh models is the mesh's own tubes: it has no mounts to join.
       if (sp.from_mesh && a.has("mounts"))
         throw a.error("mounts", "no mounts on the part the frame mesh models (from: frame_mesh: it is the mesh's own tubes)", "mounts");
@@ -353,12 +330,12 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   const YamlMap reel = frame.map("reel_and_carrier");
   reel.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "attachment", "dimensions", "distributed"});
   p.frame.reel_and_carrier = part(reel, "reel_and_carrier");
-  read_body_size(reel, "frame.reel_and_carrier", "frame.reel_and_carrier.", {0, 1, 2}, s.body_sizes);
+  read_body_size(reel, "frame.reel_and_carrier", "frame.reel_and_carrier.", {0, 1, 2}, body_sizes);
   p.frame.reel_attachment = read_point3(reel, "attachment");
   const YamlMap rear = frame.map("rear_axle");
   rear.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "leveling_cylinder", "dimensions", "distributed"});
   p.frame.rear_axle = part(rear, "rear_axle");
-  read_body_size(rear, "frame.rear_axle", "frame.rear_axle.", {0, 1, 2}, s.body_sizes);
+  read_body_size(rear, "frame.rear_axle", "frame.rear_axle.", {0, 1, 2}, body_sizes);
   p.frame.rear_pin = read_point3(rear, "pin");
   p.frame.leveling_cylinder = read_point3(rear, "leveling_cylinder");
   if (p.frame.leveling_cylinder.y() == p.frame.rear_pin.y())
@@ -367,7 +344,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   const YamlMap front = root.map("front_axle");
   front.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "pin", "dimensions", "distributed"});
   p.front_axle.axle = part(front, "front_axle");
-  read_body_size(front, "front_axle", "front_axle.", {0, 1, 2}, s.body_sizes);
+  read_body_size(front, "front_axle", "front_axle.", {0, 1, 2}, body_sizes);
   p.front_axle.pin = read_point3(front, "pin");
   // The axle rolls (eta) about the pin's X axis: it needs inertia about that axis, its own or its mass's off the axis.
   const Eigen::Vector3d off_pin = p.front_axle.axle.cg - p.front_axle.pin;
@@ -378,7 +355,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   const YamlMap cab = root.map("cab");
   cab.allow_only({"mass", "weight", "position", "inertia", "radii_of_gyration", "products", "mounts", "dimensions", "distributed"});
   p.cab.body = part(cab, "cab");
-  read_body_size(cab, "cab", "cab.", {0, 1, 2}, s.body_sizes);
+  read_body_size(cab, "cab", "cab.", {0, 1, 2}, body_sizes);
   const std::vector<YamlMap> mounts = cab.list_of_maps("mounts");
   require_distinct_names(mounts, "cab mount");
   for (const YamlMap& m : mounts) {
@@ -404,7 +381,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
     const YamlMap& plow = *plow_block;
     plow.allow_only({"swing_pin", "boom_angle_deg", "blade_angle_deg", "boom_offset", "mass", "weight", "inertia", "radii_of_gyration", "products",
                      "cg", "linkage", "blade_point", "shaker", "bounce_tire", "lift_cylinder", "swing_spring", "dimensions", "distributed"});
-    read_body_size(plow, "plow", "plow.", {0, 1, 2}, s.body_sizes);  // its box along the boom's axes, as its inertia
+    read_body_size(plow, "plow", "plow.", {0, 1, 2}, body_sizes);  // its box along the boom's axes, as its inertia
     rigid::Plow3D& pl = p.plow;
     pl.swing_pin = read_point3(plow, "swing_pin");
     pl.boom_angle = plow.number_or("boom_angle_deg", Quantity::dimensionless, 0.0) * kDegree;
@@ -415,7 +392,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
     pl.mass = plow.mass(kGravity);
     pl.inertia_boom_axes = inertia3(plow, pl.mass, "plow");
     pl.cg = plow.point("cg");
-    read_plow_linkage_to_bounce_tire(plow, pl, /*with_table=*/false);
+    read_plow_linkage_to_bounce_tire(plow, pl);
     const YamlMap cyl = plow.map("lift_cylinder");
     cyl.allow_only({"base", "arm_point", "stiffness", "damping"});
     pl.cylinder_base = cyl.point("base");
@@ -432,15 +409,11 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
   if (auto chain = attachment_block(root, "chain", p.attachment == rigid::Attachment::chain, "no chain data unless attachment is chain", "a chain map"))
     read_chain(*chain, p.chain);
 
-  AnalysisBlock analysis = read_analysis(root);
-  s.modes = analysis.modes;
-  s.fixed_coordinates = std::move(analysis.fixed_coordinates);
-  s.modal_soil = analysis.modal_soil;
-  s.response = analysis.response;
-  if (auto cal = root.optional_map("calibration"))
-    s.calibration = read_calibration_request(*cal, [&](const std::string& name) { return get_parameter_3d(p, name); }, parameter_quantity_3d,
-                                            calibratable_parameters_3d(), true);
-  if (s.calibration) bound_inertias_by_body_sizes(*s.calibration, s.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_3d(p, b); });
+  return p;
+}
+
+void read_frame_response(const YamlMap& root, const std::string& file, const StudyFrameParts& parts, RigidStudy& s) {
+  rigid::Machine3DParameters& p = s.machine_3d();
   if (root.has("frame_response")) {
     const YamlMap block = root.map("frame_response");
     if (block.has("loads"))
@@ -450,7 +423,7 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
     q.name = s.name;
     // One source of truth for the frame structure's mass: the mesh (Eq. 9.4); the other parts go onto the frame model.
     const fem::FrameModel mesh = read_frame_mesh(q);
-    const FrameMassSources sources = frame_mass_from_mesh(study_parts, mesh, q.mesh.string(), frame.location("parts"), s.units);
+    const FrameMassSources sources = frame_mass_from_mesh(parts.parts, mesh, q.mesh.string(), parts.where, s.units);
     {
       // The parts' mounts against the mesh now (STUDY-111..113), so that a wrong node costs no vehicle run.
       fem::FrameModel probe = mesh;
@@ -464,72 +437,10 @@ RigidStudy3D read_rigid_study_3d_document(const YAML::Node& doc, const std::stri
     q.gravity = Eigen::Vector3d(0.0, 0.0, -p.gravity);  // the vehicle model's axes: Z vertical, the ground (not gravity) sloped
     s.frame_response = q;
   } else {
-    for (std::size_t i = 0; i < study_parts.size(); ++i)
-      if (study_parts[i].from_mesh)
-        throw parts[i].error("from", "a frame_response block with the frame mesh (the part's mass, c.g. and inertia come from it)", "no frame_response");
+    for (std::size_t i = 0; i < parts.parts.size(); ++i)
+      if (parts.parts[i].from_mesh)
+        throw parts.entries[i].error("from", "a frame_response block with the frame mesh (the part's mass, c.g. and inertia come from it)", "no frame_response");
   }
-  check_machine(p, s.fixed_coordinates, root, file);
-  for (const DeclaredBodySize& b : s.body_sizes) check_stated_inertia(b, body_inertia_3d(p, b), s.units);
-  return s;
-}
-}  // namespace
-
-RigidResults3D run_rigid_study_3d(const RigidStudy3D& study_in) {
-  RigidStudy3D study = study_in;
-  RigidResults3D r;
-  if (study.calibration)
-    r.calibration = calibrate_parameters(study.machine, *study.calibration, get_parameter_3d, set_parameter_3d, [&](const rigid::VehicleModel& m) {
-      return rigid::rigid_modes(m.m, rigid::modal_stiffness(m, study.modal_soil), m.multibody.coordinate_names(), study.fixed_coordinates);
-    });
-  if (r.calibration) r.warnings = calibration_warnings(*study.calibration, *r.calibration, study.units);
-  for (core::Warning& w : body_size_warnings(study.body_sizes, [&](const DeclaredBodySize& b) { return body_inertia_3d(study.machine, b); },
-                                             study.calibration, study.units))
-    r.warnings.push_back(std::move(w));
-  r.machine = study.machine;
-  const rigid::VehicleModel model = rigid::build_vehicle_model(study.machine);
-  const std::optional<rigid::VehicleRunState> run =
-      run_vehicle_study(model, study.modes, study.fixed_coordinates, study.modal_soil, study.response, study.units, r);
-  if (!run) return r;
-  const ResponseRequest& req = *study.response;
-  const rigid::VehicleRunState& state = *run;
-  const rigid::Trajectory& tr = r.trajectory;
-  const std::size_t ns = tr.time.size();
-  if (model.blade_point >= 0) {
-    const rigid::Jacobian& j = model.multibody.points()[static_cast<std::size_t>(model.blade_point)].displacement;
-    Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
-    Series fx{"soil_force_x", Quantity::force, {}}, fy{"soil_force_y", Quantity::force, {}}, fz{"soil_force_z", Quantity::force, {}};
-    std::vector<double> magnitude(ns);
-    std::vector<bool> cutting(ns);
-    for (std::size_t i = 0; i < ns; ++i) {
-      const Eigen::Vector3d d = j * tr.q[i];
-      bx.values.push_back(d.x());
-      by.values.push_back(d.y());
-      bz.values.push_back(d.z());
-      // The soil's force on the blade is minus the sum of the soil elements' pull on it.
-      const Eigen::Vector3d f = rigid::plow_force(model, state, tr.time[i], tr.q[i], tr.v[i]);
-      fx.values.push_back(f.x());
-      fy.values.push_back(f.y());
-      fz.values.push_back(f.z());
-      magnitude[i] = f.norm();
-      cutting[i] = rigid::soil_state_at(state, tr.time[i]).cutting;
-    }
-    const double shaker_hz = study.machine.attachment == rigid::Attachment::plow ? study.machine.plow.shaker_frequency : 0.0;
-    set_plow_force_peaks(tr.time, bz.values, magnitude, cutting, shaker_hz, req.duration, r);
-    for (Series* s : {&bx, &by, &bz, &fx, &fy, &fz}) r.series.push_back(std::move(*s));
-  }
-  if (study.machine.attachment == rigid::Attachment::chain) r.series.push_back(chain_force_series(model, state, tr));
-  r.frame_loads = frame_loads_3d(model, study.machine, state, tr);
-  r.static_frame_loads = static_frame_loads_3d(model, study.machine);
-  // The tires' forces, vertical, longitudinal and lateral, as the 2-D model's tire normal and
-  // tractive forces (Eq. 2.42, compression positive): response.csv's last columns (issue 20).
-  // Before assess_response, so that rigid.steady.peaks holds each tire's peaks as the 2-D model
-  // holds its contacts' (issue 15); the detector watches only the blade and the frame loads, so
-  // reached_at does not depend on them.
-  for (const char* tire : {"front_left_tire", "front_right_tire", "rear_left_tire", "rear_right_tire"})
-    for (const char* direction : {"_vertical", "_longitudinal", "_lateral"})
-      r.series.push_back(element_force_series(model, state, tr, model.multibody.element_index(std::string(tire) + direction)));
-  assess_response(study, model, r);  // steady operation, validity warnings (issue 15)
-  return r;
 }
 
-}  // namespace framedyn::coupling
+}  // namespace framedyn::coupling::internal
