@@ -575,7 +575,7 @@ std::string idling_study(const std::string& force) {
 //   at half the force, sigma_full(t) - 2 sigma_half(t) is the same (minus the static stress) at
 //   every output time, and the damage on FAT71's m = 3 branch is 1/8. Tolerance 1e-6: CVODE's
 //   rtol 1e-8 per step over 1,000 output steps, tripled by the cube (measured 1e-7 and 7e-10).
-// - F.37 by hand at the shortest-life point: the steady window (frame.steady_from, the last 11
+// - F.38 by hand at the shortest-life point: the steady window (frame.steady_from, the last 11
 //   shaker periods, 0.600 s) split into its 11 periods; each period's max - min of the normal
 //   stress is one cycle; d_h = sum_k (dsigma_k / 71 MPa)^3 / 2e6 * 3600 s / 0.600 s. The
 //   rainflow of the repeated block pairs the same extremes, except that a slow residue of the
@@ -640,7 +640,7 @@ TEST(IdlingWithTheShaker, NoContactLiftsOffAndEachPointsDamageIsItsShakerPeriods
   ASSERT_GT(d_half, 0.0);
   EXPECT_NEAR(d_full / d_half, 8.0, 8e-6);
 
-  // F.37: the 11 periods' ranges on the S-N curve.
+  // F.38: the 11 periods' ranges on the S-N curve.
   EXPECT_EQ(s["frame"]["hot_spot_window"]["source"], "frame.steady_from");
   const double steady_from = s["frame"]["hot_spot_window"]["steady_from"]["value"].get<double>();
   constexpr double kMpaPerPsi = 0.00689475729316836;
