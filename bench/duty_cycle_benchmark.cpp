@@ -1,11 +1,12 @@
 // The life map of the shipped duty cycle (issue 18's target: four scenarios under 2 s on
-// 2 cores). Times, in one run and on the same inputs (examples/duty_cycle.yaml):
+// 2 cores; the shipped cycle has five since idling was added). Times, in one run and on the
+// same inputs (examples/duty_cycle.yaml):
 //   cycle, 1 thread   run_duty_cycle: every scenario's pipeline (3-D machine, frame loads, frame
 //                     transient, stress histories) with its life map, and the Miner sum;
 //   cycle, 2 threads  the same with the scenarios on 2 threads (`framedyn run -j 2`);
 //   life maps         frame_life_map alone on each scenario's stored stress histories (rainflow
 //                     of every station and section point over the steady window, S-N, Miner);
-//   baseline          the same four pipelines without a fatigue block, one at a time.
+//   baseline          the same pipelines without a fatigue block, one at a time.
 // Each as wall time and as the process's CPU time (CLOCK_PROCESS_CPUTIME_ID): on a shared
 // machine under load the wall time measures the load, the CPU time the work. Printed as a
 // markdown table (docs/benchmarks.md): medians of R repeats, the load average before the run.
