@@ -28,9 +28,11 @@ namespace framedyn::batch {
 
 bool summary_value(const nlohmann::ordered_json& summary, const std::string& path, double& value, std::string& unit, std::string& why) {
   const nlohmann::ordered_json* n = &summary;
+  const nlohmann::ordered_json* parent = nullptr;  // the object the last step read from
   std::string here;  // the path so far
   const std::vector<coupling::KeyPathStep> steps = coupling::parse_key_path(path).value();  // checked when the design was read
   for (const coupling::KeyPathStep& k : steps) {
+    parent = n;
     if (!k.is_item) {
       if (!n->is_object() || !n->contains(k.key)) {
         why = fmt::format("the run's summary has no {}{}{}", here, here.empty() ? "" : ".", k.key);
@@ -66,6 +68,9 @@ bool summary_value(const nlohmann::ordered_json& summary, const std::string& pat
   if (n->is_object() && n->contains("value")) {
     if (n->contains("unit") && (*n)["unit"].is_string()) unit = (*n)["unit"].get<std::string>();
     n = &(*n)["value"];
+  } else if (n->is_number() && parent && parent->is_object() && parent->contains("unit") && (*parent)["unit"].is_string()) {
+    // A number beside its group's unit, as in hot_spots[i].von_mises {static, dynamic, total, unit}.
+    unit = (*parent)["unit"].get<std::string>();
   }
   if (n->is_boolean()) {
     value = n->get<bool>() ? 1.0 : 0.0;

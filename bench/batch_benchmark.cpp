@@ -1,5 +1,5 @@
 // Runs per second of `framedyn batch` on the offset-plowing pipeline
-// (examples/offset_plowing.yaml, 1 s of plowing into the beam frame; summary
+// (a 1-s copy of examples/offset_plowing.yaml, 1 s of plowing into the beam frame; summary
 // outputs only): a Monte Carlo design over the soil's damping, on 1 and 2
 // threads through the library, and on 2 and 3 MPI ranks through mpirun (rank 0
 // manages only). Usage: batch_benchmark [RUNS] (default 16). Issue 19's target:
@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 
 #include "batch/design.h"
@@ -26,8 +27,24 @@ int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::atoi(argv[1]) : 16;
   const fs::path dir = fs::temp_directory_path() / fmt::format("framedyn_batch_benchmark_{}", ::getpid());
   fs::create_directories(dir);
+  // The shipped main job runs 10 s to reach steady operation (docs/validation.md P8); the batch target
+  // (1,000 runs in 30 s) was set for its former 1 s, so the benchmark runs a 1-s copy, its mesh path made absolute.
+  const fs::path examples = fs::path(FRAMEDYN_SOURCE_DIR) / "examples";
+  std::string text;
+  {
+    std::ifstream in(examples / "offset_plowing.yaml");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto swap = [&text](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) throw std::runtime_error("batch_benchmark: offset_plowing.yaml has no '" + from + "'");
+    text.replace(at, from.size(), to);
+  };
+  swap("duration: 10.0", "duration: 1.0");
+  swap("mesh: ../meshes/r100_frame.inp", "mesh: " + (fs::path(FRAMEDYN_SOURCE_DIR) / "meshes" / "r100_frame.inp").string());
+  std::ofstream(dir / "offset_plowing_1s.yaml") << text;
   const fs::path design = dir / "design.yaml";
-  std::ofstream(design) << "framedyn_batch: 1\nstudy: " << (fs::path(FRAMEDYN_SOURCE_DIR) / "examples" / "offset_plowing.yaml").string()
+  std::ofstream(design) << "framedyn_batch: 1\nstudy: " << (dir / "offset_plowing_1s.yaml").string()
                         << "\nsampling: {method: monte_carlo, samples: " << runs << ", seed: 1}\nparameters:\n"
                         << "  - {key: soil.damping, distribution: uniform, low: 150, high: 450}\noutputs:\n"
                         << "  - frame.peak_normal_stress\n  - rigid.response.peak_cutting_force\n";

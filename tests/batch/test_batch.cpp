@@ -816,3 +816,24 @@ TEST(BatchEngine, BatchKilledAfterACheckpointAndResumedGivesTheUninterruptedTabl
 }
 
 }  // namespace
+
+// An output is read with its unit whether the summary gives it as {value, unit} or as a
+// number beside its group's unit (hot_spots[i].von_mises {static, dynamic, total, unit}),
+// so runs.csv's header carries the unit in both cases; a group without one stays "1".
+TEST(BatchOutputs, ANumberBesideItsGroupsUnitIsReadWithThatUnit) {
+  const nlohmann::ordered_json summary = nlohmann::ordered_json::parse(
+      R"({"frame": {"peak_von_mises": {"value": 2.5, "unit": "psi"},
+                    "hot_spots": [{"von_mises": {"static": 1.0, "dynamic": 2.0, "total": 3.0, "unit": "psi"}}],
+                    "counts": {"modes": 10}}})");
+  double v = 0.0;
+  std::string unit, why;
+  ASSERT_TRUE(framedyn::batch::summary_value(summary, "frame.hot_spots[0].von_mises.total", v, unit, why)) << why;
+  EXPECT_EQ(v, 3.0);
+  EXPECT_EQ(unit, "psi");
+  ASSERT_TRUE(framedyn::batch::summary_value(summary, "frame.peak_von_mises", v, unit, why)) << why;
+  EXPECT_EQ(v, 2.5);
+  EXPECT_EQ(unit, "psi");
+  ASSERT_TRUE(framedyn::batch::summary_value(summary, "frame.counts.modes", v, unit, why)) << why;
+  EXPECT_EQ(v, 10.0);
+  EXPECT_EQ(unit, "1");
+}
