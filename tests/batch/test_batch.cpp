@@ -219,19 +219,23 @@ TEST(FrameModelReuse, PipelineSummariesWithReuseEqualRunsThatBuildTheirOwn) {
   EXPECT_EQ(cache.reuses(), 3u);            // damping 300 and 400, and 250 back on the first build
 }
 
+// The shipped main job cut to 0.1 s, run in memory with the summary computed for a design's
+// `outputs` (none: the whole run).
+report::StudyRun short_offset_plowing_run(std::optional<std::vector<std::string>> outputs) {
+  const fs::path study = kExamples / "offset_plowing.yaml";
+  YAML::Node doc = framedyn::coupling::load_yaml_file(study.string());
+  framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
+  report::StudyRunOptions o;
+  o.summary_outputs = std::move(outputs);
+  return report::run_study_document(doc, study, o);
+}
+
 // A design's outputs (StudyRunOptions::summary_outputs) are read from a summary computed only for them:
 // a pipeline run whose outputs lie in the rigid block and the frame's rail peaks skips the frame's stress
 // histories and hot spots, and every other key of the summary is the whole run's, number for number
 // (the same response and recovery, not a cheaper approximation); an output among the hot spots keeps them.
 TEST(StudyRun, SummaryOutputsOutsideTheHotSpotsGiveTheWholeRunsNumbersWithoutComputingThem) {
-  const fs::path study = kExamples / "offset_plowing.yaml";
-  YAML::Node doc = framedyn::coupling::load_yaml_file(study.string());
-  framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
-  const auto run = [&](std::optional<std::vector<std::string>> outputs) {
-    report::StudyRunOptions o;
-    o.summary_outputs = std::move(outputs);
-    return report::run_study_document(doc, study, o).summary;
-  };
+  const auto run = [](std::optional<std::vector<std::string>> outputs) { return short_offset_plowing_run(std::move(outputs)).summary; };
   const nlohmann::ordered_json whole = run(std::nullopt);
   const nlohmann::ordered_json rails = run(std::vector<std::string>{"frame.peak_normal_stress", "rigid.response.peak_cutting_force",
                                                                     "frame.steady.rails.left_rail.peak_abs_normal_stress.steady"});
@@ -256,14 +260,7 @@ TEST(StudyRun, SummaryOutputsOutsideTheHotSpotsGiveTheWholeRunsNumbersWithoutCom
 // block) need no frame: the run skips it, and its input and rigid blocks are the whole run's, number for
 // number (the vehicle's response does not depend on the frame model); any frame path runs the frame.
 TEST(StudyRun, SummaryOutputsInTheRigidBlockAloneSkipTheFrameAndGiveTheWholeRunsRigidNumbers) {
-  const fs::path study = kExamples / "offset_plowing.yaml";
-  YAML::Node doc = framedyn::coupling::load_yaml_file(study.string());
-  framedyn::coupling::set_study_number(doc, "analysis.response.duration", 0.1, study.string());
-  const auto run = [&](std::optional<std::vector<std::string>> outputs) {
-    report::StudyRunOptions o;
-    o.summary_outputs = std::move(outputs);
-    return report::run_study_document(doc, study, o);
-  };
+  const auto run = [](std::optional<std::vector<std::string>> outputs) { return short_offset_plowing_run(std::move(outputs)); };
   const report::StudyRun whole = run(std::nullopt);
   ASSERT_TRUE(whole.summary.contains("frame"));
   for (const std::vector<std::string>& outputs : {std::vector<std::string>{"rigid"},

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <algorithm>
 #include <functional>
+#include <utility>
 #include <random>
 
 #include "rigid/steady_operation.h"
@@ -16,6 +17,18 @@ namespace {
 
 constexpr double kPeriod = 0.05;      // s: a 20 Hz shaker
 constexpr int kSamplesPerPeriod = 200;
+
+// The smallest and largest value of f on `samples` equal steps over [0, span): a
+// periodic part's range from its closed form.
+std::pair<double, double> range_on_grid(const std::function<double(double)>& f, double span, int samples) {
+  double lo = 1e9, hi = -1e9;
+  for (int i = 0; i < samples; ++i) {
+    const double p = f(span * i / samples);
+    lo = std::min(lo, p);
+    hi = std::max(hi, p);
+  }
+  return {lo, hi};
+}
 
 struct Sampled {
   std::vector<double> time, x;
@@ -65,14 +78,9 @@ TEST(SteadyOperation, PeriodTwoSubharmonicIsFoundAsTwoShakerPeriods) {
   const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c);
   ASSERT_TRUE(op.reached_at.has_value());
   EXPECT_EQ(op.period_multiple, 2);
-  // The periodic part's range, from the closed form on a fine grid.
-  double lo = 1e9, hi = -1e9;
-  for (int i = 0; i < 200000; ++i) {
-    const double u = 2.0 * i / 200000;  // two periods
-    const double p = kB * std::sin(2 * M_PI * u) + 0.5 * std::sin(M_PI * u);
-    lo = std::min(lo, p);
-    hi = std::max(hi, p);
-  }
+  // The periodic part's range, from the closed form on a fine grid over its two periods.
+  const auto [lo, hi] = range_on_grid([](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + 0.5 * std::sin(M_PI * t / kPeriod); },
+                                      2 * kPeriod, 200000);
   const double t_star = kTau * std::log(kA * (1 - std::exp(-2 * kPeriod / kTau)) / ((hi - lo) * c.tolerance));
   EXPECT_GE(*op.reached_at, t_star);
   EXPECT_LT(*op.reached_at, t_star + kPeriod);
@@ -94,12 +102,7 @@ TEST(SteadyOperation, FourteenPeriodSubharmonicIsFoundAsFourteenShakerPeriods) {
   const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c);
   ASSERT_TRUE(op.reached_at.has_value());
   EXPECT_EQ(op.period_multiple, 14);
-  double lo = 1e9, hi = -1e9;
-  for (int i = 0; i < 1400000; ++i) {
-    const double p = periodic(14 * kPeriod * i / 1400000.0);
-    lo = std::min(lo, p);
-    hi = std::max(hi, p);
-  }
+  const auto [lo, hi] = range_on_grid(periodic, 14 * kPeriod, 1400000);
   const double t_star = kTau * std::log(kA * (1 - std::exp(-14 * kPeriod / kTau)) / ((hi - lo) * c.tolerance));
   EXPECT_GE(*op.reached_at, t_star);
   EXPECT_LT(*op.reached_at, t_star + kPeriod);
