@@ -182,36 +182,21 @@ rigid::GroundInput read_ground_input(const YamlMap& m) {
   return g;
 }
 
-void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line) {
+void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law) {
   law.stiffness = soil.non_negative("stiffness", Quantity::translational_stiffness);
   law.damping = soil.non_negative("damping", Quantity::translational_damping);
   law.stiffness_reduction = soil.fraction("stiffness_reduction", 0.0);
   law.damping_reduction = soil.fraction("damping_reduction", 1.0);
   const std::string reference = soil.text_or("spring_reference", "equilibrium");
-  const bool soil_line = with_soil_line && reference == "soil_line";
-  if (reference != "equilibrium" && reference != "contact" && reference != "cut_face" && !soil_line) {
-    if (with_soil_line)
-      throw soil.error("spring_reference",
-                       "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact), soil_line (from the point of "
-                       "contact, carried rearward with the unpenetrated soil at VS) or cut_face (no spring while the blade cuts)",
-                       "'" + reference + "'");
-    // 3-D: the anchor does not move with the soil (rigid::SoilLaw::contact_moves_with_soil; STUDY-140).
-    if (reference == "soil_line")
-      throw soil.error("spring_reference",
-                       "equilibrium, contact or cut_face in a 3-D study (soil_line carries the springs' anchor rearward with the soil at VS, "
-                       "which only the 2-D model does: the 3-D model's soil anchors do not move; model: rigid_2d for soil_line)",
-                       "'soil_line'");
+  if (reference != "equilibrium" && reference != "contact" && reference != "cut_face" && reference != "soil_line")
     throw soil.error("spring_reference",
-                     "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact) or cut_face (no spring while the blade cuts)",
+                     "equilibrium (Eq. 2.37 as printed), contact (the soil pushed from the point of contact), soil_line (from the point of "
+                     "contact, carried rearward with the unpenetrated soil at VS) or cut_face (no spring while the blade cuts)",
                      "'" + reference + "'");
-  }
   law.cut_face = reference == "cut_face";
-  // 3-D: the cut face's anchor does not stream with the soil, which matters only where springs act while backing.
-  if (law.cut_face && !with_soil_line && law.stiffness_reduction != 0.0)
-    throw soil.error("stiffness_reduction", "0 with spring_reference: cut_face in a 3-D study (the springs act only while backing, from a cut face that "
-                     "the 3-D model does not move with the soil)", fmt::format("{}", law.stiffness_reduction));
-  law.spring_from_contact = reference == "contact" || soil_line || law.cut_face;
-  if (with_soil_line) law.contact_moves_with_soil = soil_line || law.cut_face;
+  law.spring_from_contact = reference == "contact" || reference == "soil_line" || law.cut_face;
+  // The soil_line anchor and the cut face stream rearward with the soil (both models).
+  law.contact_moves_with_soil = reference == "soil_line" || law.cut_face;
 }
 
 void read_chain(const YamlMap& chain, rigid::Chain2D& c) {

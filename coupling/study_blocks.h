@@ -64,9 +64,8 @@ rigid::GroundInput read_ground_input(const YamlMap& m);
 
 // The soil law's keys (after the caller's allow_only): stiffness, damping,
 // stiffness_reduction, damping_reduction, spring_reference (equilibrium,
-// contact, and with `with_soil_line` soil_line: 2-D only; refused in 3-D with
-// the reason, STUDY-140).
-void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law, bool with_soil_line);
+// contact, soil_line or cut_face; the same in 2-D and 3-D).
+void read_soil_law(const YamlMap& soil, rigid::SoilLaw& law);
 
 // The chain block: boom_point, chain_pin ([X, Z] in 2-D, [X, Y, Z] in 3-D),
 // angle, moment arm and the tooth law of Appendix D.

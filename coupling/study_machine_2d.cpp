@@ -248,7 +248,7 @@ rigid::Machine2DParameters read_machine_2d(const YamlMap& root, rigid::Attachmen
 
   if (auto soil = attachment_block(root, "soil", p.attachment != rigid::Attachment::none, "no soil data without an attachment", "a soil map")) {
     soil->allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference"});
-    read_soil_law(*soil, p.soil, /*with_soil_line=*/true);
+    read_soil_law(*soil, p.soil);
   }
 
   if (auto plow_block = attachment_block(root, "plow", p.attachment == rigid::Attachment::plow, "no plow data unless attachment is plow", "a plow map")) {

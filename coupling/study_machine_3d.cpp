@@ -372,8 +372,7 @@ rigid::Machine3DParameters read_machine_3d(const YamlMap& root, rigid::Attachmen
 
   if (auto soil = attachment_block(root, "soil", p.attachment != rigid::Attachment::none, "no soil data without an attachment", "a soil map")) {
     soil->allow_only({"stiffness", "damping", "stiffness_reduction", "damping_reduction", "spring_reference", "lateral"});
-    // spring_reference: soil_line (the anchor moving with the soil) is 2-D only.
-    read_soil_law(*soil, p.soil, /*with_soil_line=*/false);
+    read_soil_law(*soil, p.soil);
     p.soil_lateral = read_spring_damper(soil->map("lateral"));
   }
 

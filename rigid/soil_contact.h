@@ -45,15 +45,15 @@ struct SoilLaw {
   // unstretched position moves with the unpenetrated soil line at
   // (VS cos theta_g, -VS sin theta_g) from the instant the cut began; the
   // spring then acts on the blade's penetration into the soil it is cutting,
-  // as the damper acts on its velocity relative to that soil. 2-D only:
-  // the 3-D model keeps the anchor fixed and its study reader refuses it.
+  // as the damper acts on its velocity relative to that soil (2-D and 3-D:
+  // the anchor moves at VehicleModel::soil_flow).
   bool contact_moves_with_soil = false;
   // The cut-face reading: the cutting blade fails the soil it pushes, so the
   // springs' ground end stays at the blade while it cuts (they carry
   // nothing: the soil resists a cutting blade by its damping alone); when it
   // backs off, the springs (REK K5) act from the cut face it left, where the
-  // unpenetrated soil begins, carried rearward with the soil (2-D; the 3-D
-  // reader takes it only with REK = 0, where the anchor plays no part). The
+  // unpenetrated soil begins, carried rearward with the soil (with
+  // contact_moves_with_soil, which the study reader sets with it). The
   // modes still see K5 at full value (analysis.modal_soil): a blade at rest
   // in the soil is held by its elasticity. docs/theory/rigid.md section 4.
   bool cut_face = false;

@@ -360,21 +360,26 @@ VehicleModel build_vehicle_model(const Machine3DParameters& p) {
   add_tire("rear_left_tire", p.rear_tires.left, p.rear_tires.steering_angle, false);
   add_tire("rear_right_tire", p.rear_tires.right, p.rear_tires.steering_angle, false);
 
-  if (p.soil.contact_moves_with_soil && !p.soil.cut_face)
-    throw std::invalid_argument("the 3-D model does not yet have the soil law's 'soil_line' spring reference (use equilibrium or contact)");
-  // The cut face's anchor stays where the cut ended instead of streaming with the soil: exact only without springs while backing.
-  if (p.soil.cut_face && p.soil.stiffness_reduction != 0.0)
-    throw std::invalid_argument("the 3-D model has the soil law's 'cut_face' spring reference only with stiffness_reduction 0");
   // Soil directions: along the travel (rearward relative to the ground), across it, vertical.
   vm.cut_direction = Eigen::Vector3d(std::cos(p.travel_angle), -std::sin(p.travel_angle), 0.0);
   vm.soil = p.soil;
-  vm.soil_line_speed = p.forward_speed * std::cos(g);
+  // The ground streams rearward past the machine at VS along the heading of travel in the
+  // ground plane (the tires' ground, slope about Y; a wheel's rolling direction at delta = the
+  // heading): the soil dampers' reference velocity and the velocity the soil springs' anchor
+  // moves at under soil_line and cut_face (docs/theory/rigid.md section 18). The soil line
+  // moves along the cut at its component on c; with heading 0 both are the 2-D model's
+  // (VS cos theta_g, 0, -VS sin theta_g) and VS cos theta_g.
+  const Eigen::Vector3d travel = std::cos(p.travel_angle) * tangent - std::sin(p.travel_angle) * side;
+  vm.soil_flow = p.forward_speed * travel;
+  // c . soil_flow = VS (cos^2 tau cos theta_g + sin^2 tau), written so that it is VS cos theta_g
+  // exactly at tau = 0 and VS exactly on level ground.
+  const double sin_tau = std::sin(p.travel_angle);
+  vm.soil_line_speed = p.forward_speed * (std::cos(g) + sin_tau * sin_tau * (1.0 - std::cos(g)));
   if (p.attachment == Attachment::chain) {
     vm.chain = p.chain;
     vm.chain_direction = Eigen::Vector3d(std::cos(p.chain.chain_angle), 0.0, -std::sin(p.chain.chain_angle));
     vm.chain_moment_arm = p.chain.moment_arm;
   }
-  vm.soil_flow = p.forward_speed * (std::cos(g) * vm.cut_direction + Eigen::Vector3d(0.0, 0.0, -std::sin(g)));
 
   if (p.attachment == Attachment::plow) {
     const Plow3D& pl = p.plow;

@@ -110,13 +110,15 @@ void VehicleDynamics::acceleration(double t, const Eigen::VectorXd& q, const Eig
     // blade velocity relative to it (Eq. 2.23).
     if (m.soil_flow.x() != 0.0 || m.soil_flow.z() != 0.0)
       f += blade_jacobian(m).transpose() * (m.soil.damping_factor(cutting) * m.soil.damping * m.soil_flow);
-  } else {
+  } else if (m.blade_point >= 0) {
+    const Eigen::Vector3d anchor = soil_anchor_at(m, state_.soil.anchor(), state_.soil.anchor_time(), t);
     for (int e : m.soil_elements) {
       const SpringDamper& el = mb.elements()[static_cast<std::size_t>(e)];
       const double ks = el.stiffness * m.soil.stiffness_factor(cutting);
       const double cs = el.damping * m.soil.damping_factor(cutting);
-      // Soil springs unstretched at the anchor; the soil streams past at VS (Eq. 2.23).
-      f += mb.elongation_map(e).transpose() * (ks * el.direction.dot(state_.soil.anchor()) + cs * el.direction.dot(m.soil_flow));
+      // Soil springs unstretched at the anchor (carried rearward with the soil under soil_line
+      // and cut_face); the soil streams past at VS (Eq. 2.23).
+      f += mb.elongation_map(e).transpose() * (ks * el.direction.dot(anchor) + cs * el.direction.dot(m.soil_flow));
     }
   }
   f += m.statics.preload;                          // Eq. 11.4: q = 0 is the contact-consistent rest state
@@ -165,7 +167,7 @@ VehicleRun run_vehicle(const VehicleModel& model, const Eigen::VectorXd& q0, con
 SoilState soil_state_at(const VehicleRunState& state, double t) { return state.soil.state_at(t); }
 
 Eigen::Vector3d soil_anchor_at(const VehicleModel& model, const Eigen::Vector3d& anchor, double anchor_time, double t) {
-  if (!(model.dimensions == 2 && model.soil.spring_from_contact && model.soil.contact_moves_with_soil)) return anchor;
+  if (!(model.soil.spring_from_contact && model.soil.contact_moves_with_soil)) return anchor;
   return anchor + model.soil_flow * (t - anchor_time);
 }
 

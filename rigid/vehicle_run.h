@@ -64,8 +64,9 @@ VehicleRun run_vehicle(const VehicleModel& model, const Eigen::VectorXd& q0, con
 // --- force recovery over (model, state of the run, t, q, v) ----------------------
 // The soil law's state in force at t (after a switch at exactly t).
 SoilState soil_state_at(const VehicleRunState& state, double t);
-// The anchor of the soil springs at t: fixed in the machine, or (2-D,
-// spring_from_contact with contact_moves_with_soil) carried rearward with the soil.
+// The anchor of the soil springs at t: fixed in the machine, or (2-D and 3-D,
+// spring_from_contact with contact_moves_with_soil) carried rearward with the
+// soil at model.soil_flow from the instant it was set.
 Eigen::Vector3d soil_anchor_at(const VehicleModel& model, const Eigen::Vector3d& anchor, double anchor_time, double t);
 // Tension k (G q - xr) + c (G v - vr) in element e, N (positive stretched), with
 // the soil law in force at t; for an element of a contact lost at t, the static

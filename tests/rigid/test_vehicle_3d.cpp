@@ -666,13 +666,17 @@ TEST(PlanarAgreement, SymmetricModelWithStiffCabXGivesThe2DFrequencies) {
 // The in-plane response of both models to the shaker from rest: frame x, z,
 // theta_y, cab w, theta_v, plow psi. `law_active` false sets REK = REC = 1 (the
 // soil law switches but changes nothing: a linear response).
+// `soil_law`, if given, changes the 2-D soil law (and with it the 3-D one) before
+// the build; the runs then also compare the soil resultant RPF (rigid::plow_force).
 struct PlanarRun {
   double difference = 0.0, amplitude = 0.0;
+  double force_difference = 0.0, force_amplitude = 0.0;
   std::size_t events_2d = 0, events_3d = 0;
   std::vector<rigid::Trajectory::Event> events_2d_log, events_3d_log;
 };
 PlanarRun planar_run(bool law_active, double duration, double forward_speed,
-                     rigid::ContactLaw contacts = rigid::ContactLaw::linear, double shaker_scale = 1.0) {
+                     rigid::ContactLaw contacts = rigid::ContactLaw::linear, double shaker_scale = 1.0,
+                     const std::function<void(rigid::Machine2DParameters&)>& soil_law = {}) {
   rigid::Machine2DParameters p2 = shipped_2d();
   p2.forward_speed = forward_speed;
   p2.plow.shaker_amplitude *= shaker_scale;
@@ -683,6 +687,7 @@ PlanarRun planar_run(bool law_active, double duration, double forward_speed,
     p2.soil.stiffness_reduction = p2.soil.damping_reduction = 1.0;
     p2.soil.cut_face = p2.soil.spring_from_contact = p2.soil.contact_moves_with_soil = false;
   }
+  if (soil_law) soil_law(p2);
   const rigid::VehicleModel m2 = rigid::build_vehicle_model(p2);
   // Cab X stiffness 1e13 N/m: the constraint's relative error (w_shaker / w_penalty)^2 = (115 / 1.8e5)^2 ~ 4e-7.
   const rigid::VehicleModel m3 = rigid::build_vehicle_model(from_2d(p2, 1e13));
@@ -713,8 +718,15 @@ PlanarRun planar_run(bool law_active, double duration, double forward_speed,
       r.amplitude = std::max(r.amplitude, std::abs(t2.q[k][i2]));
     }
   }
-  std::printf("in-plane response over %.2f s (soil law %s): max difference %.3e of max amplitude %.3e (%zu / %zu events)\n", duration,
-              law_active ? "active" : "inert", r.difference, r.amplitude, r.events_2d, r.events_3d);
+  for (std::size_t k = 0; k < t2.time.size(); ++k) {
+    const Vector3d f2 = rigid::plow_force(m2, m2_run, t2.time[k], t2.q[k], t2.v[k]);
+    const Vector3d f3 = rigid::plow_force(m3, m3_run, t3.time[k], t3.q[k], t3.v[k]);
+    r.force_difference = std::max(r.force_difference, (f2 - f3).norm());
+    r.force_amplitude = std::max(r.force_amplitude, f2.norm());
+  }
+  std::printf("in-plane response over %.2f s (soil law %s): max difference %.3e of max amplitude %.3e (%zu / %zu events); "
+              "soil resultant differs by %.3e of %.3e N\n", duration, law_active ? "active" : "inert", r.difference, r.amplitude, r.events_2d,
+              r.events_3d, r.force_difference, r.force_amplitude);
   return r;
 }
 
@@ -732,6 +744,96 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithSoilSwitchingAgrees) {
   EXPECT_EQ(r.events_2d, r.events_3d);
   // As above; each located switch restarts both runs at times that differ by the event tolerance.
   EXPECT_LT(r.difference, 2e-6 * r.amplitude);
+}
+
+// The soil springs' moving anchor (docs/theory/rigid.md section 18): under
+// spring_reference soil_line the springs act from the point where the cut began,
+// carried rearward with the soil at VS; under cut_face with REK > 0 they act
+// while backing off, from the cut face the blade left, carried the same way. The
+// symmetric 3-D model moves its anchor with the same soil flow, so both models
+// give the same response and the same soil resultant, through the switches. A
+// 2-degree slope puts the flow's vertical component (-VS sin theta_g) in play.
+TEST(PlanarAgreement, InPlaneForcedResponseWithTheSoilLineAnchorAgrees) {
+  const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::linear, 1.0, [](rigid::Machine2DParameters& p) {
+    p.ground_slope = 2.0 * 3.141592653589793 / 180.0;
+    p.soil.stiffness_reduction = 0.5;
+    p.soil.cut_face = false;
+    p.soil.spring_from_contact = p.soil.contact_moves_with_soil = true;
+  });
+  EXPECT_GE(r.events_2d, 4u);  // two back-offs, two re-cuts
+  EXPECT_EQ(r.events_2d, r.events_3d);
+  // As the switching test above: the penalty error ~4e-7 and rtol 1e-10 over the steps.
+  EXPECT_LT(r.difference, 2e-6 * r.amplitude);
+  EXPECT_GT(r.force_amplitude, 0.0);
+  EXPECT_LT(r.force_difference, 2e-6 * r.force_amplitude);
+}
+
+TEST(PlanarAgreement, InPlaneForcedResponseWithTheCutFaceAnchorAndReducedStiffnessAgrees) {
+  const PlanarRun r = planar_run(true, 0.21, shipped_2d().forward_speed, rigid::ContactLaw::linear, 1.0, [](rigid::Machine2DParameters& p) {
+    p.ground_slope = 2.0 * 3.141592653589793 / 180.0;
+    p.soil.stiffness_reduction = 0.5;  // springs while backing, from the cut face streaming with the soil
+    p.soil.cut_face = p.soil.spring_from_contact = p.soil.contact_moves_with_soil = true;
+  });
+  EXPECT_GE(r.events_2d, 4u);
+  EXPECT_EQ(r.events_2d, r.events_3d);
+  EXPECT_LT(r.difference, 2e-6 * r.amplitude);
+  EXPECT_GT(r.force_amplitude, 0.0);
+  EXPECT_LT(r.force_difference, 2e-6 * r.force_amplitude);
+}
+
+// The moving anchor in closed form, on the offset plow (heading 22 deg, slope
+// 0.05 rad, every soil element along its own direction). The ground streams past
+// the machine at VS along the heading in the tires' ground plane: the soil flow
+// has length VS, lies in that plane, and its component along the cut c is the
+// rate of the soil line. A blade held still after its cut began at t = 0 is
+// pressed into the advancing soil: under soil_line each soil element e carries
+// -(k_e t + c_e) (e . v_soil), its spring part growing at k_e (e . v_soil) per
+// second; the contact reading (anchor fixed in the machine) carries only the
+// damper's -c_e (e . v_soil), and the two readings' accelerations differ by
+// M^-1 sum_e G_e^T k_e (e . v_soil) t, the anchor's motion alone. Exact: round-off.
+TEST(SoilAnchor3D, SoilLineAnchorMovesWithTheSoilFlowInTheGroundPlane) {
+  rigid::Machine3DParameters p = offset_plow();
+  p.forward_speed = 0.05;  // m/s
+  p.soil.cut_face = false;
+  p.soil.stiffness_reduction = 0.0;
+  p.soil.spring_from_contact = true;
+  p.soil.contact_moves_with_soil = false;
+  const rigid::VehicleModel fixed = rigid::build_vehicle_model(p);
+  p.soil.contact_moves_with_soil = true;
+  const rigid::VehicleModel moving = rigid::build_vehicle_model(p);
+
+  const Vector3d normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));  // the tires' ground
+  const Vector3d& flow = moving.soil_flow;
+  EXPECT_NEAR(flow.norm(), p.forward_speed, 1e-15);
+  EXPECT_NEAR(flow.dot(normal), 0.0, 1e-15);
+  EXPECT_NEAR(moving.cut_direction.dot(flow), moving.soil_line_speed, 1e-15);
+  EXPECT_GT(flow.dot(moving.cut_direction), 0.0);  // rearward along the cut
+
+  VectorXd q = VectorXd::Zero(moving.size()), v = VectorXd::Zero(moving.size());
+  q(moving.coordinate("psi")) = 0.01;  // the blade displaced, held still
+  rigid::VehicleRunState fixed_run = rigid::start_run(fixed, 0.0, q), moving_run = rigid::start_run(moving, 0.0, q);
+  const double t = 0.02;
+  Vector3d resultant = Vector3d::Zero();
+  VectorXd anchor_load = VectorXd::Zero(moving.size());
+  double scale = 0.0;
+  for (int e : moving.soil_elements) {
+    const rigid::SpringDamper& el = moving.multibody.elements()[static_cast<std::size_t>(e)];
+    const double flow_e = el.direction.dot(flow);
+    const double expected = -(el.stiffness * t + el.damping) * flow_e;
+    scale = std::max(scale, el.stiffness * p.forward_speed * t);
+    EXPECT_NEAR(rigid::element_tension(moving, moving_run, e, t, q, v), expected, 1e-9 * scale) << el.name;
+    EXPECT_NEAR(rigid::element_tension(fixed, fixed_run, e, t, q, v), -el.damping * flow_e, 1e-9 * scale) << el.name;
+    resultant += el.direction * expected;
+    anchor_load += moving.multibody.elongation_map(e).transpose() * (el.stiffness * flow_e * t);
+  }
+  // The soil resultant (response.csv's plow force, the frame loads' blade force) is their sum.
+  EXPECT_LT((rigid::plow_force(moving, moving_run, t, q, v) - resultant).norm(), 1e-9 * scale);
+  rigid::VehicleDynamics fixed_dyn(fixed, fixed_run), moving_dyn(moving, moving_run);
+  VectorXd a_fixed, a_moving;
+  fixed_dyn.acceleration(t, q, v, a_fixed);
+  moving_dyn.acceleration(t, q, v, a_moving);
+  const VectorXd expected = moving.m.ldlt().solve(anchor_load);
+  EXPECT_LT((a_moving - a_fixed - expected).norm(), 1e-9 * expected.norm());
 }
 
 TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
