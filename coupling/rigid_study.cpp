@@ -147,17 +147,17 @@ namespace {
 
 // The blade's (or boom's) motion and soil force at every sample, and the
 // peaks of that force (set_plow_force_peaks, one meaning in 2-D and 3-D);
-// the series are named as each model's response.csv has them: 2-D blade_x,
-// blade_z, plow_force_x, plow_force_z, the signed magnitude and the angle
-// (Eqs. 2.38-2.39); 3-D blade_x, blade_y, blade_z, soil_force_x, _y, _z.
+// the series are named as response.csv has them, one name for one quantity in
+// both models (the thesis's RPF, Eq. 2.37, the blade's push on the soil): 2-D
+// blade_x, blade_z, plow_force_x, plow_force_z, the signed magnitude and the
+// angle (Eqs. 2.38-2.39); 3-D blade_x, blade_y, blade_z, plow_force_x, _y, _z.
 void blade_series(const RigidStudy& study, const rigid::VehicleModel& model, const rigid::VehicleRunState& state, RigidResults& r) {
   const rigid::Trajectory& tr = r.trajectory;
   const std::size_t ns = tr.time.size();
   const bool two_d = study.dimensions() == 2;
   const rigid::Jacobian& j = model.multibody.points()[static_cast<std::size_t>(model.blade_point)].displacement;
   Series bx{"blade_x", Quantity::length, {}}, by{"blade_y", Quantity::length, {}}, bz{"blade_z", Quantity::length, {}};
-  const char* force = two_d ? "plow_force" : "soil_force";
-  Series fx{std::string(force) + "_x", Quantity::force, {}}, fy{std::string(force) + "_y", Quantity::force, {}}, fz{std::string(force) + "_z", Quantity::force, {}};
+  Series fx{"plow_force_x", Quantity::force, {}}, fy{"plow_force_y", Quantity::force, {}}, fz{"plow_force_z", Quantity::force, {}};
   Series mag{"plow_force_signed_magnitude", Quantity::force, {}}, angle{"plow_force_angle_deg", Quantity::dimensionless, {}};
   std::vector<double> magnitude(ns);
   std::vector<bool> cutting(ns);

@@ -7,6 +7,8 @@
 // the pipeline), sweep and batch on the shipped studies cut to 0.05 s.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -23,6 +25,7 @@ using framedyn::testing::framedyn;
 using framedyn::testing::read_file;
 using framedyn::testing::RunResult;
 using framedyn::testing::TempDir;
+using Json = nlohmann::json;
 
 const fs::path kSource = FRAMEDYN_SOURCE_DIR;
 
@@ -112,6 +115,32 @@ TEST(Verbosity, QuietAndVerboseTogetherAreRefused) {
   const RunResult r = framedyn(dir, "modes frame.inp -q -v");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "framedyn: error: command line: --quiet: expected at most one of --quiet and --verbose (framedyn modes --help), found both\n");
+}
+
+// One name for one quantity in 2-D and 3-D (issue 15): the blade's soil force,
+// the thesis's RPF (Eq. 2.37), is plow_force_* in both models' response.csv;
+// the 2-D model has no Y, so it writes X and Z only. (The 3-D columns were
+// soil_force_* before docs/validation.md V40.)
+std::string header_of(const fs::path& csv) {
+  const std::string text = read_file(csv);
+  return text.substr(0, text.find('\n'));
+}
+
+TEST(BladeForceColumns, OneNameInTwoDAndThreeD) {
+  const TempDir dir("blade_columns");
+  std::ofstream(dir / "plow_2d.yaml") << shipped("r100_plow_2d.yaml");
+  std::ofstream(dir / "plow_3d.yaml") << shipped("r100_plow_offset.yaml");
+  ASSERT_EQ(framedyn(dir, "run plow_2d.yaml --out two -q").status, 0);
+  ASSERT_EQ(framedyn(dir, "run plow_3d.yaml --out three -q").status, 0);
+  const std::string h2 = header_of(dir / "two" / "response.csv"), h3 = header_of(dir / "three" / "response.csv");
+  for (const std::string c : {",plow_force_x [lbf]", ",plow_force_z [lbf]"}) {
+    EXPECT_NE(h2.find(c), std::string::npos) << c << " in " << h2;
+    EXPECT_NE(h3.find(c), std::string::npos) << c << " in " << h3;
+  }
+  EXPECT_NE(h3.find(",plow_force_y [lbf]"), std::string::npos) << h3;
+  EXPECT_EQ(h2.find("plow_force_y"), std::string::npos) << h2;
+  EXPECT_EQ(h2.find("soil_force"), std::string::npos) << h2;
+  EXPECT_EQ(h3.find("soil_force"), std::string::npos) << h3;
 }
 
 }  // namespace
