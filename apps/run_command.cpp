@@ -35,8 +35,8 @@ struct RunOptions {
 
 
 // The console of a vehicle study's run (rigid_2d, rigid_3d and the pipeline): the modes with their
-// dominant coordinates, the calibration, the blade's motion and forces (2-D), the frame's lines (the
-// pipeline), the figures.
+// dominant coordinates, the calibration, the blade's motion and forces (the same lines in 2-D and 3-D),
+// the frame's lines (the pipeline), the figures.
 void print_vehicle_run(const std::string& study_file, const report::StudyRun& run, bool figures) {
   const coupling::RigidStudy& study = *run.details->study;
   const coupling::RigidResults& r = *run.details->results;
@@ -49,7 +49,7 @@ void print_vehicle_run(const std::string& study_file, const report::StudyRun& ru
     for (std::size_t i = 0; i < r.modes.size(); ++i) fmt::print("{:5d}  {:14.4f}  {}\n", i + 1, r.modes[i].frequency_hz, r.modes[i].dominant);
   }
   if (r.calibration && study.calibration) report::print_calibration(*study.calibration, *r.calibration);
-  if (study.dimensions() == 2 && r.plow_vertical_peak_to_peak) {
+  if (r.plow_vertical_peak_to_peak) {
     fmt::print("\nblade vertical motion, average peak to peak: {:.4g} {}\n", *r.plow_vertical_peak_to_peak * lf, u.label(Quantity::length));
     fmt::print("peak cutting force {:.5g} {}, peak backing force {:.5g} {}\n", r.peak_cutting_force.value_or(0) * ff, u.label(Quantity::force),
                r.peak_backing_force.value_or(0) * ff, u.label(Quantity::force));

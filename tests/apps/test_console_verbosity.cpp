@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -141,6 +142,44 @@ TEST(BladeForceColumns, OneNameInTwoDAndThreeD) {
   EXPECT_EQ(h2.find("plow_force_y"), std::string::npos) << h2;
   EXPECT_EQ(h2.find("soil_force"), std::string::npos) << h2;
   EXPECT_EQ(h3.find("soil_force"), std::string::npos) << h3;
+}
+
+// The console of `framedyn run` prints the same blade lines for a 2-D and a
+// 3-D study (issue 15; it printed them for 2-D only before docs/validation.md
+// V40), each figure the one summary.json reports, to the 4 or 5 significant
+// digits the console prints.
+double console_number(const std::string& out, const std::string& pattern) {
+  std::smatch m;
+  if (!std::regex_search(out, m, std::regex(pattern))) return std::nan("");
+  return std::stod(m[1].str());
+}
+
+TEST(RunConsole, TwoDAndThreeDPrintTheSameBladeLinesAsTheSummary) {
+  const TempDir dir("blade_console");
+  // 0.2 s: a few shaker cycles (18.33 Hz), so that the cycle measures exist.
+  const auto cut = [](std::string s) { return s.replace(s.find("duration: 0.05"), 14, "duration: 0.2"); };
+  std::ofstream(dir / "plow_2d.yaml") << cut(shipped("r100_plow_2d.yaml"));
+  std::ofstream(dir / "plow_3d.yaml") << cut(shipped("r100_plow_offset.yaml"));
+  for (const std::string model : {"2d", "3d"}) {
+    const RunResult r = framedyn(dir, "run plow_" + model + ".yaml --out out_" + model);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Json summary = Json::parse(read_file(dir / ("out_" + model) / "summary.json"));
+    const Json& response = summary["rigid"]["response"];
+    const auto expect_line = [&](const std::string& pattern, const std::string& key, double digits) {
+      // A force the run never reached (no backing off in 0.05 s) is absent from the summary and printed 0.
+      const double printed = console_number(r.out, pattern);
+      const double reported = response.contains(key) ? response[key]["value"].get<double>() : 0.0;
+      if (response.contains(key)) EXPECT_EQ(response[key]["unit"].get<std::string>(), key == "plow_vertical_pp" ? "in" : "lbf") << key;
+      // The console prints `digits` significant digits: half a unit of the last one.
+      const double half_unit = reported == 0.0 ? 0.0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(reported))) - digits + 1);
+      EXPECT_NEAR(printed, reported, half_unit) << model << " " << key << "\n" << r.out;
+    };
+    expect_line(R"(blade vertical motion, average peak to peak: ([-0-9.e+]+) in\n)", "plow_vertical_pp", 4);
+    expect_line(R"(peak cutting force ([-0-9.e+]+) lbf, )", "peak_cutting_force", 5);
+    expect_line(R"(, peak backing force ([-0-9.e+]+) lbf\n)", "peak_backing_force", 5);
+    expect_line(R"(shaker cycles' peaks: cutting ([-0-9.e+]+) lbf, )", "average_peak_cutting_force", 5);
+    expect_line(R"(, backing ([-0-9.e+]+) lbf\n)", "average_peak_backing_force", 5);
+  }
 }
 
 }  // namespace
