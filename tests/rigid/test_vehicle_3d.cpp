@@ -781,61 +781,6 @@ TEST(PlanarAgreement, InPlaneForcedResponseWithTheCutFaceAnchorAndReducedStiffne
   EXPECT_LT(r.force_difference, 2e-6 * r.force_amplitude);
 }
 
-// The moving anchor in closed form, on the offset plow (heading 22 deg, slope
-// 0.05 rad, every soil element along its own direction). The ground streams past
-// the machine at VS along the heading in the tires' ground plane: the soil flow
-// has length VS, lies in that plane, and its component along the cut c is the
-// rate of the soil line. A blade held still after its cut began at t = 0 is
-// pressed into the advancing soil: under soil_line each soil element e carries
-// -(k_e t + c_e) (e . v_soil), its spring part growing at k_e (e . v_soil) per
-// second; the contact reading (anchor fixed in the machine) carries only the
-// damper's -c_e (e . v_soil), and the two readings' accelerations differ by
-// M^-1 sum_e G_e^T k_e (e . v_soil) t, the anchor's motion alone. Exact: round-off.
-TEST(SoilAnchor3D, SoilLineAnchorMovesWithTheSoilFlowInTheGroundPlane) {
-  rigid::Machine3DParameters p = offset_plow();
-  p.forward_speed = 0.05;  // m/s
-  p.soil.cut_face = false;
-  p.soil.stiffness_reduction = 0.0;
-  p.soil.spring_from_contact = true;
-  p.soil.contact_moves_with_soil = false;
-  const rigid::VehicleModel fixed = rigid::build_vehicle_model(p);
-  p.soil.contact_moves_with_soil = true;
-  const rigid::VehicleModel moving = rigid::build_vehicle_model(p);
-
-  const Vector3d normal(std::sin(p.ground_slope), 0.0, std::cos(p.ground_slope));  // the tires' ground
-  const Vector3d& flow = moving.soil_flow;
-  EXPECT_NEAR(flow.norm(), p.forward_speed, 1e-15);
-  EXPECT_NEAR(flow.dot(normal), 0.0, 1e-15);
-  EXPECT_NEAR(moving.cut_direction.dot(flow), moving.soil_line_speed, 1e-15);
-  EXPECT_GT(flow.dot(moving.cut_direction), 0.0);  // rearward along the cut
-
-  VectorXd q = VectorXd::Zero(moving.size()), v = VectorXd::Zero(moving.size());
-  q(moving.coordinate("psi")) = 0.01;  // the blade displaced, held still
-  rigid::VehicleRunState fixed_run = rigid::start_run(fixed, 0.0, q), moving_run = rigid::start_run(moving, 0.0, q);
-  const double t = 0.02;
-  Vector3d resultant = Vector3d::Zero();
-  VectorXd anchor_load = VectorXd::Zero(moving.size());
-  double scale = 0.0;
-  for (int e : moving.soil_elements) {
-    const rigid::SpringDamper& el = moving.multibody.elements()[static_cast<std::size_t>(e)];
-    const double flow_e = el.direction.dot(flow);
-    const double expected = -(el.stiffness * t + el.damping) * flow_e;
-    scale = std::max(scale, el.stiffness * p.forward_speed * t);
-    EXPECT_NEAR(rigid::element_tension(moving, moving_run, e, t, q, v), expected, 1e-9 * scale) << el.name;
-    EXPECT_NEAR(rigid::element_tension(fixed, fixed_run, e, t, q, v), -el.damping * flow_e, 1e-9 * scale) << el.name;
-    resultant += el.direction * expected;
-    anchor_load += moving.multibody.elongation_map(e).transpose() * (el.stiffness * flow_e * t);
-  }
-  // The soil resultant (response.csv's plow force, the frame loads' blade force) is their sum.
-  EXPECT_LT((rigid::plow_force(moving, moving_run, t, q, v) - resultant).norm(), 1e-9 * scale);
-  rigid::VehicleDynamics fixed_dyn(fixed, fixed_run), moving_dyn(moving, moving_run);
-  VectorXd a_fixed, a_moving;
-  fixed_dyn.acceleration(t, q, v, a_fixed);
-  moving_dyn.acceleration(t, q, v, a_moving);
-  const VectorXd expected = moving.m.ldlt().solve(anchor_load);
-  EXPECT_LT((a_moving - a_fixed - expected).norm(), 1e-9 * expected.norm());
-}
-
 TEST(PlanarAgreement, InPlaneForcedResponseWithContactsLiftingOffAgrees) {
   // One-sided contacts (Eq. 4a.3): with twice its shaker force the shipped
   // plow's bounce tire lifts off (with the shipped force it carries 2,794 lbf
