@@ -231,10 +231,11 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
                             duration, periods, c.window_periods);
   } else {
     w.message = fmt::format("steady operation not reached in {:.4g} s ({:.3g} shaker periods): over the last {} periods {} still changes "
-                            "by {:.3g} % of its scale between one cycle and the next (a cycle of {} shaker period{}, the closest of 1 to {}; "
-                            "tolerance {:g} %); every peak reported is a start-up peak. Run longer, or the motion does not settle",
+                            "by {:.3g} % of its scale between one cycle and the next (a cycle of {} shaker period{}, the closest of the cycles of 1 to {} "
+                            "periods this run can show, of up to {}; tolerance {:g} %); every peak reported is a start-up peak. Run longer, or "
+                            "the motion does not settle",
                             duration, periods, c.window_periods, s.leading_signal, 100.0 * s.remaining_change, s.remaining_period_multiple,
-                            s.remaining_period_multiple == 1 ? "" : "s", c.max_period_multiple, 100.0 * c.tolerance);
+                            s.remaining_period_multiple == 1 ? "" : "s", s.largest_multiple_tried, c.max_period_multiple, 100.0 * c.tolerance);
   }
   w.figures = {{"remaining_change", s.remaining_change, "1"}, {"period_multiple", static_cast<double>(s.remaining_period_multiple), "1"},
                {"tolerance", c.tolerance, "1"}, {"duration", duration, "s"}, {"shaker_periods", periods, "1"}};
@@ -257,7 +258,7 @@ std::optional<core::Warning> steady_warning(const rigid::SteadyOperation& s, con
       w.message += fmt::format(". The change does not shrink, or more slowly than over the run's length ({:.3g} % {:.3g} s earlier): "
                                "the motion may not settle at any multiple "
                                "up to {} (a drift, a longer cycle, a torus or an irregular motion); the start-up peaks are those of the whole run",
-                               100.0 * s.trend_earlier_change, s.trend_span, c.max_period_multiple);
+                               100.0 * s.trend_earlier_change, s.trend_span, s.largest_multiple_tried);
     }
   }
   return w;

@@ -178,6 +178,7 @@ SteadyOperation detect_steady_operation(const std::vector<double>& time, const s
     const long K = comparable_periods(time, shaker_period, n);
     if (K < W) break;  // a larger n has fewer comparisons still
     r.enough_data = true;
+    r.largest_multiple_tried = n;
     // The last window's largest change (Eq. 12.3) and the signal that sets it.
     const CycleChanges last = changes_from(time, signals, shaker_period, n, c, K - W, breaks, group_largest);
     if (static_cast<long>(last.change.size()) < W) continue;

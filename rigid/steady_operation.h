@@ -1,7 +1,7 @@
 // Steady operation of a shaken machine (docs/theory/rigid.md, section 12):
 // when the response has stopped changing from one shaker cycle to the next
 // (Eqs. 12.1-12.4), with the motion allowed to repeat only every n shaker
-// periods (a subharmonic response, n = 1..kMaxPeriodMultiple), and the peaks
+// periods (a subharmonic response, n = 1..SteadyCriterion::max_period_multiple), and the peaks
 // of a time history over the start-up and over steady operation apart
 // (Eq. 12.5). Pure signal processing: the signals (blade motion, frame loads)
 // are chosen by the caller (coupling/steady_report.h).
@@ -17,8 +17,9 @@ namespace framedyn::rigid {
 struct SteadyCriterion {
   double tolerance = 0.01;     // largest cycle-to-cycle change, as a fraction of each signal's scale (Eq. 12.2)
   int window_periods = 3;      // steady only if every comparison over at least this many shaker periods passes (Eq. 12.3)
-  int max_period_multiple = 32; // n = 1..this tried, the least that passes taken (Eq. 12.4); 32: the shipped 3-D
-                                // offset plow settles on a 14-period orbit (docs/theory/rigid.md, section 17)
+  int max_period_multiple = 128; // n = 1..this tried, the least that passes taken (Eq. 12.4); 128 (7.0 s at 18.33 Hz): the
+                                 // shipped 3-D straight plow settles on a 110-period orbit, the offset plow on a 14-period one
+                                 // (docs/theory/coupling.md section 19, docs/theory/rigid.md section 17)
   double scale_floor = 0.01;   // a signal's scale is at least this fraction of the largest magnitude in its group (Eq. 12.2)
 };
 
@@ -39,6 +40,7 @@ struct SteadyOperation {
   std::string leading_signal;
   double shaker_period = 0.0;        // s
   bool enough_data = true;           // false if the run is shorter than window_periods + n periods for every n
+  int largest_multiple_tried = 0;    // the largest n the run was long enough to try (at most max_period_multiple)
   // When not reached (Eq. 17.2): the trend of the closest multiple's change,
   // its largest change over the last window against the window that ends
   // half-way through the comparisons, trend_span earlier: the change goes as

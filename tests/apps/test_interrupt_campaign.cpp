@@ -99,7 +99,7 @@ std::string study_text(bool xdmf = false) {
     if (at == std::string::npos) throw std::runtime_error("examples/straight_plowing.yaml has no '" + from + "'");
     s.replace(at, from.size(), to);
   };
-  replace("duration: 1.0", "duration: 0.2");
+  replace("duration: 20.0", "duration: 0.2");
   if (!xdmf) replace("paraview: xdmf", "paraview: vtu");  // the series as many files: many moments to interrupt at
   replace("mesh: ../meshes/r100_frame.inp", "mesh: " + (kSource / "meshes" / "r100_frame.inp").string());
   return s;

@@ -116,6 +116,38 @@ TEST(SteadyOperation, FourteenPeriodSubharmonicIsFoundAsFourteenShakerPeriods) {
   }
 }
 
+TEST(SteadyOperation, OrbitOfSevenSlowCyclesInOneHundredTenPeriodsIsFoundAsOneHundredTenShakerPeriods) {
+  // The shipped 3-D straight plow settles on an orbit of 7 relaxation cycles
+  // in 110 shaker periods (docs/theory/coupling.md, section 19): longer than
+  // the 32 periods the detector tried before. Here: the transient over a
+  // periodic part plus a part of frequency 7/110 of the shaker's; 7 and 110
+  // have no common factor, so it repeats every 110 T and no sooner, and
+  // t* = tau ln(A (1 - e^{-110T/tau}) / (S tol)) as for 14 periods.
+  const auto periodic = [](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + std::sin(2 * M_PI * 7 * t / (110 * kPeriod)); };
+  const auto f = [&](double t) { return kA * std::exp(-t / kTau) + periodic(t); };
+  const Sampled s = sample(f, 130);  // t* is about 10 periods: 130 leaves the 110 + 3 that show it
+  const SteadyCriterion c;
+  ASSERT_GE(c.max_period_multiple, 110);
+  const SteadyOperation op = detect_steady_operation(s.time, {{"x", &s.x}}, kPeriod, c);
+  ASSERT_TRUE(op.reached_at.has_value());
+  EXPECT_EQ(op.period_multiple, 110);
+  const auto [lo, hi] = range_on_grid(periodic, 110 * kPeriod, 2200000);
+  const double t_star = kTau * std::log(kA * (1 - std::exp(-110 * kPeriod / kTau)) / ((hi - lo) * c.tolerance));
+  EXPECT_GE(*op.reached_at, t_star);
+  EXPECT_LT(*op.reached_at, t_star + kPeriod);
+  // No multiple below 110 passes: over n periods the slow part changes by up to
+  // 2 |sin(7 pi n / 110)| (at the phase where its cosine is 1, which the last 16
+  // periods hold: 16 x 7/110 > 1 slow cycle), at least 2 sin(pi / 110) = 0.057,
+  // and the scale is at most hi - lo (about 4) plus what is left of the
+  // transient at the start of the scale's span (A e^{-17T/tau} = 1e-3, 2.5e-4 relative).
+  for (int n = 1; n < 110; ++n) {
+    const CycleChanges cc = cycle_changes(s.time, {{"x", &s.x}}, kPeriod, n, c);
+    const double largest = *std::max_element(cc.change.end() - 16, cc.change.end());
+    EXPECT_GE(largest, 2 * std::abs(std::sin(7 * M_PI * n / 110)) / (hi - lo) * (1 - 1e-3)) << n;
+    EXPECT_GT(largest, c.tolerance) << n;
+  }
+}
+
 TEST(SteadyOperation, RunThatEndsInTheTransientProjectsTheClosedFormSettlingTime) {
   // x = A e^{-t/tau} + B sin(2 pi t / T) with a tolerance the run cannot reach:
   // d_1(k) = C e^{-kT/tau}, C = A (1 - e^{-T/tau}) / 2B, so the change decays at
@@ -210,6 +242,31 @@ TEST(SteadyOperation, ComponentThatIsRoundOffIsJudgedAgainstItsGroup) {
   const SteadyOperation x_only = detect_steady_operation(s.time, {{"x", &s.x, 1}}, kPeriod);
   ASSERT_TRUE(together.reached_at.has_value());
   EXPECT_EQ(*together.reached_at, *x_only.reached_at);
+}
+
+TEST(SteadyOperation, ComponentThatIsIdenticallyZeroNeitherHoldsBackNorFakesSteadyOperation) {
+  // A straight plow's lateral loads are zero throughout (the machine is
+  // symmetric): a zero component never changes, so it passes every
+  // comparison; beside a settling load of its group it leaves that load's
+  // result unchanged, and beside a drift it does not make it steady. A group
+  // that is zero throughout has no scale: it is steady from its start.
+  const Sampled s = sample(decaying, 40);
+  const std::vector<double> zero(s.time.size(), 0.0);
+  const SteadyOperation x_only = detect_steady_operation(s.time, {{"x", &s.x, 1}}, kPeriod);
+  const SteadyOperation together = detect_steady_operation(s.time, {{"x", &s.x, 1}, {"lateral", &zero, 1}}, kPeriod);
+  ASSERT_TRUE(x_only.reached_at.has_value());
+  ASSERT_TRUE(together.reached_at.has_value());
+  EXPECT_EQ(*together.reached_at, *x_only.reached_at);
+  EXPECT_EQ(together.period_multiple, x_only.period_multiple);
+  EXPECT_EQ(together.leading_signal, "x");
+  const SteadyOperation alone = detect_steady_operation(s.time, {{"lateral", &zero, 2}}, kPeriod);
+  ASSERT_TRUE(alone.reached_at.has_value());
+  EXPECT_EQ(*alone.reached_at, s.time.front());
+  EXPECT_EQ(alone.period_multiple, 1);
+  const auto drift = [](double t) { return kB * std::sin(2 * M_PI * t / kPeriod) + 0.1 * kB * t / kPeriod; };
+  const Sampled d = sample(drift, 40);
+  const std::vector<double> zero_d(d.time.size(), 0.0);
+  EXPECT_FALSE(detect_steady_operation(d.time, {{"x", &d.x, 1}, {"lateral", &zero_d, 1}}, kPeriod).reached_at.has_value());
 }
 
 TEST(SteadyOperation, PeaksSplitAtTheTimeSteadyOperationIsReached) {
