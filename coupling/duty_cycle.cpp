@@ -72,6 +72,7 @@ DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleS
   request.fatigue = q.fatigue;
   request.fatigue->hours = spec.hours;
   request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
+  request.window_lead_in_decay = q.lead_in_decay;  // the steady window alone: what the life map reads
   const RigidResults r = run_rigid_study(study);
   const LoadHistory loads = all_frame_loads(*r.frame_loads_3d), static_loads = all_frame_loads(*r.static_frame_loads_3d);
   DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
@@ -114,6 +115,7 @@ DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<v
     for (std::thread& t : pool) t.join();
   }
   DutyCycleResults out;
+  out.scenarios.reserve(n);  // moved in, never copied (a scenario's results hold its stress histories)
   for (std::size_t i = 0; i < n; ++i) {
     if (failed[i]) std::rethrow_exception(failed[i]);
     if (!done[i]) continue;  // not run: an earlier scenario failed (rethrown above)

@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,12 @@ struct DutyCycleRequest {
   std::string file, name;
   std::vector<DutyCycleScenarioSpec> scenarios;
   FatigueRequest fatigue;
+  // Each scenario's frame transient over its steady window alone, from a lead-in long enough for
+  // the free response of its start to decay to this fraction of its amplitude (FrameStudyRequest::
+  // window_lead_in_decay; docs/theory/fatigue.md section 15). Not a key of the file: the cycle's
+  // damage at every section point equals the whole record's to the tolerance derived there
+  // (tests: DutyCycleWindowOnly). Unset: every scenario's whole record (the reference).
+  std::optional<double> lead_in_decay = 1e-6;
 };
 
 // Throws core::InputError (STUDY-123, STUDY-124; the fatigue block's STUDY-114 .. STUDY-119).

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -386,6 +387,22 @@ std::vector<int> axle_pin_supports(const fem::FrameModel& model, const FrameStud
   return {k * rear + 0, k * rear + 1, k * rear + 2, k * front + 1, k * front + 2, cylinder >= 0 ? k * cylinder + 2 : k * rear + 3};
 }
 
+// The slowest decay rate of a free vibration among the basis's elastic modes (1/s), numbered as
+// modal_transient numbers them for its damping: zeta omega for an underdamped mode, the slower root
+// omega (zeta - sqrt(zeta^2 - 1)) for an overdamped one; 0 when a mode is undamped (nothing decays).
+double slowest_modal_decay(const fem::ModalBasis& basis, const fem::ModalDamping& damping) {
+  double slowest = std::numeric_limits<double>::infinity();
+  int elastic = 0;
+  for (Eigen::Index i = 0; i < basis.eigenvalues.size(); ++i) {
+    if (basis.rigid_body[static_cast<std::size_t>(i)]) continue;
+    const double omega = std::sqrt(std::max(basis.eigenvalues(i), 0.0));
+    const double zeta = damping.ratio_of(elastic++, omega);
+    const double rate = !(omega > 0.0) ? 0.0 : zeta < 1.0 ? zeta * omega : omega * (zeta - std::sqrt(zeta * zeta - 1.0));
+    slowest = std::min(slowest, rate);
+  }
+  return std::isfinite(slowest) ? slowest : 0.0;
+}
+
 }  // namespace
 
 FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, const LoadHistory* static_loads,
@@ -564,6 +581,31 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     const double dt = (in.times(in.times.size() - 1) - in.times(0)) / static_cast<double>(in.times.size() - 1);
     interval = std::max(1, static_cast<int>(std::lround(*q.output_interval / dt)));
   }
+  // The steady window on the output times (every interval-th input time from the first), known before the run.
+  SteadyWindow window;
+  {
+    Eigen::VectorXd t((in.times.size() - 1) / interval + 1);
+    for (Eigen::Index j = 0; j < t.size(); ++j) t(j) = in.times(j * interval);
+    window = steady_window(rigid_steady_from, q.steady_from, t);
+  }
+  // Duty cycles (request.window_lead_in_decay): the transient from a lead-in before the steady window.
+  if (q.window_lead_in_decay && q.method != FrameMethod::direct) {
+    const double rate = slowest_modal_decay(basis, q.damping);
+    if (rate > 0.0 && *q.window_lead_in_decay > 0.0 && *q.window_lead_in_decay < 1.0) {
+      const double lead_in = std::log(1.0 / *q.window_lead_in_decay) / rate;
+      // The latest input time on the output grid (every interval-th time from the first) at or before
+      // t_s - L: the outputs kept are then the whole run's outputs at the same times.
+      Eigen::Index first = 0;
+      for (Eigen::Index k = 0; k < in.times.size(); k += interval)
+        if (in.times(k) <= window.from - lead_in) first = k;
+      if (first > 0) {
+        const Eigen::Index n = in.times.size() - first;
+        in.times = Eigen::VectorXd(in.times.tail(n));
+        in.components = Eigen::MatrixXd(in.components.rightCols(n));
+      }
+      out.window_only = FrameStudyResults::WindowOnly{in.times(0), window.from, lead_in, rate};
+    }
+  }
   std::optional<ModalRates> rates;  // velocities and accelerations (modal methods, node-set outputs)
   if (q.method == FrameMethod::direct) {
     fem::NewmarkOptions no;
@@ -584,6 +626,28 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     out.response = fem::modal_transient(frame, basis, in, mo);
     out.frequencies_hz = out.response.frequencies_hz;
     if (!q.node_outputs.empty()) rates = modal_rates(frame, basis, in, mo);
+  }
+  // The window alone: the outputs from its start on, by the hot spots' and the life map's own test (a time
+  // within round-off of the start counts as steady).
+  if (out.window_only) {
+    const double from = out.window_only->outputs_from, edge = from - 1e-9 * std::max(1.0, std::abs(from));
+    Eigen::Index first = 0;
+    while (first < out.response.times.size() && out.response.times(first) < edge) ++first;
+    const Eigen::Index n = out.response.times.size() - first;
+    if (n < 2) {
+      out.window_only.reset();  // no window to speak of: the life map says so on the whole record
+    } else if (first > 0) {
+      fem::TransientResult& r = out.response;
+      r.times = Eigen::VectorXd(r.times.tail(n));
+      r.displacement = Eigen::MatrixXd(r.displacement.rightCols(n));
+      if (r.modal_coordinates.cols() > 0) r.modal_coordinates = Eigen::MatrixXd(r.modal_coordinates.rightCols(n));
+      if (r.rigid_coordinates.cols() > 0) r.rigid_coordinates = Eigen::MatrixXd(r.rigid_coordinates.rightCols(n));
+      if (rates) {
+        rates->velocity = Eigen::MatrixXd(rates->velocity.rightCols(n));
+        rates->acceleration = Eigen::MatrixXd(rates->acceleration.rightCols(n));
+        rates->modal_coordinates = Eigen::MatrixXd(rates->modal_coordinates.rightCols(n));
+      }
+    }
   }
   // Static plus dynamic (section 11): the static state on the same model, supports and load mapping.
   std::vector<std::vector<std::vector<double>>> static_stress;
@@ -637,7 +701,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
       out.static_forces.push_back(at->second);
     }
   }
-  out.hot_spots = find_hot_spots(out.stress, steady_window(rigid_steady_from, q.steady_from, out.response.times), 10, &out.static_forces);
+  out.hot_spots = find_hot_spots(out.stress, window, 10, &out.static_forces);
   out.solver_counts = fem::solver_counts() - counts_before;
   if (q.fatigue) out.life = frame_life_map(out.model, out.stress, out.static_forces, out.hot_spots.window, *q.fatigue);
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

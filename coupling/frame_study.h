@@ -162,6 +162,16 @@ struct FrameStudyRequest {
   // summary_outputs): results.stress, static_forces, hot_spots, life and
   // sections stay empty; the rails' peaks, envelopes and series are the same.
   bool hot_spots = true;
+  // Duty cycles only (coupling/duty_cycle.h; docs/theory/fatigue.md section 15): the steady
+  // window's transient alone. With a modal method, the modal transient starts a lead-in
+  // L = ln(1/eps) / min_i(decay rate of mode i) before the window's start t_s (the hot spots' own:
+  // the rigid-body model's steady report, else frame.steady_from, else the record's last half;
+  // coupling/hot_spots.h) (decay rate zeta_i omega_i for an
+  // underdamped mode), from the static equilibrium under that time's loads, so that the free
+  // response this start leaves has decayed to eps of its amplitude by t_s; and everything after the
+  // transient (rails, stresses, hot spots, life map) covers the window alone. The value is eps;
+  // unset (every study file's run): the whole record, from its first time.
+  std::optional<double> window_lead_in_decay;
   // The location of a key of the frame block: from key_locations, else (a
   // request built in code) the study file and "frame.KEY" without a line.
   core::InputLocation where(const std::string& key) const;
@@ -212,6 +222,14 @@ struct FrameStudyResults {
   HotSpotReport hot_spots;
   // With request.fatigue: damage per hour and life at every station and section point.
   std::optional<LifeMap> life;
+  // With request.window_lead_in_decay (a modal method, damped modes): where the modal transient started
+  // and the outputs begin (s), the lead-in (s) and the slowest modal decay rate it was set from
+  // (1/s). Unset otherwise; `transient_from` equals the record's first time when the lead-in
+  // reaches back to it (the whole record was run; the outputs still start at the window).
+  struct WindowOnly {
+    double transient_from = 0.0, outputs_from = 0.0, lead_in = 0.0, decay_rate = 0.0;
+  };
+  std::optional<WindowOnly> window_only;
 };
 
 // The study's mesh read in the study's inp_dialect, refused (naming

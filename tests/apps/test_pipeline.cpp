@@ -387,7 +387,10 @@ std::string offset_plowing_with_fatigue(const std::string& fatigue) {
 // A duty cycle of one scenario is that scenario's own pipeline run with the same
 // fatigue block: the same damage per hour and the same shortest-life location
 // (the cycle's Miner sum over one scenario, theory/fatigue.md section 9, wired
-// end to end through `framedyn run` on both file kinds).
+// end to end through `framedyn run` on both file kinds). The cycle runs the frame
+// transient over the steady window and its lead-in alone (section 15), the study
+// over its whole record: equal within section 15's bound, 1e-5 relative (2 m eps
+// with eps = 1e-6 and the shear slope m = 5); the summary's sums are otherwise the same.
 TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
   framedyn::testing::TempDir dir("framedyn_test_duty_cycle");
   std::string text = offset_plowing_with_fatigue("{code: IIW, default: FAT71}");
@@ -403,10 +406,10 @@ TEST(DutyCycle, OneScenarioCycleGivesTheDamageOfItsOwnPipelineRun) {
   const nlohmann::json duty = nlohmann::json::parse(slurp(dir / "cycle" / "summary.json"))["fatigue"];
   const double d = single["damage_per_hour"]["value"].get<double>();
   ASSERT_GT(d, 0.0);
-  EXPECT_NEAR(duty["damage_per_hour"]["value"].get<double>(), d, 1e-12 * d);
-  EXPECT_NEAR(duty["damage_per_cycle"].get<double>(), 40.0 * d, 1e-12 * 40.0 * d);
+  EXPECT_NEAR(duty["damage_per_hour"]["value"].get<double>(), d, 1e-5 * d);
+  EXPECT_NEAR(duty["damage_per_cycle"].get<double>(), 40.0 * d, 1e-5 * 40.0 * d);
   for (const char* k : {"output", "element", "station", "point"}) EXPECT_EQ(duty["min_life"][k], single["min_life"][k]) << k;
-  EXPECT_NEAR(duty["min_life"]["value"].get<double>(), 1.0 / d, 1e-12 / d);
+  EXPECT_NEAR(duty["min_life"]["value"].get<double>(), 1.0 / d, 1e-5 / d);
 }
 
 // The pipeline with EN 1993-1-9's curves (fatigue.code: EN1993) runs to the end (it exited 2:
