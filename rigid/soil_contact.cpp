@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace framedyn::rigid {
@@ -72,10 +73,14 @@ typename SoilContact<Anchor>::Switch SoilContact<Anchor>::on_event(double t, int
 
 template <class Anchor>
 typename SoilContact<Anchor>::State SoilContact<Anchor>::state_at(double t) const {
-  State s = history_.empty() ? State{} : history_.front();
-  for (const State& h : history_)
-    if (h.time <= t) s = h;
-  return s;
+  if (history_.empty()) return State{};
+  // The last switch at or before t (the first entry for t before it). The log is
+  // in time order (the integrator locates the switches going forward), so a binary
+  // search finds it: force recovery asks once per output sample, and a 20-s run
+  // logs thousands of switches.
+  if (!(t >= history_.front().time)) return history_.front();
+  const auto after = std::upper_bound(history_.begin(), history_.end(), t, [](double time, const State& h) { return time < h.time; });
+  return *std::prev(after);
 }
 
 template class SoilContact<Eigen::Vector2d>;
@@ -142,9 +147,10 @@ std::string ToothCount::on_scheduled_change(double t) {
 bool ToothCount::full_at(double t) const {
   if (history_.empty()) return law_.full_teeth_at(t);
   // The last change logged at or before t (the first entry for t before the log).
+  // (The log is in time order: a binary search, as SoilContact::state_at.)
   auto entry = history_.begin();
-  for (auto h = history_.begin(); h != history_.end(); ++h)
-    if (h->first <= t) entry = h;
+  if (t >= history_.front().first)
+    entry = std::prev(std::upper_bound(history_.begin(), history_.end(), t, [](double time, const std::pair<double, bool>& h) { return time < h.first; }));
   // It holds until the next scheduled change after it, computed as the
   // integrator computes the change times, so that a sample a hair before a
   // change sees the count in force then.
