@@ -28,6 +28,27 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+// The right rail's largest |normal stress| in frame_rails_series.csv within 3 output samples
+// (3.1 ms) of time t, and how many samples that was (none: the column is missing).
+std::pair<double, int> right_rail_peak_near(const fs::path& series_csv, double t) {
+  std::ifstream series(series_csv);
+  std::string line, name;
+  std::getline(series, line);
+  std::size_t column = 0;
+  std::istringstream header(line);
+  while (std::getline(header, name, ',') && name != "right_rail.max_abs_normal_stress [psi]") ++column;
+  if (name != "right_rail.max_abs_normal_stress [psi]") return {0.0, 0};
+  double peak = 0.0;
+  int samples = 0;
+  while (std::getline(series, line)) {
+    std::vector<double> v;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    if (std::abs(v[0] - t) <= 0.0031) peak = std::max(peak, v.at(column)), ++samples;
+  }
+  return {peak, samples};
+}
 const std::string kBinary = FRAMEDYN_BINARY;
 const fs::path kSource = FRAMEDYN_SOURCE_DIR;
 
@@ -164,24 +185,7 @@ TEST_F(OffsetPlowingPipeline, ReachesSteadyOperationAndRanksHotSpotsByTheirStead
   // the 1 ms grid is not commensurate with the cycle).
   const nlohmann::json& rail = frame["steady"]["rails"]["right_rail"]["peak_abs_normal_stress"]["steady"];
   const double peak = rail["value"].get<double>(), at = rail["time"]["value"].get<double>();
-  std::ifstream series(*dir_ / "out" / "frame_rails_series.csv");
-  std::string line;
-  std::getline(series, line);
-  std::size_t column = 0;
-  {
-    std::istringstream header(line);
-    std::string name;
-    while (std::getline(header, name, ',') && name != "right_rail.max_abs_normal_stress [psi]") ++column;
-    ASSERT_EQ(name, "right_rail.max_abs_normal_stress [psi]") << line;
-  }
-  double earlier = 0.0;
-  int samples = 0;
-  while (std::getline(series, line)) {
-    std::vector<double> v;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
-    if (std::abs(v[0] - (at - cycle)) <= 0.0031) earlier = std::max(earlier, v.at(column)), ++samples;
-  }
+  const auto [earlier, samples] = right_rail_peak_near(*dir_ / "out" / "frame_rails_series.csv", at - cycle);
   ASSERT_GE(samples, 5);
   EXPECT_NEAR(earlier / peak, 1.0, tolerance) << "right rail steady peak " << peak << " psi at " << at << " s, one cycle earlier " << earlier;
   std::cout << "[ measured ] steady from " << reached << " s (cycle " << cycle << " s); steady peak von Mises " << steady_peak
@@ -227,24 +231,7 @@ TEST(ShippedStraightPlow, ReachesSteadyOperationOnAPeriodicOrbitWithAWholeCycleI
   // The peak one cycle earlier lies in steady operation too only if at - cycle >= reached; else one cycle later.
   const double other = at - cycle >= reached ? at - cycle : at + cycle;
   ASSERT_LE(other, duration);
-  std::ifstream rails(dir / "out" / "frame_rails_series.csv");
-  std::string line;
-  std::getline(rails, line);
-  std::size_t column = 0;
-  {
-    std::istringstream header(line);
-    std::string name;
-    while (std::getline(header, name, ',') && name != "right_rail.max_abs_normal_stress [psi]") ++column;
-    ASSERT_EQ(name, "right_rail.max_abs_normal_stress [psi]") << line;
-  }
-  double recurring = 0.0;
-  int samples = 0;
-  while (std::getline(rails, line)) {
-    std::vector<double> v;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
-    if (std::abs(v[0] - other) <= 0.0031) recurring = std::max(recurring, v.at(column)), ++samples;
-  }
+  const auto [recurring, samples] = right_rail_peak_near(dir / "out" / "frame_rails_series.csv", other);
   ASSERT_GE(samples, 5);
   EXPECT_NEAR(recurring / peak, 1.0, tolerance) << "right rail steady peak " << peak << " psi at " << at << " s, one cycle apart " << recurring;
   std::cout << "[ measured ] steady from " << reached << " s, cycle of " << n << " periods (" << cycle << " s); right rail steady peak "
