@@ -60,7 +60,7 @@ DutyCycleRequest read_duty_cycle(const YAML::Node& doc, const std::string& file)
 namespace {
 
 // One scenario's pipeline with the cycle's fatigue block (its hours the scenario's).
-DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleScenarioSpec& spec) {
+DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleScenarioSpec& spec, core::WorkShare* share) {
   const auto start = std::chrono::steady_clock::now();
   if (const std::string model = study_model(spec.study.string()); model != "rigid_3d")
     throw core::InputError(spec.where, "a 3-D study (model: rigid_3d) with a response and a frame_response block", "'" + spec.study.string() + "', model " + model);
@@ -75,7 +75,7 @@ DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleS
   request.window_lead_in_decay = q.lead_in_decay;  // the steady window alone: what the life map reads
   const RigidResults r = run_rigid_study(study);
   const LoadHistory loads = all_frame_loads(*r.frame_loads_3d), static_loads = all_frame_loads(*r.static_frame_loads_3d);
-  DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at), request};
+  DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at, nullptr, share), request};
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
 }
@@ -92,6 +92,11 @@ DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<v
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex progress;
+  // A worker with no scenario left takes chunks of the others' frame studies (stations, output times)
+  // until every worker is out of scenarios: the longest scenario does not finish alone. The same
+  // numbers on any number of workers (core/work_share.h).
+  core::WorkShare share;
+  std::atomic<std::size_t> idle{0};  // workers out of scenarios (changed before share.wake(), read under its lock)
   const auto work = [&]() {
     for (std::size_t i = next++; i < n && !stop; i = next++) {
       const DutyCycleScenarioSpec& spec = q.scenarios[i];
@@ -100,11 +105,16 @@ DutyCycleResults run_duty_cycle(const DutyCycleRequest& q, const std::function<v
         stage(fmt::format("scenario {} ({})", spec.name, spec.study.string()));
       }
       try {
-        done[i] = run_scenario(q, spec);
+        done[i] = run_scenario(q, spec, workers > 1 ? &share : nullptr);
       } catch (...) {
         failed[i] = std::current_exception();
         stop = true;  // the scenarios after it would not have run one at a time either
       }
+    }
+    if (workers > 1) {
+      ++idle;
+      share.wake();
+      share.help([&] { return idle == workers; });
     }
   };
   if (workers == 1) {

@@ -206,7 +206,7 @@ double LifeMap::max_damage_per_hour() const {
 }
 
 LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, const std::vector<fem::SectionForces>& static_forces,
-                       const SteadyWindow& window, const FatigueRequest& q) {
+                       const SteadyWindow& window, const FatigueRequest& q, core::WorkShare* share) {
   LifeMap out;
   out.code = fatigue_code_name(q.code);
   out.code_id = q.code;
@@ -262,8 +262,10 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
                        &out.shear_max_range, &out.correlation,            &out.proportional_damage_per_hour, &out.non_proportional_damage_per_hour,
                        &out.comparison_value};
   for (auto* table : tables) table->resize(h.stations.size());
+  // Each station's points on their own: any share of the stations gives the same map.
+  core::for_ranges(share, h.stations.size(), 4, [&](std::size_t begin, std::size_t end) {
   std::vector<double> sigma(steady.size()), tau(steady.size()), tau_other(steady.size());
-  for (std::size_t s = 0; s < h.stations.size(); ++s) {
+  for (std::size_t s = begin; s < end; ++s) {
     const std::size_t sec = static_cast<std::size_t>(h.stations[s].section);
     const fem::SectionForces fs = static_forces.empty() ? fem::SectionForces{} : static_forces.at(s);
     const std::vector<fem::SectionPoint>& points = h.points[sec];
@@ -304,6 +306,7 @@ LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& h, c
       out.damage_per_hour[s][p] = combine(out.comparison_value[s][p]);  // F.33
     }
   }
+  });
   std::tie(out.worst_station, out.worst_point) = worst_location(out.damage_per_hour);
   return out;
 }

@@ -138,8 +138,9 @@ struct LifeMap {
 
 // The life map of one run. Throws core::InputError (STUDY-120) for a details set the mesh
 // lacks or whose elements no output station lies on.
+// `share`: idle workers of a pool may take stations (the same map without).
 LifeMap frame_life_map(const fem::FrameModel& model, const StressHistories& histories, const std::vector<fem::SectionForces>& static_forces,
-                       const SteadyWindow& window, const FatigueRequest& request);
+                       const SteadyWindow& window, const FatigueRequest& request, core::WorkShare* share = nullptr);
 
 // The damage of one stress history (Pa) rainflow-counted as a repeated block on `curve`:
 // what the life map does at every point, exposed so a test can apply fatigue/ by hand.

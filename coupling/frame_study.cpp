@@ -406,7 +406,7 @@ double slowest_modal_decay(const fem::ModalBasis& basis, const fem::ModalDamping
 }  // namespace
 
 FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory* given, const LoadHistory* static_loads,
-                                  std::optional<double> rigid_steady_from, FrameModelCache* cache) {
+                                  std::optional<double> rigid_steady_from, FrameModelCache* cache, core::WorkShare* share) {
   const auto start = std::chrono::steady_clock::now();
   FrameStudyResults out;
   const fem::SolverCounts counts_before = fem::solver_counts();
@@ -623,6 +623,15 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     mo.method = q.method == FrameMethod::mode_displacement ? fem::ResponseMethod::mode_displacement : fem::ResponseMethod::mode_acceleration;
     mo.damping = q.damping;
     mo.output_interval = interval;
+    mo.share = share;
+    // A duty cycle's lead-in is integrated through, not kept: the outputs from the window's start on
+    // (a time within round-off of it counts as steady), when the window holds two of them at least.
+    if (out.window_only) {
+      const double from = out.window_only->outputs_from, edge = from - 1e-9 * std::max(1.0, std::abs(from));
+      Eigen::Index kept = 0;
+      for (Eigen::Index k = 0; k < in.times.size(); k += interval) kept += in.times(k) >= edge ? 1 : 0;
+      if (kept >= 2) mo.outputs_from = edge;
+    }
     out.response = fem::modal_transient(frame, basis, in, mo);
     out.frequencies_hz = out.response.frequencies_hz;
     if (!q.node_outputs.empty()) rates = modal_rates(frame, basis, in, mo);
@@ -672,7 +681,7 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     return out;
   }
   for (const RailSpec& rail : q.rails)
-    out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations) : SectionHistory{});
+    out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations, share) : SectionHistory{});
   // Stress histories at every station and section point, and the hot spots (docs/theory/coupling.md section 10).
   {
     std::vector<SectionHistory> computed(q.rails.size());
@@ -680,12 +689,12 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     for (std::size_t k = 0; k < q.rails.size(); ++k) {
       const SectionHistory* h = &out.sections[k];
       if (h->element_ids.empty()) {
-        computed[k] = section_history(model, out.response.displacement, q.rails[k].element_set, q.stations);
+        computed[k] = section_history(model, out.response.displacement, q.rails[k].element_set, q.stations, share);
         h = &computed[k];
       }
       sets.push_back({q.rails[k].name, h->element_ids, h->station_index, out.rails[k].station_points, &h->values});
     }
-    out.stress = stress_histories(model, out.response.times, sets);
+    out.stress = stress_histories(model, out.response.times, sets, share);
   }
   // The static section forces at every stress station (total = static + dynamic), matched by
   // (output, element, station); without a static state static_forces stays empty (zero).
@@ -701,9 +710,9 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
       out.static_forces.push_back(at->second);
     }
   }
-  out.hot_spots = find_hot_spots(out.stress, window, 10, &out.static_forces);
+  out.hot_spots = find_hot_spots(out.stress, window, 10, &out.static_forces, share);
   out.solver_counts = fem::solver_counts() - counts_before;
-  if (q.fatigue) out.life = frame_life_map(out.model, out.stress, out.static_forces, out.hot_spots.window, *q.fatigue);
+  if (q.fatigue) out.life = frame_life_map(out.model, out.stress, out.static_forces, out.hot_spots.window, *q.fatigue, share);
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

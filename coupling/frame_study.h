@@ -250,8 +250,12 @@ fem::FrameModel read_frame_mesh(const FrameStudyRequest& request);
 // `rigid_steady_from`: when the vehicle model reached steady operation (s), for the hot spots.
 // `cache` (coupling/frame_model_cache.h): the model, its dynamics and modes are
 // taken from it when built before for the same key, else built and kept there.
+// `share` (core/work_share.h): idle workers of a pool may take output times and
+// stations of the response, section forces, stresses, hot spots and life map;
+// the results are the same numbers without it.
 FrameStudyResults run_frame_study(const FrameStudyRequest& request, const LoadHistory* loads = nullptr, const LoadHistory* static_loads = nullptr,
-                                  std::optional<double> rigid_steady_from = std::nullopt, FrameModelCache* cache = nullptr);
+                                  std::optional<double> rigid_steady_from = std::nullopt, FrameModelCache* cache = nullptr,
+                                  core::WorkShare* share = nullptr);
 
 // The names of the supports and the method as a study file spells them.
 const char* supports_name(FrameSupports supports);

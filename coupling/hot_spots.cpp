@@ -57,7 +57,8 @@ fem::SectionForces StressHistories::forces_at(std::size_t s, Eigen::Index j) con
   return f;
 }
 
-StressHistories stress_histories(const fem::FrameModel& model, const Eigen::VectorXd& times, const std::vector<SetHistory>& sets) {
+StressHistories stress_histories(const fem::FrameModel& model, const Eigen::VectorXd& times, const std::vector<SetHistory>& sets,
+                                 core::WorkShare* share) {
   StressHistories h;
   h.times = times;
   for (const fem::SectionAssignment& a : model.sections) {
@@ -78,9 +79,11 @@ StressHistories stress_histories(const fem::FrameModel& model, const Eigen::Vect
       if (b < 0) throw std::invalid_argument("element " + std::to_string(set.element_ids[i]) + " of " + set.name + " is not a beam");
       h.stations.push_back({set.name, set.element_ids[i], set.station_index[i], set.points[i], model.beams[static_cast<std::size_t>(b)].section});
     }
-    for (Eigen::Index j = 0; j < times.size(); ++j)
-      for (Eigen::Index k = 0; k < ns; ++k)
-        for (Eigen::Index c = 0; c < 6; ++c) h.forces(6 * (offset + k) + c, j) = static_cast<float>((*set.values)(j * ns + k, c));
+    core::for_ranges(share, static_cast<std::size_t>(times.size()), 256, [&](std::size_t begin, std::size_t end) {
+      for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j)
+        for (Eigen::Index k = 0; k < ns; ++k)
+          for (Eigen::Index c = 0; c < 6; ++c) h.forces(6 * (offset + k) + c, j) = static_cast<float>((*set.values)(j * ns + k, c));
+    });
   }
   return h;
 }
@@ -103,7 +106,8 @@ std::vector<fem::PointStress> point_stress_history(const StressHistories& h, std
   return out;
 }
 
-HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& window, int count, const std::vector<fem::SectionForces>* static_forces) {
+HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& window, int count, const std::vector<fem::SectionForces>* static_forces,
+                             core::WorkShare* share) {
   if (static_forces && !static_forces->empty() && static_forces->size() != h.stations.size())
     throw std::invalid_argument("the static section forces do not match the stress histories' stations");
   HotSpotReport out;
@@ -120,8 +124,10 @@ HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& windo
   const double none = -std::numeric_limits<double>::infinity();
   std::vector<HotSpot> best_vm(h.stations.size()), best_range(h.stations.size()), best_startup(h.stations.size());
   std::vector<double> station_vm(h.stations.size(), none), station_range(h.stations.size(), none), station_startup(h.stations.size(), none);
-  std::vector<double> vm(static_cast<std::size_t>(nt)), sigma(static_cast<std::size_t>(nt));
-  for (std::size_t s = 0; s < h.stations.size(); ++s) {
+  // Each station's entries on their own (any share of the stations: the same report); ranked below.
+  core::for_ranges(share, h.stations.size(), 8, [&](std::size_t begin, std::size_t end) {
+  std::vector<double> steady_vm, startup_vm;  // one point's von Mises over the steady times and over the others
+  for (std::size_t s = begin; s < end; ++s) {
     const int sec = h.stations[s].section;
     const fem::SectionProperties& props = h.sections[static_cast<std::size_t>(sec)];
     const std::vector<fem::SectionPoint>& points = h.points[static_cast<std::size_t>(sec)];
@@ -133,7 +139,8 @@ HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& windo
       PointRecord& r = rec[p];
       r.vm_static = fem::point_stress(props, points[p], fs).von_mises;
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      std::vector<double> steady_vm(static_cast<std::size_t>(nt), none), startup_vm(static_cast<std::size_t>(nt), none);
+      steady_vm.assign(static_cast<std::size_t>(nt), none);
+      startup_vm.assign(static_cast<std::size_t>(nt), none);
       for (Eigen::Index j = 0; j < nt; ++j) {
         const fem::PointStress ps = fem::point_stress(props, points[p], sum(fs, h.forces_at(s, j)));
         const std::size_t jj = static_cast<std::size_t>(j);
@@ -191,6 +198,7 @@ HotSpotReport find_hot_spots(const StressHistories& h, const SteadyWindow& windo
       x->startup_time = r.startup_time >= 0 ? h.times(r.startup_time) : 0.0;
     }
   }
+  });
   // Rank: greedily the largest remaining, ties to the lowest station index.
   const auto rank = [&](std::vector<double> values, const std::vector<HotSpot>& spots) {
     std::vector<HotSpot> ranked;

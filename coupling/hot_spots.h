@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/warnings.h"
+#include "core/work_share.h"
 #include "fem/frame_model.h"
 #include "fem/section_forces.h"
 #include "fem/section_stress.h"
@@ -57,7 +58,9 @@ struct SetHistory {
   std::vector<Eigen::Vector3d> points;  // per station, m
   const Eigen::MatrixXd* values = nullptr;
 };
-StressHistories stress_histories(const fem::FrameModel& model, const Eigen::VectorXd& times, const std::vector<SetHistory>& sets);
+// `share`: idle workers of a pool may take output times (the same numbers without).
+StressHistories stress_histories(const fem::FrameModel& model, const Eigen::VectorXd& times, const std::vector<SetHistory>& sets,
+                                 core::WorkShare* share = nullptr);
 
 // Where steady operation starts (Eq. 10.1) and who said so.
 struct SteadyWindow {
@@ -95,8 +98,9 @@ struct HotSpotReport {
 // `static_forces`: one per station (StressHistories::stations), or null / empty for zero.
 // Ties (values within 1e-6 relative of the largest) go to the lowest station,
 // point and time index, so the ranking is the same on every CPU.
+// `share`: idle workers of a pool may take stations (the same report without).
 HotSpotReport find_hot_spots(const StressHistories& histories, const SteadyWindow& window, int count = 10,
-                             const std::vector<fem::SectionForces>* static_forces = nullptr);
+                             const std::vector<fem::SectionForces>* static_forces = nullptr, core::WorkShare* share = nullptr);
 
 // The total (static + dynamic) stress at one station's section point at every
 // output time: what frame_stress_histories.csv writes and the hot-spot figure draws.

@@ -53,7 +53,8 @@ ModalRates modal_rates(const fem::FrameDynamics& frame, const fem::ModalBasis& b
   const Eigen::MatrixXd p = pm * in.components;
 
   std::vector<Eigen::Index> outputs;
-  for (Eigen::Index k = 0; k < nt; k += o.output_interval) outputs.push_back(k);
+  for (Eigen::Index k = 0; k < nt; k += o.output_interval)
+    if (in.times(k) >= o.outputs_from) outputs.push_back(k);  // modal_transient's outputs
   const Eigen::Index no = static_cast<Eigen::Index>(outputs.size());
   ModalRates r;
   r.modal_coordinates.resize(m, no);
@@ -145,7 +146,8 @@ NodalHistory nodal_history(const fem::FrameModel& model, const NodeOutputSpec& s
   return h;
 }
 
-SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations) {
+SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations,
+                               core::WorkShare* share) {
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
   const auto set = model.element_sets.find(upper(element_set));
   if (set == model.element_sets.end()) throw std::invalid_argument("the mesh has no element set " + element_set);
@@ -167,7 +169,9 @@ SectionHistory section_history(const fem::FrameModel& model, const Eigen::Matrix
   }
   const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
   h.values.resize(u.cols() * ns, 7);
-  for (Eigen::Index j = 0; j < u.cols(); ++j) {
+  // Each output time's rows on their own: any share of the times gives the same numbers.
+  core::for_ranges(share, static_cast<std::size_t>(u.cols()), 64, [&](std::size_t begin, std::size_t end) {
+  for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j) {
     const Eigen::VectorXd uj = u.col(j);
     for (std::size_t e = 0; e < beams.size(); ++e) {
       if (model.beams[static_cast<std::size_t>(beams[e])].is_quadratic()) {  // B32, B32R: stations by statics of the nodal forces
@@ -191,6 +195,7 @@ SectionHistory section_history(const fem::FrameModel& model, const Eigen::Matrix
       }
     }
   }
+  });
   return h;
 }
 

@@ -78,7 +78,8 @@ struct SectionHistory {
   std::vector<double> station_x;     // distance from node a, m, per station
   Eigen::MatrixXd values;            // (outputs * stations) x 7, SI (N, N m, Pa)
 };
+// `share`: idle workers of a pool may take output times (the same numbers without).
 SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& displacement, const std::string& element_set,
-                               int stations);
+                               int stations, core::WorkShare* share = nullptr);
 
 }  // namespace framedyn::coupling

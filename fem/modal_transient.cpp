@@ -399,7 +399,8 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
   }
 
   std::vector<Eigen::Index> outputs;
-  for (Eigen::Index k = 0; k < nt; k += o.output_interval) outputs.push_back(k);
+  for (Eigen::Index k = 0; k < nt; k += o.output_interval)
+    if (in.times(k) >= o.outputs_from) outputs.push_back(k);
   const Eigen::Index no = static_cast<Eigen::Index>(outputs.size());
 
   TransientResult r;
@@ -502,13 +503,16 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
     }
   }
 
+  // Each output's displacement on its own (columns independent: any share of them, the same numbers).
   r.displacement.resize(frame.model().dof_count(), no);
-  for (Eigen::Index j = 0; j < no; ++j) {
-    Eigen::VectorXd u = phi * r.modal_coordinates.col(j);
-    if (rigid) u += frame.rigid_vectors() * r.rigid_coordinates.col(j);
-    if (o.method == ResponseMethod::mode_acceleration) u += correction * in.components.col(outputs[static_cast<std::size_t>(j)]);
-    r.displacement.col(j) = frame.expand(u);
-  }
+  core::for_ranges(o.share, static_cast<std::size_t>(no), 64, [&](std::size_t begin, std::size_t end) {
+    for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j) {
+      Eigen::VectorXd u = phi * r.modal_coordinates.col(j);
+      if (rigid) u += frame.rigid_vectors() * r.rigid_coordinates.col(j);
+      if (o.method == ResponseMethod::mode_acceleration) u += correction * in.components.col(outputs[static_cast<std::size_t>(j)]);
+      r.displacement.col(j) = frame.expand(u);
+    }
+  });
   return r;
 }
 

@@ -17,9 +17,11 @@
 
 #include <Eigen/Dense>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
+#include "core/work_share.h"
 #include "fem/assembly.h"
 #include "fem/modal_analysis.h"
 #include "fem/sparse_cholesky.h"
@@ -184,6 +186,11 @@ struct ModalTransientOptions {
   // and add them to the displacement; false: the elastic part under the
   // relieved loads (inertia relief), as for a free-free frame.
   bool include_rigid_motion = false;
+  // No output before this time (s): the grid stays every output_interval-th input time from the
+  // first, its earlier times are integrated through and not kept (a duty cycle's lead-in).
+  double outputs_from = -std::numeric_limits<double>::infinity();
+  // Idle workers of a pool may take columns of the displacement (the same numbers without).
+  core::WorkShare* share = nullptr;
 };
 
 struct TransientResult {

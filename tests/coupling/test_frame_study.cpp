@@ -2,12 +2,15 @@
 // load points through the mesh to the rail stresses, read from a YAML study.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <thread>
 
 #include "core/error.h"
 #include "core/results_folder.h"
+#include "core/work_share.h"
 #include "coupling/frame_study.h"
 #include "fem/section_forces.h"
 #include "fem/section_stress.h"
@@ -246,4 +249,59 @@ TEST(FrameStudy, AxlePinsGiveTheStressesOfFreeFreeInertiaReliefToSolverTolerance
   EXPECT_LT(held.cwiseAbs().maxCoeff(), 1e-9 * 1000.0);
   // Unrelieved, the pins do react (the test is not of a support that holds nothing).
   EXPECT_GT(frame.auxiliary_reactions(f).cwiseAbs().maxCoeff(), 100.0);
+}
+
+// Duty cycles (coupling/duty_cycle.cpp) hand a frame study's station and output-time loops to
+// idle workers (core/work_share.h), and keep no output before the steady window
+// (ModalTransientOptions::outputs_from). Neither may change a number: with a worker in
+// help() beside the run, and against the run that keeps its whole record, the window's
+// displacements, section forces, stresses, hot spots and life map are the same doubles.
+TEST(FrameStudy, AnIdleWorkerTakingStationsAndTimesAndSkippingTheLeadInChangesNoNumber) {
+  framedyn::testing::TempDir dir;
+  dir.write("loads.csv", load_file());
+  const coupling::FrameStudyRequest whole = coupling::read_frame_study(
+      dir.write("life.yaml", study("  supports: fixed_rear_end\n  modes: 20\n  stations: 5\n  steady_from: 0.1\n"
+                                   "  fatigue: {code: IIW, default: FAT71}\n"))
+          .string());
+  coupling::FrameStudyRequest windowed = whole;
+  windowed.window_lead_in_decay = 1e-3;  // a lead-in longer than the record: integrated from its start, outputs from 0.1 s
+  const coupling::FrameStudyResults serial = coupling::run_frame_study(windowed);
+  const coupling::FrameStudyResults full = coupling::run_frame_study(whole);
+  framedyn::core::WorkShare share;
+  std::atomic<bool> done{false};
+  std::thread helper([&] { share.help([&] { return done.load(); }); });
+  const coupling::FrameStudyResults shared = coupling::run_frame_study(windowed, nullptr, nullptr, std::nullopt, nullptr, &share);
+  done = true;
+  share.wake();
+  helper.join();
+  std::printf("[ measured ] chunks taken by the idle worker: %zu\n", share.shared_chunks());
+
+  ASSERT_TRUE(serial.window_only);
+  ASSERT_EQ(serial.response.times.size(), 101);  // 0.1 .. 0.2 s at 1 kHz
+  EXPECT_EQ(serial.response.times(0), 0.1);
+  const Eigen::Index first = full.response.times.size() - serial.response.times.size();
+  EXPECT_TRUE(serial.response.times == full.response.times.tail(serial.response.times.size()));
+  EXPECT_TRUE(serial.response.displacement == full.response.displacement.rightCols(serial.response.times.size()));
+  EXPECT_TRUE(serial.stress.forces == full.stress.forces.rightCols(serial.response.times.size()));
+  EXPECT_EQ(first, 100);
+
+  EXPECT_TRUE(shared.response.times == serial.response.times);
+  EXPECT_TRUE(shared.response.displacement == serial.response.displacement);
+  EXPECT_TRUE(shared.stress.forces == serial.stress.forces);
+  for (std::size_t k = 0; k < serial.sections.size(); ++k) EXPECT_TRUE(shared.sections[k].values == serial.sections[k].values) << k;
+  ASSERT_EQ(shared.hot_spots.by_von_mises.size(), serial.hot_spots.by_von_mises.size());
+  for (std::size_t k = 0; k < serial.hot_spots.by_von_mises.size(); ++k) {
+    const coupling::HotSpot &a = shared.hot_spots.by_von_mises[k], &b = serial.hot_spots.by_von_mises[k];
+    EXPECT_EQ(a.station, b.station);
+    EXPECT_EQ(a.point, b.point);
+    EXPECT_EQ(a.von_mises_total, b.von_mises_total);
+    EXPECT_EQ(a.time, b.time);
+    EXPECT_EQ(a.normal_stress_range, b.normal_stress_range);
+  }
+  ASSERT_TRUE(serial.life && shared.life && full.life);
+  EXPECT_EQ(shared.life->damage_per_hour, serial.life->damage_per_hour);
+  EXPECT_EQ(shared.life->normal_max_range, serial.life->normal_max_range);
+  EXPECT_EQ(shared.life->correlation, serial.life->correlation);
+  EXPECT_EQ(full.life->damage_per_hour, serial.life->damage_per_hour);  // the window's histories are the same doubles
+  EXPECT_GT(serial.life->max_damage_per_hour(), 0.0);
 }
