@@ -73,8 +73,10 @@ DutyCycleScenarioResult run_scenario(const DutyCycleRequest& q, const DutyCycleS
   request.fatigue->hours = spec.hours;
   request.paraview = ParaviewOutput::none;  // the cycle writes its own outputs; a scenario's ParaView series is its own run's business
   request.window_lead_in_decay = q.lead_in_decay;  // the steady window alone: what the life map reads
-  const RigidResults r = run_rigid_study(study);
-  const LoadHistory loads = all_frame_loads(*r.frame_loads_3d), static_loads = all_frame_loads(*r.static_frame_loads_3d);
+  for (RailSpec& rail : request.rails) rail.history = false;  // no section-force tables: the stresses from the displacements
+  RigidResults r = run_rigid_study(study);
+  // The loads taken over from the vehicle model's results, which the cycle keeps nothing else of.
+  const LoadHistory loads = all_frame_loads(std::move(*r.frame_loads_3d)), static_loads = all_frame_loads(std::move(*r.static_frame_loads_3d));
   DutyCycleScenarioResult s{spec.name, spec.hours, study.name, 0.0, run_frame_study(request, &loads, &static_loads, r.steady.operation.reached_at, nullptr, share), request};
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;

@@ -208,4 +208,18 @@ LoadHistory all_frame_loads(const FrameLoads3D& loads) {
   return all;
 }
 
+LoadHistory all_frame_loads(FrameLoads3D&& loads) {
+  LoadHistory all = std::move(loads.points);
+  for (LoadPointHistory& p : loads.direct.points) all.points.push_back(std::move(p));
+  loads.direct.points.clear();
+  return all;
+}
+
+std::vector<const LoadPointHistory*> frame_load_points(const FrameLoads3D& loads) {
+  std::vector<const LoadPointHistory*> all;
+  for (const LoadPointHistory& p : loads.points.points) all.push_back(&p);
+  for (const LoadPointHistory& p : loads.direct.points) all.push_back(&p);
+  return all;
+}
+
 }  // namespace framedyn::coupling

@@ -57,5 +57,9 @@ FrameLoads3D static_frame_loads_3d(const rigid::VehicleModel& model, const rigid
 // and what frame_loads.csv holds; with the frame's own inertia these loads
 // balance at every sample (docs/theory/coupling.md, section 6).
 LoadHistory all_frame_loads(const FrameLoads3D& loads);
+// The same, taking the histories over (no copy of a long record's rows).
+LoadHistory all_frame_loads(FrameLoads3D&& loads);
+// The same points in the same order, without a copy.
+std::vector<const LoadPointHistory*> frame_load_points(const FrameLoads3D& loads);
 
 }  // namespace framedyn::coupling

@@ -684,15 +684,16 @@ FrameStudyResults run_frame_study(const FrameStudyRequest& q, const LoadHistory*
     out.sections.push_back(rail.history ? section_history(model, out.response.displacement, rail.element_set, q.stations, share) : SectionHistory{});
   // Stress histories at every station and section point, and the hot spots (docs/theory/coupling.md section 10).
   {
-    std::vector<SectionHistory> computed(q.rails.size());
     std::vector<SetHistory> sets;
     for (std::size_t k = 0; k < q.rails.size(); ++k) {
-      const SectionHistory* h = &out.sections[k];
-      if (h->element_ids.empty()) {
-        computed[k] = section_history(model, out.response.displacement, q.rails[k].element_set, q.stations, share);
-        h = &computed[k];
+      const SectionHistory& h = out.sections[k];
+      if (!h.element_ids.empty()) {
+        sets.push_back({q.rails[k].name, h.element_ids, h.station_index, out.rails[k].station_points, &h.values, nullptr, {}, 0});
+      } else {  // no history kept: the stresses' section forces straight from the displacements
+        const SectionHistory at = section_stations(model, q.rails[k].element_set, q.stations);
+        sets.push_back({q.rails[k].name, at.element_ids, at.station_index, out.rails[k].station_points, nullptr, &out.response.displacement,
+                        q.rails[k].element_set, q.stations});
       }
-      sets.push_back({q.rails[k].name, h->element_ids, h->station_index, out.rails[k].station_points, &h->values});
     }
     out.stress = stress_histories(model, out.response.times, sets, share);
   }

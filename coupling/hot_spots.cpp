@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "coupling/output_sets.h"
+
 namespace framedyn::coupling {
 
 namespace {
@@ -70,7 +72,8 @@ StressHistories stress_histories(const fem::FrameModel& model, const Eigen::Vect
   h.forces.resize(6 * static_cast<Eigen::Index>(total), times.size());
   for (const SetHistory& set : sets) {
     const Eigen::Index ns = static_cast<Eigen::Index>(set.element_ids.size());
-    if (!set.values || set.values->rows() != ns * times.size() || set.values->cols() < 6)
+    const bool table = set.values != nullptr;
+    if (table ? set.values->rows() != ns * times.size() || set.values->cols() < 6 : !set.displacement || set.displacement->cols() != times.size())
       throw std::invalid_argument("the section-force history of " + set.name + " does not match its stations and times");
     const Eigen::Index offset = static_cast<Eigen::Index>(h.stations.size());
     for (Eigen::Index k = 0; k < ns; ++k) {
@@ -78,6 +81,16 @@ StressHistories stress_histories(const fem::FrameModel& model, const Eigen::Vect
       const int b = model.beam_index(set.element_ids[i]);
       if (b < 0) throw std::invalid_argument("element " + std::to_string(set.element_ids[i]) + " of " + set.name + " is not a beam");
       h.stations.push_back({set.name, set.element_ids[i], set.station_index[i], set.points[i], model.beams[static_cast<std::size_t>(b)].section});
+    }
+    if (!table) {  // straight from the displacements: each (time, station) once, on any of the share's threads
+      for_section_forces(model, *set.displacement, set.element_set, set.stations, false, share,
+                         [&](Eigen::Index j, Eigen::Index k, const fem::SectionForces& f, double) {
+                           if (k >= ns) throw std::invalid_argument("the stations of " + set.name + " do not match its element set");
+                           float* to = &h.forces(6 * (offset + k), j);
+                           to[0] = static_cast<float>(f.n), to[1] = static_cast<float>(f.vy), to[2] = static_cast<float>(f.vz);
+                           to[3] = static_cast<float>(f.t), to[4] = static_cast<float>(f.my), to[5] = static_cast<float>(f.mz);
+                         });
+      continue;
     }
     core::for_ranges(share, static_cast<std::size_t>(times.size()), 256, [&](std::size_t begin, std::size_t end) {
       for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j)

@@ -50,13 +50,18 @@ struct StressHistories {
 // The stations of the element sets `sets` (name, mesh element set) at
 // `stations` per element, with their dynamic section forces from the history
 // `values` of coupling::section_history (rows time * stations + station,
-// columns N, Vy, Vz, T, My, Mz, ...), one per set.
+// columns N, Vy, Vz, T, My, Mz, ...), one per set; or, without `values`, from
+// the displacements (all DOFs x times) at the stations of section_stations
+// (element_set, stations), the same numbers with no double-precision table between.
 struct SetHistory {
   std::string name;
   std::vector<int> element_ids;       // per station
   std::vector<int> station_index;     // per station
   std::vector<Eigen::Vector3d> points;  // per station, m
   const Eigen::MatrixXd* values = nullptr;
+  const Eigen::MatrixXd* displacement = nullptr;  // without values
+  std::string element_set;                        // without values
+  int stations = 0;                               // without values
 };
 // `share`: idle workers of a pool may take output times (the same numbers without).
 StressHistories stress_histories(const fem::FrameModel& model, const Eigen::VectorXd& times, const std::vector<SetHistory>& sets,

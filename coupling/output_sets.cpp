@@ -146,56 +146,88 @@ NodalHistory nodal_history(const fem::FrameModel& model, const NodeOutputSpec& s
   return h;
 }
 
-SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations,
-                               core::WorkShare* share) {
+namespace {
+
+// An element set's beams and their stations (section_history's rows).
+struct SetStations {
+  SectionHistory layout;                   // element_ids, station_index, station_x; no values
+  std::vector<int> beams;                  // model.beams index per element of the set
+  std::vector<fem::BeamGeometry> geometry;  // per beam (empty for a three-node beam)
+};
+
+SetStations set_stations(const fem::FrameModel& model, const std::string& element_set, int stations) {
   if (stations < 2) throw std::invalid_argument("at least two stations per element (the ends) are needed");
   const auto set = model.element_sets.find(upper(element_set));
   if (set == model.element_sets.end()) throw std::invalid_argument("the mesh has no element set " + element_set);
-  SectionHistory h;
-  std::vector<int> beams;
-  std::vector<fem::BeamGeometry> geometry;
+  SetStations out;
+  SectionHistory& h = out.layout;
   for (int id : set->second) {
     const int b = model.beam_index(id);
     if (b < 0) continue;
-    beams.push_back(b);
+    out.beams.push_back(b);
     const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(b)];
-    geometry.push_back(beam.is_quadratic() ? fem::BeamGeometry{} : fem::beam_geometry(model, beam));
-    const double length = beam.is_quadratic() ? fem::quadratic_beam_length(model, beam) : geometry.back().data.length;
+    out.geometry.push_back(beam.is_quadratic() ? fem::BeamGeometry{} : fem::beam_geometry(model, beam));
+    const double length = beam.is_quadratic() ? fem::quadratic_beam_length(model, beam) : out.geometry.back().data.length;
     for (int s = 0; s < stations; ++s) {
       h.element_ids.push_back(id);
       h.station_index.push_back(s);
       h.station_x.push_back(length * s / (stations - 1));  // arc length on a three-node beam
     }
   }
-  const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
-  h.values.resize(u.cols() * ns, 7);
-  // Each output time's rows on their own: any share of the times gives the same numbers.
+  return out;
+}
+
+}  // namespace
+
+SectionHistory section_stations(const fem::FrameModel& model, const std::string& element_set, int stations) {
+  return set_stations(model, element_set, stations).layout;
+}
+
+void for_section_forces(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations, bool fiber_max,
+                        core::WorkShare* share, const StationForcesSink& put) {
+  const SetStations at = set_stations(model, element_set, stations);
+  const std::vector<double>& station_x = at.layout.station_x;
+  // Each output time on its own: any share of the times gives the same numbers.
   core::for_ranges(share, static_cast<std::size_t>(u.cols()), 64, [&](std::size_t begin, std::size_t end) {
-  for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j) {
-    const Eigen::VectorXd uj = u.col(j);
-    for (std::size_t e = 0; e < beams.size(); ++e) {
-      if (model.beams[static_cast<std::size_t>(beams[e])].is_quadratic()) {  // B32, B32R: stations by statics of the nodal forces
-        const std::vector<fem::StationResult> st = fem::beam_stations(model, beams[e], uj, stations);
-        for (int s = 0; s < stations; ++s) {
-          const fem::StationResult& r = st[static_cast<std::size_t>(s)];
-          double smax = 0.0;
-          for (double v : r.fiber_stress) smax = std::max(smax, std::abs(v));
-          h.values.row(j * ns + static_cast<Eigen::Index>(e) * stations + s) << r.forces.n, r.forces.vy, r.forces.vz, r.forces.t, r.forces.my,
-              r.forces.mz, smax;
+    Eigen::VectorXd uj;
+    for (Eigen::Index j = static_cast<Eigen::Index>(begin); j < static_cast<Eigen::Index>(end); ++j) {
+      uj = u.col(j);
+      for (std::size_t e = 0; e < at.beams.size(); ++e) {
+        const fem::BeamElement& beam = model.beams[static_cast<std::size_t>(at.beams[e])];
+        if (beam.is_quadratic()) {  // B32, B32R: stations by statics of the nodal forces
+          const std::vector<fem::StationResult> st = fem::beam_stations(model, at.beams[e], uj, stations);
+          for (int s = 0; s < stations; ++s) {
+            const fem::StationResult& r = st[static_cast<std::size_t>(s)];
+            double smax = 0.0;
+            if (fiber_max)
+              for (double v : r.fiber_stress) smax = std::max(smax, std::abs(v));
+            put(j, static_cast<Eigen::Index>(e) * stations + s, r.forces, smax);
+          }
+          continue;
         }
-        continue;
-      }
-      const fem::Vector12d f = fem::element_end_forces(geometry[e], model.beams[static_cast<std::size_t>(beams[e])], uj);
-      for (int s = 0; s < stations; ++s) {
-        const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;
-        const fem::SectionForces sf = fem::section_forces_at(f, h.station_x[static_cast<std::size_t>(k)]);
-        double smax = 0.0;
-        for (double v : fem::fiber_stresses(geometry[e].data.section, sf)) smax = std::max(smax, std::abs(v));
-        h.values.row(j * ns + k) << sf.n, sf.vy, sf.vz, sf.t, sf.my, sf.mz, smax;
+        const fem::Vector12d f = fem::element_end_forces(at.geometry[e], beam, uj);
+        for (int s = 0; s < stations; ++s) {
+          const Eigen::Index k = static_cast<Eigen::Index>(e) * stations + s;
+          const fem::SectionForces sf = fem::section_forces_at(f, station_x[static_cast<std::size_t>(k)]);
+          double smax = 0.0;
+          if (fiber_max)
+            for (double v : fem::fiber_stresses(at.geometry[e].data.section, sf)) smax = std::max(smax, std::abs(v));
+          put(j, k, sf, smax);
+        }
       }
     }
-  }
   });
+}
+
+SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations,
+                               core::WorkShare* share) {
+  SectionHistory h = section_stations(model, element_set, stations);
+  const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
+  h.values.resize(u.cols() * ns, 7);
+  for_section_forces(model, u, element_set, stations, true, share,
+                     [&](Eigen::Index j, Eigen::Index k, const fem::SectionForces& sf, double smax) {
+                       h.values.row(j * ns + k) << sf.n, sf.vy, sf.vz, sf.t, sf.my, sf.mz, smax;
+                     });
   return h;
 }
 

@@ -17,11 +17,13 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "fem/frame_model.h"
 #include "fem/modal_transient.h"
+#include "fem/section_forces.h"
 
 namespace framedyn::coupling {
 
@@ -81,5 +83,15 @@ struct SectionHistory {
 // `share`: idle workers of a pool may take output times (the same numbers without).
 SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& displacement, const std::string& element_set,
                                int stations, core::WorkShare* share = nullptr);
+
+// The same stations without the history (values left empty).
+SectionHistory section_stations(const fem::FrameModel& model, const std::string& element_set, int stations);
+
+// The same section forces handed over one at a time, without a table: put(j, k, forces,
+// largest |sigma| or 0 when `fiber_max` is false) at every output j and station k (in
+// section_stations' order), from any of `share`'s threads, each (j, k) once.
+using StationForcesSink = std::function<void(Eigen::Index j, Eigen::Index k, const fem::SectionForces& forces, double max_fiber_stress)>;
+void for_section_forces(const fem::FrameModel& model, const Eigen::MatrixXd& displacement, const std::string& element_set, int stations,
+                        bool fiber_max, core::WorkShare* share, const StationForcesSink& put);
 
 }  // namespace framedyn::coupling

@@ -91,10 +91,10 @@ void assess_response(const RigidStudy& study, const rigid::VehicleModel& model, 
       for (History* h : {&fx, &fz, &my}) frame.push_back(std::move(*h));
     }
   } else if (r.frame_loads_3d) {
-    for (const LoadPointHistory& p : all_frame_loads(*r.frame_loads_3d).points)
+    for (const LoadPointHistory* p : frame_load_points(*r.frame_loads_3d))
       for (int c = 0; c < 6; ++c) {
-        History h{p.name + "_" + kLoadComponents[c], c < 3 ? Quantity::force : Quantity::moment, {}};
-        for (Eigen::Index i = 0; i < p.values.rows(); ++i) h.values.push_back(p.values(i, c));
+        History h{p->name + "_" + kLoadComponents[c], c < 3 ? Quantity::force : Quantity::moment, {}};
+        h.values.assign(p->values.col(c).data(), p->values.col(c).data() + p->values.rows());
         frame.push_back(std::move(h));
       }
   }

@@ -388,7 +388,22 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
 
   const Eigen::MatrixXd b = frame.free_loads(in.distribution);     // free DOFs x components (relieved)
   const Eigen::MatrixXd pm = phi.transpose() * b;                   // modal loads per component (Eq. T.4)
-  const Eigen::MatrixXd p = pm * in.components;                     // m x nt
+  // The modal loads p = pm C (m x nt) a block of kLoadBlock times at a time, each block the same
+  // product shape (the last one padded with zero loads): a long record keeps no m x nt matrix.
+  constexpr Eigen::Index kLoadBlock = 256;
+  Eigen::MatrixXd p(m, kLoadBlock), c_block = Eigen::MatrixXd::Zero(in.components.rows(), kLoadBlock);
+  Eigen::Index p_from = -1;  // the first time of the block in p
+  const auto modal_loads_at = [&](Eigen::Index k) -> const double* {
+    if (p_from < 0 || k < p_from || k >= p_from + kLoadBlock) {
+      p_from = k - k % kLoadBlock;
+      const Eigen::Index n = std::min(kLoadBlock, nt - p_from);
+      c_block.leftCols(n) = in.components.middleCols(p_from, n);
+      if (n < kLoadBlock) c_block.rightCols(kLoadBlock - n).setZero();
+      p.noalias() = pm * c_block;
+    }
+    return p.col(k - p_from).data();
+  };
+  Eigen::VectorXd p_previous = Eigen::Map<const Eigen::VectorXd>(modal_loads_at(0), m);  // p at the step's start
 
   // Static correction per component (Eq. T.8): (G - Phi Lambda^-1 Phi^T) B.
   Eigen::MatrixXd correction;
@@ -420,7 +435,7 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
     damping[static_cast<std::size_t>(i)] = o.damping.coefficient(i, omega);
     r.frequencies_hz(i) = omega / kTwoPi;
     r.damping_ratios(i) = o.damping.ratio_of(i, omega);
-    if (o.initial == InitialState::static_equilibrium && w2(i) > 0.0) q(i) = p(i, 0) / w2(i);
+    if (o.initial == InitialState::static_equilibrium && w2(i) > 0.0) q(i) = p_previous(i) / w2(i);
   }
   // The step's coefficients per mode: q1 = a00 q + a01 v + c0 p0 + d0 p1, v1 = a10 q + a11 v + c1 p0 + d1 p1.
   std::vector<double> a00(static_cast<std::size_t>(m)), a01(a00), a10(a00), a11(a00), c0(a00), c1(a00), d0(a00), d1(a00);
@@ -459,8 +474,8 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
         }
         h_prev = h;
       }
-      const double* p0 = p.col(k - 1).data();
-      const double* p1 = p.col(k).data();
+      const double* p0 = p_previous.data();
+      const double* p1 = modal_loads_at(k);
       double* qd = q.data();
       double* vd = v.data();
       for (int i = 0; i < m; ++i) {
@@ -470,6 +485,7 @@ TransientResult modal_transient(const FrameDynamics& frame, const ModalBasis& ba
         qd[i] = q1;
         vd[i] = v1;
       }
+      std::copy_n(p1, m, p_previous.data());
     }
     if (next_out < outputs.size() && outputs[next_out] == k) r.modal_coordinates.col(static_cast<Eigen::Index>(next_out++)) = q;
   }

@@ -298,7 +298,8 @@ void add_load_points_3d(const coupling::RigidStudy& study, const coupling::Rigid
     run.figures.insert(run.figures.end(), drawn.begin(), drawn.end());
   }
   nlohmann::ordered_json loads;
-  for (const coupling::LoadPointHistory& p : coupling::all_frame_loads(*r.frame_loads_3d).points) {
+  for (const coupling::LoadPointHistory* at : coupling::frame_load_points(*r.frame_loads_3d)) {
+    const coupling::LoadPointHistory& p = *at;
     nlohmann::ordered_json jp;
     jp["location"] = {{"value", {p.location.x() * lf, p.location.y() * lf, p.location.z() * lf}}, {"unit", u.label(Quantity::length)}};
     for (int c = 0; c < 6; ++c) {
