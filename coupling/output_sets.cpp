@@ -183,9 +183,11 @@ SectionHistory section_stations(const fem::FrameModel& model, const std::string&
   return set_stations(model, element_set, stations).layout;
 }
 
-void for_section_forces(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations, bool fiber_max,
+namespace {
+
+// for_section_forces on stations already laid out (section_history lays them out once for both).
+void forces_at_stations(const fem::FrameModel& model, const SetStations& at, const Eigen::MatrixXd& u, int stations, bool fiber_max,
                         core::WorkShare* share, const StationForcesSink& put) {
-  const SetStations at = set_stations(model, element_set, stations);
   const std::vector<double>& station_x = at.layout.station_x;
   // Each output time on its own: any share of the times gives the same numbers.
   core::for_ranges(share, static_cast<std::size_t>(u.cols()), 64, [&](std::size_t begin, std::size_t end) {
@@ -219,12 +221,20 @@ void for_section_forces(const fem::FrameModel& model, const Eigen::MatrixXd& u, 
   });
 }
 
+}  // namespace
+
+void for_section_forces(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations, bool fiber_max,
+                        core::WorkShare* share, const StationForcesSink& put) {
+  forces_at_stations(model, set_stations(model, element_set, stations), u, stations, fiber_max, share, put);
+}
+
 SectionHistory section_history(const fem::FrameModel& model, const Eigen::MatrixXd& u, const std::string& element_set, int stations,
                                core::WorkShare* share) {
-  SectionHistory h = section_stations(model, element_set, stations);
+  SetStations at = set_stations(model, element_set, stations);
+  SectionHistory h = at.layout;
   const Eigen::Index ns = static_cast<Eigen::Index>(h.element_ids.size());
   h.values.resize(u.cols() * ns, 7);
-  for_section_forces(model, u, element_set, stations, true, share,
+  forces_at_stations(model, at, u, stations, true, share,
                      [&](Eigen::Index j, Eigen::Index k, const fem::SectionForces& sf, double smax) {
                        h.values.row(j * ns + k) << sf.n, sf.vy, sf.vz, sf.t, sf.my, sf.mz, smax;
                      });
